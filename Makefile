@@ -1,0 +1,43 @@
+# rocking-q: the two commands a newcomer needs are `make reproduce` and `make test`.
+BUILD   ?= build
+OUT     ?= out
+JOBS    ?= 2
+# Debian packages the project needs (header-only Boost: Odeint, Math, Multiprecision).
+PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath
+
+.PHONY: all deps build reproduce test bless clean
+
+all: build
+
+# Installs what is missing: apt-get as root, otherwise prints the command.
+deps:
+	@missing=""; for p in $(PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -z "$$missing" ]; then echo "deps: all installed"; \
+	elif [ "$$(id -u)" = 0 ]; then echo "deps: installing$$missing"; \
+	  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing >/dev/null \
+	  || { echo "deps: apt-get failed for$$missing" >&2; exit 1; }; \
+	else echo "deps: missing$$missing; run:  sudo apt-get install -y$$missing" >&2; exit 1; fi
+
+$(BUILD)/Makefile: CMakeLists.txt | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+build: deps $(BUILD)/Makefile
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Runs every scene, writes out/<scene>/*.csv and *.png, diffs against expected/.
+reproduce: build
+	$(BUILD)/reproduce --out $(OUT)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# make bless SCENE=fig04: rewrite expected/fig04 from a fresh run, after showing
+# what changed; refused when the new values fail the scene's independent check.
+bless: build
+	@test -n "$(SCENE)" || { echo "usage: make bless SCENE=<scene>" >&2; exit 2; }
+	$(BUILD)/reproduce --out $(OUT) --bless $(SCENE)
+
+clean:
+	rm -rf $(BUILD) $(OUT)

@@ -1,0 +1,110 @@
+#include "harness/table.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace rocking::harness {
+
+std::string format_number(double value) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    return buffer;
+}
+
+Table& Table::row() {
+    if (!rows_.empty() && rows_.back().size() != columns_.size())
+        throw std::runtime_error("table: row " + std::to_string(rows_.size()) + " has " +
+                                 std::to_string(rows_.back().size()) + " cells, expected " +
+                                 std::to_string(columns_.size()));
+    rows_.emplace_back();
+    return *this;
+}
+
+Table& Table::add(double value) { return add(format_number(value)); }
+
+Table& Table::add(const std::string& label) {
+    if (rows_.empty()) throw std::runtime_error("table: add() before row()");
+    if (label.find_first_of("\r\n") != std::string::npos)
+        throw std::runtime_error("table: cell '" + label + "' contains a newline");
+    rows_.back().push_back(label);
+    return *this;
+}
+
+namespace {
+// RFC 4180 quoting for a cell with a comma or a quote.
+std::string csv_cell(const std::string& cell) {
+    if (cell.find_first_of(",\"") == std::string::npos) return cell;
+    std::string out = "\"";
+    for (char c : cell) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+}  // namespace
+
+void Table::write(const std::string& path) const {
+    if (!rows_.empty() && rows_.back().size() != columns_.size())
+        throw std::runtime_error("table for " + path + ": last row is incomplete");
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error("cannot write " + path);
+    for (const auto& [key, value] : notes_) out << "# " << key << ": " << value << "\n";
+    for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << columns_[c];
+    out << "\n";
+    for (const auto& r : rows_) {
+        for (std::size_t c = 0; c < r.size(); ++c) out << (c ? "," : "") << csv_cell(r[c]);
+        out << "\n";
+    }
+    if (!out) throw std::runtime_error("error while writing " + path);
+}
+
+namespace {
+// Splits an RFC 4180 line; returns false on an unterminated quote.
+bool split(const std::string& line, std::vector<std::string>& cells) {
+    cells.assign(1, "");
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted) {
+            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') cells.back() += '"', ++i;
+            else if (c == '"') quoted = false;
+            else cells.back() += c;
+        } else if (c == '"') quoted = true;
+        else if (c == ',') cells.emplace_back();
+        else cells.back() += c;
+    }
+    return !quoted;
+}
+}  // namespace
+
+CsvFile read_csv(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error(path + ": cannot open");
+    CsvFile file{path, {}, {}, {}};
+    std::string line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty() || line[0] == '#') continue;
+        std::vector<std::string> cells;
+        if (!split(line, cells))
+            throw std::runtime_error(path + ":" + std::to_string(number) + ": unterminated quote");
+        if (file.columns.empty()) {
+            file.columns = cells;
+            continue;
+        }
+        if (cells.size() != file.columns.size())
+            throw std::runtime_error(path + ":" + std::to_string(number) + ": " +
+                                     std::to_string(cells.size()) + " cells, the header has " +
+                                     std::to_string(file.columns.size()));
+        file.rows.push_back(std::move(cells));
+        file.line_of_row.push_back(number);
+    }
+    if (file.columns.empty()) throw std::runtime_error(path + ": empty file (no header row)");
+    return file;
+}
+
+}  // namespace rocking::harness

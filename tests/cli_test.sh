@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The command line: values, JSON and clear errors with a non-zero exit.
+set -u
+rocking="$1"
+fail=0
+check() {  # description, expected substring, command...
+    local what="$1" want="$2"; shift 2
+    local out; out=$("$@" 2>&1)
+    if [[ "$out" != *"$want"* ]]; then echo "FAIL: $what: wanted '$want' in: $out"; fail=1; else echo "ok: $what"; fi
+}
+status() {  # description, expected exit status, command...
+    local what="$1" want="$2"; shift 2
+    "$@" >/dev/null 2>&1; local got=$?
+    if [[ $got != "$want" ]]; then echo "FAIL: $what: exit $got, wanted $want"; fail=1; else echo "ok: $what (exit $got)"; fi
+}
+# q2(0.5) = 4.38821872331181020112 (mpmath, eq. 15); eq. 27 at x = 0.7141699131957593 is 2.
+check "case 2 at x = 0.5"            "q = 4.388218723"   "$rocking" q --case 2 --x 0.5
+check "eq. 27 crosses q = 2"         $'q = 2\n'   "$rocking" q --case 2 --pulses 6 --x 0.7141699131957593
+check "json output"                  '"q": 4.38821872331181' "$rocking" q --case 2 --x 0.5 --json
+check "custom train equals case 2"   "q = 4.388218723"   "$rocking" q --train 1:1,-0.5:1 --x 0.5
+check "response ends at alpha"       $'\n2,1,'   "$rocking" response --case 2 --x 0.5 --steps 4
+check "bad x is named"               "--x: 'abc' is not a number" "$rocking" q --case 2 --x abc
+check "negative x is refused"        "--x: must be > 0"  "$rocking" q --case 2 --x -1
+check "bad case is named"            "--case: must be 1, 2, 3, 4 or 5" "$rocking" q --case 7 --x 1
+check "impossible train explained"   "cannot bring theta(t_fin) to alpha" "$rocking" q --train 1:1,-5:1 --x 1
+status "bad x exits 2"               2 "$rocking" q --case 2 --x abc
+status "unknown option exits 2"      2 "$rocking" q --case 2 --x 1 --frobnicate 3
+status "no command exits 2"          2 "$rocking"
+status "impossible train exits 1"    1 "$rocking" q --train 1:1,-5:1 --x 1
+status "good call exits 0"           0 "$rocking" q --case 4 --x 0.3 --json
+exit $fail

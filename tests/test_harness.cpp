@@ -1,0 +1,100 @@
+// The reproduce diff: tolerances are read strictly, and a deviation beyond a
+// tolerance is caught.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <filesystem>
+#include <fstream>
+
+#include "harness/compare.hpp"
+#include "harness/table.hpp"
+#include "scene.hpp"
+
+using namespace rocking::harness;
+namespace fs = std::filesystem;
+
+namespace {
+std::string write_temp(const std::string& name, const std::string& text) {
+    const fs::path dir = fs::temp_directory_path() / "rocking-harness-test";
+    fs::create_directories(dir);
+    const std::string path = (dir / name).string();
+    std::ofstream(path) << text;
+    return path;
+}
+
+std::string error_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+}  // namespace
+
+TEST(Harness, ToleranceFileErrorsNameFileAndLine) {
+    const auto p1 = write_temp("t1", "# comment\na.csv x 0 1e-12 reason\na.csv y abc 0 reason\n");
+    EXPECT_NE(error_of([&] { ToleranceSpec::read(p1); }).find("t1:3:"), std::string::npos);
+    const auto p2 = write_temp("t2", "a.csv x 0 1e-12\n");
+    EXPECT_NE(error_of([&] { ToleranceSpec::read(p2); }).find("needs its reason"), std::string::npos);
+    const auto p3 = write_temp("t3", "a.csv x 0 1e-12 r\na.csv x 0 1e-12 r\n");
+    EXPECT_NE(error_of([&] { ToleranceSpec::read(p3); }).find("second rule"), std::string::npos);
+    const auto p4 = write_temp("t4", "a.csv x -1 0 r\n");
+    EXPECT_NE(error_of([&] { ToleranceSpec::read(p4); }).find(">= 0"), std::string::npos);
+}
+
+TEST(Harness, CsvErrorsNameFileAndLine) {
+    const auto p = write_temp("bad.csv", "# note\nx,y\n1,2\n3\n");
+    EXPECT_NE(error_of([&] { read_csv(p); }).find("bad.csv:4:"), std::string::npos);
+    const auto empty = write_temp("empty.csv", "");
+    EXPECT_NE(error_of([&] { read_csv(empty); }).find("empty file"), std::string::npos);
+}
+
+TEST(Harness, CompareCatchesEachKindOfDifference) {
+    const auto spec = ToleranceSpec::read(write_temp("spec", "a.csv * 1e-6 0 noise\na.csv label exact text\n"));
+    const auto expected = read_csv(write_temp("e.csv", "x,label\n1.0,yes\n2.0,no\n"));
+    EXPECT_TRUE(compare(expected, read_csv(write_temp("ok.csv", "x,label\n1.0000005,yes\n2,no\n")), spec, "a.csv").match());
+    const auto off = compare(expected, read_csv(write_temp("off.csv", "x,label\n1.000002,yes\n2,no\n")), spec, "a.csv");
+    EXPECT_FALSE(off.match());
+    EXPECT_EQ(off.failed, 1);
+    EXPECT_NEAR(off.worst.ratio, 2.0, 1e-6);
+    EXPECT_FALSE(compare(expected, read_csv(write_temp("txt.csv", "x,label\n1,no\n2,no\n")), spec, "a.csv").match());
+    EXPECT_FALSE(compare(expected, read_csv(write_temp("nan.csv", "x,label\nnan,yes\n2,no\n")), spec, "a.csv").match());
+    EXPECT_FALSE(compare(expected, read_csv(write_temp("rows.csv", "x,label\n1,yes\n")), spec, "a.csv").match());
+    EXPECT_FALSE(compare(expected, read_csv(write_temp("cols.csv", "x,other\n1,yes\n2,no\n")), spec, "a.csv").match());
+}
+
+TEST(Harness, ExpectedFilesCatchAPerturbationJustBeyondTheirTolerance) {
+    // For every scene: the fresh output matches, and pushing one cell of each
+    // numeric column to 1.5 times its allowed deviation makes it fail.
+    const std::string expected_dir = std::string(ROCKING_SOURCE_DIR) + "/expected";
+    for (const auto& scene : rocking::scenes::all_scenes()) {
+        const std::string out = (fs::temp_directory_path() / "rocking-harness-out" / scene.name).string();
+        fs::create_directories(out);
+        rocking::scenes::SceneContext ctx(out);
+        scene.run(ctx);
+        const auto spec = ToleranceSpec::read(expected_dir + "/" + scene.name + "/TOLERANCES");
+        for (const auto& file : spec.files()) {
+            const CsvFile expected = read_csv(expected_dir + "/" + scene.name + "/" + file);
+            CsvFile actual = read_csv(out + "/" + file);
+            ASSERT_TRUE(compare(expected, actual, spec, file).match()) << scene.name << "/" << file;
+            for (std::size_t c = 0; c < expected.columns.size(); ++c) {
+                const Tolerance& t = spec.of(file, expected.columns[c]);
+                CsvFile broken = actual;
+                const std::string cell = expected.rows[0][c];
+                char* end = nullptr;
+                const double v = std::strtod(cell.c_str(), &end);
+                if (t.exact || end != cell.c_str() + cell.size()) {
+                    broken.rows[0][c] = cell + "_changed";
+                } else {
+                    const double allowed = t.abs + t.rel * std::fabs(v);
+                    broken.rows[0][c] = format_number(allowed > 0 ? v + 1.5 * allowed : std::nextafter(v, INFINITY));
+                }
+                EXPECT_FALSE(compare(expected, broken, spec, file).match())
+                    << scene.name << "/" << file << " column " << expected.columns[c];
+            }
+        }
+    }
+}
