@@ -1,0 +1,86 @@
+#include "dynamics/ground_input.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace rocking::dynamics {
+
+double InputPiece::at(double t) const {
+    const double u = t - t0;
+    return c0 + c1 * u + (s != 0.0 ? s * std::sin(w * u + phase) : 0.0);
+}
+
+PulseInput::PulseInput(PulseTrain train, double pga_g, double to_seconds)
+    : train_(std::move(train)), pga_(pga_g), to_(to_seconds) {
+    if (!(std::isfinite(pga_) && pga_ > 0)) throw std::invalid_argument("pulse input: PGA must be > 0");
+    if (!(std::isfinite(to_) && to_ > 0)) throw std::invalid_argument("pulse input: to must be > 0 s");
+    for (std::size_t k = 0; k <= train_.size(); ++k) starts_.push_back(train_.start(k) * to_);
+    end_ = starts_.back();
+}
+
+std::string PulseInput::describe() const {
+    std::ostringstream os;
+    os << train_.name() << ", PGA = " << pga_ << " g, to = " << to_ << " s";
+    return os.str();
+}
+
+InputPiece PulseInput::piece_at(double t) const {
+    if (t >= end_) return {end_, INFINITY};
+    const auto k = std::max<std::ptrdiff_t>(
+        0, std::upper_bound(starts_.begin(), starts_.end(), t) - starts_.begin() - 1);
+    InputPiece p{starts_[k], starts_[k + 1]};
+    p.c0 = pga_ * train_.pulses()[k].amplitude;
+    return p;
+}
+
+std::vector<double> PulseInput::discontinuities() const {
+    return std::vector<double>(starts_.begin() + 1, starts_.end());
+}
+
+SampledInput::SampledInput(std::vector<double> samples_g, double dt, std::string name)
+    : samples_(std::move(samples_g)), dt_(dt), name_(std::move(name)) {
+    if (!(std::isfinite(dt_) && dt_ > 0)) throw std::invalid_argument(name_ + ": time step must be > 0");
+    if (samples_.size() < 2) throw std::invalid_argument(name_ + ": needs at least 2 samples");
+    for (std::size_t k = 0; k < samples_.size(); ++k) {
+        if (!std::isfinite(samples_[k]))
+            throw std::invalid_argument(name_ + ": sample " + std::to_string(k + 1) + " is not finite");
+        peak_ = std::max(peak_, std::fabs(samples_[k]));
+    }
+}
+
+InputPiece SampledInput::piece_at(double t) const {
+    const std::size_t last = samples_.size() - 1;
+    if (t >= dt_ * last) return {dt_ * last, INFINITY};
+    const std::size_t k = std::min(last - 1, static_cast<std::size_t>(std::max(0.0, std::floor(t / dt_))));
+    InputPiece p{dt_ * k, dt_ * (k + 1)};
+    p.c0 = samples_[k];
+    p.c1 = (samples_[k + 1] - samples_[k]) / dt_;
+    return p;
+}
+
+OneSinePulse::OneSinePulse(double ap_g, double wp, double threshold_g) : ap_(ap_g), wp_(wp) {
+    if (!(std::isfinite(wp_) && wp_ > 0)) throw std::invalid_argument("one-sine pulse: w_p must be > 0");
+    if (!(std::isfinite(ap_) && ap_ > threshold_g))
+        throw std::invalid_argument("one-sine pulse: a_p must exceed the uplift threshold (a_p/g > alpha or tan alpha)");
+    psi_ = std::asin(threshold_g / ap_);
+    end_ = (2.0 * M_PI - psi_) / wp_;
+}
+
+std::string OneSinePulse::describe() const {
+    std::ostringstream os;
+    os << "one-sine pulse a_p = " << ap_ << " g, w_p = " << wp_ << " rad/s, psi = " << psi_;
+    return os.str();
+}
+
+InputPiece OneSinePulse::piece_at(double t) const {
+    if (t >= end_) return {end_, INFINITY};
+    InputPiece p{0.0, end_};
+    p.s = ap_;
+    p.w = wp_;
+    p.phase = psi_;
+    return p;
+}
+
+}  // namespace rocking::dynamics

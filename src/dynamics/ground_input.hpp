@@ -1,0 +1,98 @@
+// Ground inputs for the dynamics engine, in the paper's sign (a > 0 drives
+// theta > 0) and in units of g.  Each input is a sequence of pieces on which
+//     a(t)/g = c0 + c1 (t - t0) + s sin(w (t - t0) + phase),
+// which is what the exact solver needs (its particular solutions are closed
+// forms of exactly these terms) and what the ODE solvers evaluate.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pulse/pulse_train.hpp"
+
+namespace rocking::dynamics {
+
+struct InputPiece {
+    double t0, t1;         // the piece, in seconds
+    double c0 = 0, c1 = 0; // polynomial part, in g and g/s
+    double s = 0, w = 0, phase = 0;  // sinusoidal part, in g, rad/s, rad
+    double at(double t) const;       // a/g at t in [t0, t1]
+};
+
+class GroundInput {
+public:
+    virtual ~GroundInput() = default;
+    virtual std::string describe() const = 0;
+    // Duration of the input: the paper's t_fin; the ground is at rest after it.
+    virtual double t_end() const = 0;
+    // The piece containing t (for t in [0, t_end)); pieces are closed on the
+    // left.  For t >= t_end, a zero piece [t_end, inf).
+    virtual InputPiece piece_at(double t) const = 0;
+    // Times in (0, t_end] where a(t) jumps: an ODE solver must restart there.
+    virtual std::vector<double> discontinuities() const = 0;
+    // The end of the piece containing t (t_end or inf beyond).
+    double next_break(double t) const { return piece_at(t).t1; }
+    double accel(double t) const { return piece_at(t).at(t); }
+    // Largest |a|/g: the PGA in units of g.
+    virtual double peak() const = 0;
+};
+
+// A pulse train (amplitudes in PGA, durations in to) scaled to real units.
+class PulseInput : public GroundInput {
+public:
+    PulseInput(PulseTrain train, double pga_g, double to_seconds);
+    std::string describe() const override;
+    double t_end() const override { return end_; }
+    InputPiece piece_at(double t) const override;
+    std::vector<double> discontinuities() const override;
+    double peak() const override { return pga_ * train_.peak(); }
+    const PulseTrain& train() const { return train_; }
+
+private:
+    PulseTrain train_;
+    double pga_, to_, end_;
+    std::vector<double> starts_;
+};
+
+// Samples a_k at t = k dt, linear in between (a record), in units of g.
+class SampledInput : public GroundInput {
+public:
+    // Throws std::invalid_argument when dt is not finite and > 0, there are
+    // fewer than 2 samples, or a sample is not finite.
+    SampledInput(std::vector<double> samples_g, double dt, std::string name);
+    std::string describe() const override { return name_; }
+    double t_end() const override { return dt_ * (samples_.size() - 1); }
+    InputPiece piece_at(double t) const override;
+    std::vector<double> discontinuities() const override { return {}; }
+    double peak() const override { return peak_; }
+    double dt() const { return dt_; }
+    std::size_t size() const { return samples_.size(); }
+
+private:
+    std::vector<double> samples_;
+    double dt_;
+    std::string name_;
+    double peak_ = 0;
+};
+
+// The one-sine pulse of Zhang & Makris (2001), NOTES.md, in the paper's sign:
+//     a(t) = a_p sin(w_p t + psi),   0 <= t <= (2 pi - psi) / w_p,
+// psi = asin(threshold / a_p) so that rocking starts at t = 0 (threshold =
+// alpha for the linearised equation, tan alpha for the full one).  Throws
+// std::invalid_argument when a_p <= threshold or w_p <= 0.
+class OneSinePulse : public GroundInput {
+public:
+    OneSinePulse(double ap_g, double wp, double threshold_g);
+    std::string describe() const override;
+    double t_end() const override { return end_; }
+    InputPiece piece_at(double t) const override;
+    std::vector<double> discontinuities() const override { return {end_}; }
+    double peak() const override { return ap_; }
+    double psi() const { return psi_; }
+
+private:
+    double ap_, wp_, psi_, end_;
+};
+
+}  // namespace rocking::dynamics

@@ -1,0 +1,69 @@
+#include "dynamics/model.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace rocking::dynamics {
+
+namespace {
+void require(bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument("block: " + what);
+}
+}  // namespace
+
+Block Block::from_half_dimensions(double b, double h) {
+    require(std::isfinite(b) && std::isfinite(h) && b > 0 && h > 0, "half-width and half-height must be > 0");
+    const double R = std::hypot(b, h);
+    return {std::atan(b / h), std::sqrt(3.0 * kGravity / (4.0 * R)), R};
+}
+
+Block Block::from_half_height(double h, double alpha) {
+    require(std::isfinite(alpha) && alpha > 0 && alpha < M_PI / 4, "alpha must be in (0, pi/4)");
+    require(std::isfinite(h) && h > 0, "height must be > 0");
+    return from_half_dimensions(h * std::tan(alpha), h);
+}
+
+Block Block::from_full_height(double H, double alpha) { return from_half_height(H / 2.0, alpha); }
+
+Block Block::from_p(double p, double alpha) {
+    require(std::isfinite(alpha) && alpha > 0 && alpha < M_PI / 4, "alpha must be in (0, pi/4)");
+    require(std::isfinite(p) && p > 0, "p must be > 0");
+    return {alpha, p, 0.0};
+}
+
+double housner_restitution(double alpha) {
+    const double s = std::sin(alpha);
+    return 1.0 - 1.5 * s * s;
+}
+
+double Model::uplift_threshold() const {
+    return equation == Equation::linearised ? block.alpha : std::tan(block.alpha);
+}
+
+double Model::acceleration(double theta, int sigma, double a_g) const {
+    const double p2 = block.p * block.p;
+    if (equation == Equation::linearised) return p2 * (a_g - sigma * block.alpha + theta);
+    const double u = sigma * block.alpha - theta;
+    return p2 * (a_g * std::cos(u) - std::sin(u));
+}
+
+double Model::energy(double theta, double omega, int sigma) const {
+    const double p2 = block.p * block.p;
+    if (equation == Equation::linearised) {
+        const double d = theta - sigma * block.alpha;
+        return 0.5 * omega * omega - 0.5 * p2 * d * d;
+    }
+    return 0.5 * omega * omega + p2 * std::cos(sigma * block.alpha - theta);
+}
+
+double Model::barrier() const { return equation == Equation::linearised ? 0.0 : block.p * block.p; }
+
+std::string Model::describe() const {
+    std::ostringstream os;
+    os << (equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1") << ", alpha = " << block.alpha
+       << ", p = " << block.p << " rad/s, restitution " << restitution;
+    return os.str();
+}
+
+}  // namespace rocking::dynamics

@@ -1,0 +1,52 @@
+// The rocking block and its equations of motion (Housner), in the paper's
+// sign: a ground acceleration a > 0 drives theta > 0.  On corner sigma = sgn theta:
+//   full (eqs. 1, 2, 4, corrected sign):  theta'' = p^2 [(a/g) cos(sigma alpha - theta) - sin(sigma alpha - theta)]
+//   linearised (eq. 3, corrected sign):   theta'' = p^2 [a/g - sigma alpha + theta]
+// (the printed eqs. 1 and 3 have the gravity term's sign wrong: see the errata scene).
+#pragma once
+
+#include <string>
+
+namespace rocking::dynamics {
+
+inline constexpr double kGravity = 9.81;  // m/s^2 for geometry; Table 1 uses 981 cm/s^2 as well
+
+enum class Equation { linearised, full };
+
+// A rectangular block of half-width b and half-height h:
+//   alpha = atan(b/h), R = sqrt(b^2 + h^2), I0 = (4/3) m R^2 (eq. 2), p = sqrt(3 g / (4 R)) (eq. 4).
+// Eq. 2 prints I0 = (1/3)(W/g) 4 H^2 (1 + tan^2 alpha) = (4/3)(W/g) H^2 / cos^2 alpha,
+// which is (4/3) m R^2 only when H is the half-height h.
+struct Block {
+    double alpha;  // slenderness, rad
+    double p;      // pulsation, rad/s
+    double R;      // distance of the centre of gravity from the corner, m (0 if given by p)
+
+    static Block from_half_dimensions(double b, double h);
+    static Block from_half_height(double h, double alpha);  // the H of eq. 2
+    static Block from_full_height(double H, double alpha);  // H = 2 h
+    static Block from_p(double p, double alpha);            // geometry not needed
+};
+
+// Housner's restitution factor on angular velocity, from conservation of
+// angular momentum about the impacting corner: e = 1 - 1.5 sin^2 alpha.
+double housner_restitution(double alpha);
+
+struct Model {
+    Equation equation = Equation::linearised;
+    Block block{0.1, 2.0, 0.0};
+    double restitution = 1.0;  // angular velocity kept through an impact (1: no dissipation)
+
+    // |a|/g above which a block at rest uplifts: alpha (the paper's alpha ~ tan alpha) or tan alpha.
+    double uplift_threshold() const;
+    // theta'' on corner sigma under a ground acceleration a/g.
+    double acceleration(double theta, int sigma, double a_g) const;
+    // Energy per unit inertia with the ground at rest, and its value at the
+    // unstable equilibrium theta = sigma alpha: a block whose energy is below
+    // the barrier can never overturn once the ground is at rest.
+    double energy(double theta, double omega, int sigma) const;
+    double barrier() const;
+    std::string describe() const;
+};
+
+}  // namespace rocking::dynamics

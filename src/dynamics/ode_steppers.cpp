@@ -1,0 +1,257 @@
+// General-purpose ODE solvers on the full or the linearised equation:
+// Boost.Odeint Dormand-Prince 5(4) with dense output (MATLAB's ode45),
+// Fehlberg 7(8), Bulirsch-Stoer with dense output, and GSL's rk8pd.
+// Solvers without dense output locate events by re-stepping from the start of
+// the last step with a shorter step (explicit Runge-Kutta steps are exact
+// functions of the step size).
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include <algorithm>
+#include <array>
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+#include <stdexcept>
+
+#include "dynamics/stepper.hpp"
+
+namespace rocking::dynamics {
+
+namespace odeint = boost::numeric::odeint;
+using State = std::array<double, 2>;
+
+namespace {
+
+// The equation of motion on one corner, as an Odeint system.  The input is
+// evaluated on the pieces left of t_stop, so that no stage sees the jump at
+// the end of the segment.
+struct RockingSystem {
+    const Model* model;
+    const GroundInput* input;
+    int sigma = 1;
+    double t_stop = INFINITY;
+    long* counter;
+
+    double accel_g(double t) const {
+        if (t < t_stop) return input->accel(t);
+        return input->piece_at(std::nextafter(t_stop, -INFINITY)).at(t);
+    }
+    void operator()(const State& x, State& dxdt, double t) const {
+        ++*counter;
+        dxdt[0] = x[1];
+        dxdt[1] = model->acceleration(x[0], sigma, accel_g(t));
+    }
+};
+
+// Steppers with dense output: Dormand-Prince and Bulirsch-Stoer.
+template <class Dense>
+class DenseStepper : public Stepper {
+public:
+    DenseStepper(const Model& model, const GroundInput& input, const SolverOptions& options, Dense dense)
+        : options_(options), dense_(std::move(dense)) {
+        sys_.model = &model;
+        sys_.input = &input;
+        sys_.counter = &rhs_;
+    }
+    void reset(double t, double theta, double omega, int sigma, double t_stop) override {
+        sys_.sigma = sigma;
+        sys_.t_stop = t_stop;
+        t0_ = t1_ = t;
+        t_stop_ = t_stop;
+        const double h0 = std::min(1e-3 / sys_.model->block.p, t_stop - t);
+        dense_.initialize(State{theta, omega}, t, h0 > 0 ? h0 : 1e-12);
+    }
+    bool advance() override {
+        if (t1_ >= t_stop_) return false;
+        const auto interval = dense_.do_step(sys_);
+        ++steps_;
+        t0_ = interval.first;
+        t1_ = std::min(interval.second, t_stop_);
+        return true;
+    }
+    void state_at(double t, double& theta, double& omega) override {
+        State x;
+        dense_.calc_state(t, x);
+        theta = x[0];
+        omega = x[1];
+    }
+
+private:
+    SolverOptions options_;
+    Dense dense_;
+    RockingSystem sys_{};
+    double t_stop_ = 0;
+};
+
+// Fehlberg 7(8) through Odeint's controlled stepper.
+class Rkf78Stepper : public Stepper {
+public:
+    Rkf78Stepper(const Model& model, const GroundInput& input, const SolverOptions& options)
+        : options_(options),
+          controlled_(odeint::make_controlled(options.atol_alpha * model.block.alpha, options.rtol,
+                                              odeint::runge_kutta_fehlberg78<State>())) {
+        sys_.model = &model;
+        sys_.input = &input;
+        sys_.counter = &rhs_;
+    }
+    void reset(double t, double theta, double omega, int sigma, double t_stop) override {
+        sys_.sigma = sigma;
+        sys_.t_stop = t_stop;
+        t0_ = t1_ = t;
+        t_stop_ = t_stop;
+        x_ = {theta, omega};
+        h_ = std::min(1e-3 / sys_.model->block.p, t_stop - t);
+    }
+    bool advance() override {
+        if (t1_ >= t_stop_) return false;
+        const double h_max = options_.max_step_p / sys_.model->block.p;
+        x0_ = x_;
+        t0_ = t1_;
+        double t = t1_;
+        for (int tries = 0;; ++tries) {
+            if (tries > 500) throw std::runtime_error("rkf78: step size underflow at t = " + std::to_string(t));
+            double h = std::min({h_, h_max, t_stop_ - t});
+            const bool last = (h == t_stop_ - t);
+            if (controlled_.try_step(sys_, x_, t, h) == odeint::success) {
+                t1_ = last ? t_stop_ : t;
+                h_ = h;
+                break;
+            }
+            h_ = h;
+        }
+        ++steps_;
+        return true;
+    }
+    void state_at(double t, double& theta, double& omega) override {
+        State out = x0_;
+        if (t > t0_) controlled_.stepper().do_step(sys_, x0_, t0_, out, t - t0_);
+        theta = out[0];
+        omega = out[1];
+    }
+
+private:
+    SolverOptions options_;
+    odeint::controlled_runge_kutta<odeint::runge_kutta_fehlberg78<State>> controlled_;
+    RockingSystem sys_{};
+    State x_{}, x0_{};
+    double h_ = 0, t_stop_ = 0;
+};
+
+// GSL's rk8pd (Prince-Dormand 8(9)) with GSL's standard step control.
+class GslStepper : public Stepper {
+public:
+    GslStepper(const Model& model, const GroundInput& input, const SolverOptions& options) : options_(options) {
+        sys_.model = &model;
+        sys_.input = &input;
+        sys_.counter = &rhs_;
+        gsl_sys_ = {&GslStepper::rhs, nullptr, 2, &sys_};
+        step_ = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
+        probe_ = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
+        control_ = gsl_odeiv2_control_standard_new(options.atol_alpha * model.block.alpha, options.rtol, 1.0, 1.0);
+        evolve_ = gsl_odeiv2_evolve_alloc(2);
+    }
+    ~GslStepper() override {
+        gsl_odeiv2_evolve_free(evolve_);
+        gsl_odeiv2_control_free(control_);
+        gsl_odeiv2_step_free(probe_);
+        gsl_odeiv2_step_free(step_);
+    }
+    static int rhs(double t, const double y[], double dydt[], void* params) {
+        State x{y[0], y[1]}, d;
+        (*static_cast<RockingSystem*>(params))(x, d, t);
+        dydt[0] = d[0];
+        dydt[1] = d[1];
+        return GSL_SUCCESS;
+    }
+    void reset(double t, double theta, double omega, int sigma, double t_stop) override {
+        sys_.sigma = sigma;
+        sys_.t_stop = t_stop;
+        t0_ = t1_ = t;
+        t_stop_ = t_stop;
+        y_[0] = theta;
+        y_[1] = omega;
+        h_ = std::min(1e-3 / sys_.model->block.p, t_stop - t);
+        gsl_odeiv2_evolve_reset(evolve_);
+        gsl_odeiv2_step_reset(step_);
+    }
+    bool advance() override {
+        if (t1_ >= t_stop_) return false;
+        const double h_max = options_.max_step_p / sys_.model->block.p;
+        y0_[0] = y_[0];
+        y0_[1] = y_[1];
+        t0_ = t1_;
+        double t = t1_;
+        h_ = std::min(h_, h_max);
+        const int status = gsl_odeiv2_evolve_apply(evolve_, control_, step_, &gsl_sys_, &t, t_stop_, &h_, y_);
+        if (status != GSL_SUCCESS) throw std::runtime_error("gsl rk8pd failed at t = " + std::to_string(t));
+        t1_ = t;
+        ++steps_;
+        return true;
+    }
+    void state_at(double t, double& theta, double& omega) override {
+        double y[2] = {y0_[0], y0_[1]}, err[2];
+        if (t > t0_) {
+            gsl_odeiv2_step_reset(probe_);
+            gsl_odeiv2_step_apply(probe_, t0_, t - t0_, y, err, nullptr, nullptr, &gsl_sys_);
+        }
+        theta = y[0];
+        omega = y[1];
+    }
+
+private:
+    SolverOptions options_;
+    RockingSystem sys_{};
+    gsl_odeiv2_system gsl_sys_{};
+    gsl_odeiv2_step* step_;
+    gsl_odeiv2_step* probe_;
+    gsl_odeiv2_control* control_;
+    gsl_odeiv2_evolve* evolve_;
+    double y_[2] = {0, 0}, y0_[2] = {0, 0}, h_ = 0, t_stop_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Stepper> make_exact_stepper(const Model&, const GroundInput&, const SolverOptions&);
+
+std::unique_ptr<Stepper> make_stepper(const Model& model, const GroundInput& input, const SolverOptions& options) {
+    const double atol = options.atol_alpha * model.block.alpha, h_max = options.max_step_p / model.block.p;
+    switch (options.kind) {
+        case SolverKind::exact:
+            if (model.equation != Equation::linearised)
+                throw std::invalid_argument("the exact solver handles the linearised equation only");
+            return make_exact_stepper(model, input, options);
+        case SolverKind::dopri5: {
+            auto dense = odeint::make_dense_output(atol, options.rtol, h_max, odeint::runge_kutta_dopri5<State>());
+            return std::make_unique<DenseStepper<decltype(dense)>>(model, input, options, std::move(dense));
+        }
+        case SolverKind::bulirsch_stoer: {
+            odeint::bulirsch_stoer_dense_out<State> dense(atol, options.rtol, 1.0, 1.0, h_max);
+            return std::make_unique<DenseStepper<decltype(dense)>>(model, input, options, std::move(dense));
+        }
+        case SolverKind::rkf78:
+            return std::make_unique<Rkf78Stepper>(model, input, options);
+        case SolverKind::gsl_rk8pd:
+            return std::make_unique<GslStepper>(model, input, options);
+    }
+    throw std::invalid_argument("unknown solver");
+}
+
+std::string solver_name(SolverKind kind) {
+    switch (kind) {
+        case SolverKind::exact: return "exact";
+        case SolverKind::dopri5: return "dopri5";
+        case SolverKind::rkf78: return "rkf78";
+        case SolverKind::bulirsch_stoer: return "bulirsch-stoer";
+        case SolverKind::gsl_rk8pd: return "gsl-rk8pd";
+    }
+    return "?";
+}
+
+SolverKind parse_solver(const std::string& name) {
+    for (SolverKind k : {SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78, SolverKind::bulirsch_stoer,
+                         SolverKind::gsl_rk8pd})
+        if (solver_name(k) == name) return k;
+    throw std::invalid_argument("unknown solver '" + name + "' (exact, dopri5, rkf78, bulirsch-stoer, gsl-rk8pd)");
+}
+
+}  // namespace rocking::dynamics

@@ -1,0 +1,249 @@
+#include "dynamics/simulate.hpp"
+
+#include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+
+namespace rocking::dynamics {
+
+std::string criterion_name(Criterion c) {
+    switch (c) {
+        case Criterion::final_rotation: return "final-rotation";
+        case Criterion::peak_rotation: return "peak-rotation";
+        case Criterion::overturning: return "overturning";
+    }
+    return "?";
+}
+
+Criterion parse_criterion(const std::string& name) {
+    for (Criterion c : {Criterion::final_rotation, Criterion::peak_rotation, Criterion::overturning})
+        if (criterion_name(c) == name) return c;
+    throw std::invalid_argument("unknown criterion '" + name + "' (final-rotation, peak-rotation, overturning)");
+}
+
+bool SimulationResult::collapse(Criterion c, double alpha) const {
+    if (overturned_during_input) return true;
+    switch (c) {
+        case Criterion::final_rotation: return std::fabs(theta_at_tfin) >= alpha;
+        case Criterion::peak_rotation: return max_abs_theta_input >= alpha;
+        case Criterion::overturning: return overturned;
+    }
+    return false;
+}
+
+namespace {
+
+// The root of f on [a, b], f(a) and f(b) of opposite signs (or f(b) = 0).
+template <class F>
+double locate(F f, double a, double b) {
+    const double fa = f(a), fb = f(b);
+    if (fb == 0.0) return b;
+    if (fa == 0.0) return a;
+    std::uintmax_t iterations = 200;
+    const auto r = boost::math::tools::toms748_solve(f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(50),
+                                                     iterations);
+    return 0.5 * (r.first + r.second);
+}
+
+// First time >= t, before t_end, at which |a|/g exceeds the uplift threshold.
+double find_uplift(const GroundInput& input, double t, double t_end, double thr) {
+    while (t < t_end) {
+        const InputPiece piece = input.piece_at(t);
+        const double end = std::min(piece.t1, t_end);
+        if (std::fabs(piece.at(t)) > thr) return t;
+        if (piece.s == 0.0) {
+            if (piece.c1 != 0.0) {
+                double best = INFINITY;
+                for (double target : {thr, -thr}) {
+                    const double tc = piece.t0 + (target - piece.c0) / piece.c1;
+                    if (tc > t && tc < end) best = std::min(best, tc);
+                }
+                if (best < end) return best;
+            }
+        } else {
+            // A sinusoidal piece: bracket on a fine grid, then refine.
+            const int n = 256;
+            double prev = t;
+            for (int k = 1; k <= n; ++k) {
+                const double tk = t + (end - t) * k / n;
+                if (std::fabs(piece.at(tk)) > thr) {
+                    return locate([&](double s) { return std::fabs(piece.at(s)) - thr; }, prev, tk);
+                }
+                prev = tk;
+            }
+        }
+        t = end;
+    }
+    return INFINITY;
+}
+
+}  // namespace
+
+SimulationResult simulate(const Model& model, const GroundInput& input, const SimulationOptions& options) {
+    const double alpha = model.block.alpha, p = model.block.p;
+    const double thr = model.uplift_threshold();
+    const double t_fin = input.t_end();
+    std::vector<double> breaks = input.discontinuities();
+    breaks.push_back(t_fin);
+    std::sort(breaks.begin(), breaks.end());
+
+    SimulationResult result;
+    result.t_fin = t_fin;
+    auto stepper = make_stepper(model, input, options.solver);
+
+    double t = 0.0, theta = 0.0, omega = 0.0;
+    int sigma = 1;
+    bool resting = true, recorded = false, done = false;
+    double next_sample = 0.0;
+    // Free rocking: how long to go on after t_fin (long enough to see a fall).
+    double t_limit = t_fin + options.free_record_time;
+
+    auto sample_until = [&](double until, const std::function<void(double, double&, double&)>& at) {
+        if (options.record_dt <= 0) return;
+        while (next_sample <= until && next_sample <= t_limit + 1e-12) {
+            double th, om;
+            at(next_sample, th, om);
+            result.samples.push_back({next_sample, th, om});
+            next_sample += options.record_dt;
+        }
+    };
+    auto note_theta = [&](double when, double value) {
+        if (when <= t_fin) result.max_abs_theta_input = std::max(result.max_abs_theta_input, std::fabs(value));
+    };
+    // After the input the ground is at rest: a block below the energy barrier
+    // can never overturn (impacts only take energy away), so the simulation
+    // stops as soon as the record asked for is complete; a block above it is
+    // followed until it falls (bounded: 200 / p after t_fin).
+    auto stop_after_input = [&]() {
+        if (!options.free_rocking || resting) return true;
+        if (model.energy(theta, omega, sigma) < model.barrier()) return t >= t_limit;
+        t_limit = std::max(t_limit, t_fin + 200.0 / p);
+        return t >= t_limit;
+    };
+
+    while (!done) {
+        if (!recorded && t >= t_fin) {
+            result.theta_at_tfin = theta;
+            result.omega_at_tfin = omega;
+            recorded = true;
+            note_theta(t_fin, theta);
+        }
+        if (resting) {
+            const double tu = t < t_fin ? find_uplift(input, t, t_fin, thr) : INFINITY;
+            if (tu >= t_fin) {
+                sample_until(std::max(t_fin, t_limit), [](double, double& th, double& om) { th = om = 0.0; });
+                if (!recorded) {
+                    result.theta_at_tfin = result.omega_at_tfin = 0.0;
+                    recorded = true;
+                }
+                break;
+            }
+            sample_until(tu, [](double, double& th, double& om) { th = om = 0.0; });
+            t = tu;
+            theta = omega = 0.0;
+            sigma = input.accel(tu) > 0 ? 1 : -1;
+            resting = false;
+            result.uplifted = true;
+        }
+        if (t >= t_fin && stop_after_input()) break;
+
+        double t_stop = t_limit;
+        for (double b : breaks)
+            if (b > t) {
+                t_stop = b;
+                break;
+            }
+        if (t >= t_fin) t_stop = t_limit;
+        stepper->reset(t, theta, omega, sigma, t_stop);
+        double ta = t, tha = theta, oma = omega;
+        bool event = false;
+        while (!event && stepper->advance()) {
+            const double tb = stepper->t_end();
+            double thb, omb;
+            stepper->state_at(tb, thb, omb);
+            auto th_at = [&](double s) {
+                double th, om;
+                stepper->state_at(s, th, om);
+                return th;
+            };
+            auto om_at = [&](double s) {
+                double th, om;
+                stepper->state_at(s, th, om);
+                return om;
+            };
+            // Extremum of theta inside the step (theta' changes sign).
+            double t_ext = NAN, th_ext = NAN;
+            if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) {
+                t_ext = locate(om_at, ta, tb);
+                th_ext = th_at(t_ext);
+            }
+            // Terminal events: impact (sigma theta reaches 0) and fall.
+            double t_impact = INFINITY, t_fall = INFINITY;
+            // The first root of sigma theta in the step: before the extremum
+            // when theta dips below 0 there, after it otherwise.
+            auto impact_in = [&](double lo, double hi) {
+                return locate([&](double s) { return sigma * th_at(s); }, lo, hi);
+            };
+            const bool dips = !std::isnan(t_ext) && sigma * th_ext < 0.0;
+            if (dips) t_impact = impact_in(ta, t_ext);
+            else if (sigma * thb < 0.0) t_impact = impact_in(std::isnan(t_ext) ? ta : t_ext, tb);
+            if (sigma * thb >= options.overturn_angle)
+                t_fall = locate([&](double s) { return sigma * th_at(s) - options.overturn_angle; }, ta, tb);
+            const double t_cut = std::min({t_impact, t_fall, tb});
+            // First time |theta| = alpha.
+            if (std::isnan(result.t_first_alpha) && sigma * tha < alpha) {
+                if (sigma * th_at(t_cut) >= alpha)
+                    result.t_first_alpha = locate([&](double s) { return sigma * th_at(s) - alpha; }, ta, t_cut);
+                else if (!std::isnan(t_ext) && t_ext < t_cut && sigma * th_ext >= alpha)
+                    result.t_first_alpha = locate([&](double s) { return sigma * th_at(s) - alpha; }, ta, t_ext);
+            }
+            if (!std::isnan(t_ext) && t_ext <= t_cut) note_theta(t_ext, th_ext);
+            sample_until(t_cut, [&](double s, double& th, double& om) { stepper->state_at(s, th, om); });
+            if (t_fall <= t_cut && t_fall < INFINITY) {
+                result.overturned = true;
+                result.t_overturn = t_fall;
+                result.overturned_during_input = t_fall <= t_fin;
+                note_theta(t_fall, sigma * options.overturn_angle);
+                done = true;
+                event = true;
+            } else if (t_impact <= t_cut && t_impact < INFINITY) {
+                double th_i, om_i;
+                stepper->state_at(t_impact, th_i, om_i);
+                note_theta(t_impact, 0.0);
+                if (++result.impacts > options.max_impacts)
+                    throw std::runtime_error("impact cascade did not end after " + std::to_string(options.max_impacts) +
+                                             " impacts (t = " + std::to_string(t_impact) + " s)");
+                t = t_impact;
+                theta = 0.0;
+                omega = model.restitution * om_i;
+                sigma = -sigma;
+                if (std::fabs(omega) < options.rest_velocity * alpha * p) {
+                    omega = 0.0;
+                    resting = true;
+                    ++result.rests;
+                }
+                event = true;
+            } else {
+                note_theta(tb, thb);
+                ta = tb;
+                tha = thb;
+                oma = omb;
+            }
+        }
+        if (!event) {
+            t = stepper->t_end();
+            stepper->state_at(t, theta, omega);
+        }
+    }
+    // Overturning decided by energy when the fall itself was not simulated.
+    if (options.free_rocking && !result.overturned && !resting && recorded && t >= t_fin &&
+        model.energy(theta, omega, sigma) >= model.barrier())
+        result.overturned = true;
+    result.rhs_evaluations = stepper->rhs_evaluations();
+    result.steps = stepper->steps();
+    return result;
+}
+
+}  // namespace rocking::dynamics

@@ -1,0 +1,63 @@
+// The simulation driver: composes an equation of motion (Model), a ground
+// input and a solver, and handles what happens between the solver's steps:
+// uplift from rest, impacts at theta = 0 with restitution (the block passes to
+// the other corner), the end of an impact cascade, and the collapse criteria.
+#pragma once
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "dynamics/ground_input.hpp"
+#include "dynamics/model.hpp"
+#include "dynamics/stepper.hpp"
+
+namespace rocking::dynamics {
+
+// The collapse criteria (NOTES.md, Figure 5):
+//   final_rotation: |theta(t_fin)| >= alpha, the paper's (eq. 11, 21);
+//   peak_rotation:  |theta| reaches alpha at some time during the input;
+//   overturning:    the block overturns at any time, the free rocking after
+//                   the input included (ground at rest).
+// A block that overturns during the input has collapsed under all three.
+enum class Criterion { final_rotation, peak_rotation, overturning };
+std::string criterion_name(Criterion c);
+// Parses final-rotation, peak-rotation, overturning; throws std::invalid_argument.
+Criterion parse_criterion(const std::string& name);
+
+struct SimulationOptions {
+    SolverOptions solver;
+    bool free_rocking = true;         // decide overturning after the input (needed by Criterion::overturning)
+    double record_dt = 0.0;           // > 0: keep (t, theta, omega) every record_dt seconds
+    double free_record_time = 0.0;    // seconds of free rocking after t_fin to keep in the record
+    double overturn_angle = M_PI / 2; // |theta| at which the block has fallen
+    double rest_velocity = 1e-9;      // |theta'| below rest_velocity * alpha * p after an impact: the block rests
+    int max_impacts = 1000000;        // beyond: std::runtime_error (an impact cascade that does not end)
+};
+
+struct Sample {
+    double t, theta, omega;
+};
+
+struct SimulationResult {
+    double t_fin = 0;
+    double theta_at_tfin = 0, omega_at_tfin = 0;
+    double max_abs_theta_input = 0;  // largest |theta| on [0, t_fin]
+    double t_first_alpha = NAN;      // first time |theta| = alpha (any phase)
+    bool uplifted = false;
+    bool overturned = false;         // at any time, the free rocking included
+    bool overturned_during_input = false;
+    double t_overturn = NAN;         // NaN when decided by energy without simulating the fall
+    int impacts = 0;
+    int rests = 0;                   // times an impact cascade ended with the block at rest
+    long rhs_evaluations = 0, steps = 0;
+    std::vector<Sample> samples;
+
+    bool collapse(Criterion c, double alpha) const;
+};
+
+// Throws std::invalid_argument for an exact solver on the full equation, and
+// std::runtime_error when a solver fails or impacts do not end.
+SimulationResult simulate(const Model& model, const GroundInput& input, const SimulationOptions& options);
+
+}  // namespace rocking::dynamics

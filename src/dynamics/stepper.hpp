@@ -1,0 +1,50 @@
+// Segment steppers: each advances the block on one corner, between two
+// events where its state or the input jumps, one step at a time, and gives
+// the state anywhere inside its last step (for event location).  The driver
+// (simulate.hpp) does the rest: impacts, rest and uplift, criteria.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "dynamics/ground_input.hpp"
+#include "dynamics/model.hpp"
+
+namespace rocking::dynamics {
+
+enum class SolverKind { exact, dopri5, rkf78, bulirsch_stoer, gsl_rk8pd };
+
+struct SolverOptions {
+    SolverKind kind = SolverKind::exact;
+    double rtol = 1e-6;        // relative tolerance (ODE solvers)
+    double atol_alpha = 1e-6;  // absolute tolerance on theta, in units of alpha (theta' in alpha p)
+    double max_step_p = 0.5;   // largest step times p: keeps at most one extremum of theta per step
+};
+
+std::string solver_name(SolverKind kind);
+// Parses exact, dopri5, rkf78, bulirsch-stoer, gsl-rk8pd; throws std::invalid_argument.
+SolverKind parse_solver(const std::string& name);
+
+class Stepper {
+public:
+    virtual ~Stepper() = default;
+    // Start a segment at (t, theta, omega) on corner sigma; no step goes beyond t_stop.
+    virtual void reset(double t, double theta, double omega, int sigma, double t_stop) = 0;
+    // One step; false when the segment is already at t_stop.
+    virtual bool advance() = 0;
+    double t_begin() const { return t0_; }
+    double t_end() const { return t1_; }
+    // State at t in [t_begin, t_end] of the last step.
+    virtual void state_at(double t, double& theta, double& omega) = 0;
+    long rhs_evaluations() const { return rhs_; }
+    long steps() const { return steps_; }
+
+protected:
+    double t0_ = 0, t1_ = 0;
+    long rhs_ = 0, steps_ = 0;
+};
+
+// Throws std::invalid_argument when the exact solver is asked for the full equation.
+std::unique_ptr<Stepper> make_stepper(const Model& model, const GroundInput& input, const SolverOptions& options);
+
+}  // namespace rocking::dynamics
