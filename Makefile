@@ -5,7 +5,7 @@ JOBS    ?= 2
 # Debian packages the project needs (header-only Boost: Odeint, Math, Multiprecision).
 PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath
 
-.PHONY: all deps build reproduce test bless clean
+.PHONY: all deps build reproduce test bless bench clean
 
 all: build
 
@@ -38,6 +38,11 @@ test: build
 bless: build
 	@test -n "$(SCENE)" || { echo "usage: make bless SCENE=<scene>" >&2; exit 2; }
 	$(BUILD)/reproduce --out $(OUT) --bless $(SCENE)
+
+# The speed-accuracy trade (a benchmark, not a test): out/bench/work_precision.{csv,png}, summary.txt.
+bench: build
+	cmake --build $(BUILD) --target bench_work_precision -j $(JOBS)
+	$(BUILD)/bench_work_precision --out $(OUT)/bench
 
 clean:
 	rm -rf $(BUILD) $(OUT)

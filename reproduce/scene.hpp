@@ -12,7 +12,10 @@ namespace rocking::scenes {
 
 class SceneContext {
 public:
-    explicit SceneContext(std::string dir) : dir_(std::move(dir)) {}
+    explicit SceneContext(std::string dir, bool reference = false) : dir_(std::move(dir)), reference_(reference) {}
+    // true: the scene computes with its reference solver (a second method at a
+    // much tighter tolerance), to check the expected files independently.
+    bool reference() const { return reference_; }
     // Writes the table as <dir>/<file>; throws std::runtime_error on failure.
     void write(const harness::Table& table, const std::string& file);
     const std::string& dir() const { return dir_; }
@@ -20,6 +23,7 @@ public:
 
 private:
     std::string dir_;
+    bool reference_;
     std::vector<std::string> written_;
 };
 
@@ -28,6 +32,7 @@ struct Scene {
     std::string title;   // what it reproduces
     std::string model;   // equation of motion and assumptions
     std::string solver;  // how the numbers are computed, with its tolerance
+    std::string reference;  // the second method used by --reference ("" when the scene has none)
     std::function<void(SceneContext&)> run;
 };
 
@@ -39,5 +44,7 @@ std::vector<double> x_grid();
 void run_fig04(SceneContext& ctx);
 void run_fig07(SceneContext& ctx);
 void run_errata(SceneContext& ctx);
+void run_fig05(SceneContext& ctx);
+void run_fig06(SceneContext& ctx);
 
 }  // namespace rocking::scenes

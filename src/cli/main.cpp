@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -15,6 +16,8 @@
 
 #include "harness/table.hpp"
 #include "pulse/pulse_train.hpp"
+#include "dynamics/simulate.hpp"
+#include "qfactor/closed_forms.hpp"
 #include "qfactor/superposition.hpp"
 
 using namespace rocking;
@@ -25,6 +28,8 @@ const char* kUsage =
     "usage: rocking q --case I --x X [--pulses N] [--json]\n"
     "       rocking q --train A:d,A:d,... --x X [--json]\n"
     "       rocking response --case I --x X [--pulses N] [--q Q] [--steps K] [--json]\n"
+    "       rocking simulate INPUT GEOMETRY [--model M] [--solver S] [--rtol R] [--criterion C]\n"
+    "                        [--restitution E|housner] [--output FILE --dt DT] [--json]\n"
     "\n"
     "  --case I     input of Figure 3, I = 1..5 (amplitudes in PGA, durations in to)\n"
     "  --pulses N   repeat the case's pattern to N pulses (case 2, N = 6 is eq. 27)\n"
@@ -33,7 +38,17 @@ const char* kUsage =
     "  --q Q        response at this q instead of the collapse q\n"
     "  --steps K    number of time steps over [0, t_fin] (default 20)\n"
     "  --json       machine-readable output\n"
-    "Model: linearised eq. 3, rocking on one corner without impact, collapse theta(t_fin) = alpha.\n";
+    "q and response: linearised eq. 3, one corner, no impact, collapse theta(t_fin) = alpha.\n"
+    "\n"
+    "simulate: INPUT is --case I [--pulses N] or --train A:d,...  with --to T (s) or --x X, and the\n"
+    "  amplitude as --pga G (in g), --q Q (PGA = Q alpha g) or --rd R (PGA = q_I(x) R alpha g);\n"
+    "  or --one-sine --ap A (in g) --wp W (rad/s).\n"
+    "  GEOMETRY is --alpha A with --p P (rad/s), --half-height h (m, the H of eq. 2) or --height H (m).\n"
+    "  --model linearised|full (default linearised); --solver exact|dopri5|rkf78|bulirsch-stoer|gsl-rk8pd\n"
+    "  (default exact for linearised, dopri5 for full); --rtol (default 1e-6);\n"
+    "  --criterion final-rotation|peak-rotation|overturning (default final-rotation, the paper's);\n"
+    "  --restitution on angular velocity at impact (default 1) or housner (1 - 1.5 sin^2 alpha);\n"
+    "  --output FILE writes t,theta/alpha,theta'/(alpha p) every --dt seconds (default 0.01).\n";
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -174,6 +189,123 @@ int cmd_response(int argc, char** argv) {
     return 0;
 }
 
+int cmd_simulate(int argc, char** argv) {
+    using namespace rocking::dynamics;
+    // --one-sine takes no value: handle it before the generic parser.
+    std::vector<char*> args(argv, argv + argc);
+    bool one_sine = false;
+    for (auto it = args.begin() + 2; it != args.end();)
+        if (std::string(*it) == "--one-sine") one_sine = true, it = args.erase(it);
+        else ++it;
+    const Args a = parse(static_cast<int>(args.size()), args.data(), 2,
+                         {"--case", "--train", "--pulses", "--x", "--to", "--pga", "--q", "--rd", "--ap", "--wp",
+                          "--alpha", "--p", "--half-height", "--height", "--model", "--solver", "--rtol", "--criterion",
+                          "--restitution", "--output", "--dt"});
+    auto has = [&](const char* f) { return a.values.count(f) > 0; };
+    auto num = [&](const char* f) { return number(f, a.values.at(f)); };
+    if (!has("--alpha")) throw UsageError("--alpha is required");
+    const double alpha = num("--alpha");
+    const int geometry = has("--p") + has("--half-height") + has("--height");
+    if (geometry != 1) throw UsageError("give exactly one of --p, --half-height and --height");
+    Model model;
+    try {
+        model.block = has("--p") ? Block::from_p(num("--p"), alpha)
+                                 : has("--half-height") ? Block::from_half_height(num("--half-height"), alpha)
+                                                        : Block::from_full_height(num("--height"), alpha);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    const std::string model_name = has("--model") ? a.values.at("--model") : "linearised";
+    if (model_name == "full") model.equation = Equation::full;
+    else if (model_name != "linearised") throw UsageError("--model: linearised or full (got " + model_name + ")");
+    if (has("--restitution")) {
+        const std::string e = a.values.at("--restitution");
+        model.restitution = e == "housner" ? housner_restitution(alpha) : number("--restitution", e);
+        if (!(model.restitution >= 0 && model.restitution <= 1)) throw UsageError("--restitution: must be in [0, 1]");
+    }
+    SimulationOptions options;
+    try {
+        options.solver.kind = has("--solver") ? parse_solver(a.values.at("--solver"))
+                                              : (model.equation == Equation::full ? SolverKind::dopri5 : SolverKind::exact);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--solver: ") + e.what());
+    }
+    if (has("--rtol")) {
+        options.solver.rtol = num("--rtol");
+        options.solver.atol_alpha = options.solver.rtol;
+        if (!(options.solver.rtol > 0 && options.solver.rtol < 1)) throw UsageError("--rtol: must be in (0, 1)");
+    }
+    Criterion criterion = Criterion::final_rotation;
+    try {
+        if (has("--criterion")) criterion = parse_criterion(a.values.at("--criterion"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--criterion: ") + e.what());
+    }
+    std::unique_ptr<GroundInput> input;
+    std::string amplitude_note;
+    if (one_sine) {
+        if (!has("--ap") || !has("--wp")) throw UsageError("--one-sine needs --ap and --wp");
+        try {
+            input = std::make_unique<OneSinePulse>(num("--ap"), num("--wp"), model.uplift_threshold());
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(e.what());
+        }
+    } else {
+        std::string equation;
+        const PulseTrain train = train_from(a, equation);
+        if (has("--to") == has("--x")) throw UsageError("give exactly one of --to and --x");
+        const double to = has("--to") ? num("--to") : num("--x") / model.block.p;
+        if (!(to > 0)) throw UsageError("--to/--x: must be > 0");
+        const int amplitude = has("--pga") + has("--q") + has("--rd");
+        if (amplitude != 1) throw UsageError("give exactly one of --pga, --q and --rd");
+        double pga;
+        if (has("--pga")) pga = num("--pga");
+        else if (has("--q")) pga = num("--q") * alpha;
+        else pga = num("--rd") * q_factor(train, model.block.p * to).q * alpha;
+        if (!(pga > 0)) throw UsageError("the PGA must be > 0");
+        input = std::make_unique<PulseInput>(train, pga, to);
+    }
+    if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
+    if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
+    const SimulationResult r = simulate(model, *input, options);
+    if (has("--output")) {
+        harness::Table table({"t", "theta_over_alpha", "omega_over_alpha_p"});
+        table.note("model", model.describe());
+        table.note("input", input->describe());
+        table.note("solver", solver_name(options.solver.kind));
+        for (const Sample& s : r.samples)
+            table.row().add(s.t).add(s.theta / alpha).add(s.omega / (alpha * model.block.p));
+        table.write(a.values.at("--output"));
+    }
+    const bool collapse = r.collapse(criterion, alpha);
+    if (a.json) {
+        auto b = [](bool v) { return v ? "true" : "false"; };
+        std::cout << "{\"model\": " << json_string(model.describe()) << ", \"input\": " << json_string(input->describe())
+                  << ", \"solver\": " << json_string(solver_name(options.solver.kind))
+                  << ", \"rtol\": " << harness::format_number(options.solver.rtol)
+                  << ", \"criterion\": " << json_string(criterion_name(criterion)) << ", \"collapse\": " << b(collapse)
+                  << ", \"t_fin\": " << harness::format_number(r.t_fin)
+                  << ", \"theta_tfin_over_alpha\": " << harness::format_number(r.theta_at_tfin / alpha)
+                  << ", \"max_theta_input_over_alpha\": " << harness::format_number(r.max_abs_theta_input / alpha)
+                  << ", \"impacts\": " << r.impacts << ", \"overturned\": " << b(r.overturned)
+                  << ", \"collapse_final_rotation\": " << b(r.collapse(Criterion::final_rotation, alpha))
+                  << ", \"collapse_peak_rotation\": " << b(r.collapse(Criterion::peak_rotation, alpha))
+                  << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
+    } else {
+        std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
+        std::printf("  model:  %s\n  input:  %s\n  solver: %s (rtol %g)\n", model.describe().c_str(),
+                    input->describe().c_str(), solver_name(options.solver.kind).c_str(), options.solver.rtol);
+        std::printf("  theta(t_fin)/alpha = %.10g at t_fin = %g s; max |theta|/alpha during the input = %.10g\n",
+                    r.theta_at_tfin / alpha, r.t_fin, r.max_abs_theta_input / alpha);
+        std::printf("  impacts: %d; overturns (free rocking included): %s\n", r.impacts, r.overturned ? "yes" : "no");
+        std::printf("  final-rotation: %s; peak-rotation: %s; overturning: %s\n",
+                    r.collapse(Criterion::final_rotation, alpha) ? "collapse" : "safe",
+                    r.collapse(Criterion::peak_rotation, alpha) ? "collapse" : "safe",
+                    r.collapse(Criterion::overturning, alpha) ? "collapse" : "safe");
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -181,6 +313,7 @@ int main(int argc, char** argv) {
     try {
         if (command == "q") return cmd_q(argc, argv);
         if (command == "response") return cmd_response(argc, argv);
+        if (command == "simulate") return cmd_simulate(argc, argv);
         if (command == "help" || command == "--help" || command == "-h") {
             std::cout << kUsage;
             return 0;

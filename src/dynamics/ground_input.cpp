@@ -53,7 +53,11 @@ SampledInput::SampledInput(std::vector<double> samples_g, double dt, std::string
 InputPiece SampledInput::piece_at(double t) const {
     const std::size_t last = samples_.size() - 1;
     if (t >= dt_ * last) return {dt_ * last, INFINITY};
-    const std::size_t k = std::min(last - 1, static_cast<std::size_t>(std::max(0.0, std::floor(t / dt_))));
+    // t / dt can round either way at a sample time: the piece must satisfy
+    // k dt <= t < (k + 1) dt exactly, or a stepper starting at its end makes no progress.
+    std::size_t k = std::min(last - 1, static_cast<std::size_t>(std::max(0.0, std::floor(t / dt_))));
+    while (k + 1 < last && dt_ * (k + 1) <= t) ++k;
+    while (k > 0 && dt_ * k > t) --k;
     InputPiece p{dt_ * k, dt_ * (k + 1)};
     p.c0 = samples_[k];
     p.c1 = (samples_[k + 1] - samples_[k]) / dt_;

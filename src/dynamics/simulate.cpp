@@ -35,12 +35,15 @@ bool SimulationResult::collapse(Criterion c, double alpha) const {
 
 namespace {
 
-// The root of f on [a, b], f(a) and f(b) of opposite signs (or f(b) = 0).
+// The root of f on [a, b], where the caller knows a sign change.  f(a) is
+// re-evaluated from the step's closed form or interpolant, which at a root
+// just located (theta = 0 after an impact) can come out with the sign of
+// f(b) by rounding: the root is then at a itself.
 template <class F>
 double locate(F f, double a, double b) {
     const double fa = f(a), fb = f(b);
     if (fb == 0.0) return b;
-    if (fa == 0.0) return a;
+    if (fa == 0.0 || (fa < 0) == (fb < 0)) return a;
     std::uintmax_t iterations = 200;
     const auto r = boost::math::tools::toms748_solve(f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(50),
                                                      iterations);
@@ -93,20 +96,21 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     result.t_fin = t_fin;
     auto stepper = make_stepper(model, input, options.solver);
 
-    double t = 0.0, theta = 0.0, omega = 0.0;
-    int sigma = 1;
-    bool resting = true, recorded = false, done = false;
-    double next_sample = 0.0;
+    double t = 0.0, theta = options.initial_theta, omega = options.initial_omega;
+    int sigma = theta > 0 || (theta == 0 && omega > 0) ? 1 : -1;
+    bool resting = theta == 0.0 && omega == 0.0, recorded = false, done = false;
+    long next_sample_index = 0;
     // Free rocking: how long to go on after t_fin (long enough to see a fall).
     double t_limit = t_fin + options.free_record_time;
 
     auto sample_until = [&](double until, const std::function<void(double, double&, double&)>& at) {
         if (options.record_dt <= 0) return;
-        while (next_sample <= until && next_sample <= t_limit + 1e-12) {
+        // Sample times k dt; the last one may overshoot t_limit by rounding.
+        for (double ts = next_sample_index * options.record_dt;
+             ts <= until && ts <= t_limit * (1 + 1e-12); ts = ++next_sample_index * options.record_dt) {
             double th, om;
-            at(next_sample, th, om);
-            result.samples.push_back({next_sample, th, om});
-            next_sample += options.record_dt;
+            at(std::min(ts, until), th, om);
+            result.samples.push_back({ts, th, om});
         }
     };
     auto note_theta = [&](double when, double value) {
@@ -212,14 +216,24 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                 double th_i, om_i;
                 stepper->state_at(t_impact, th_i, om_i);
                 note_theta(t_impact, 0.0);
+                if (result.impacts == 0) result.t_first_impact = t_impact;
+                result.impact_times.push_back(t_impact);
                 if (++result.impacts > options.max_impacts)
                     throw std::runtime_error("impact cascade did not end after " + std::to_string(options.max_impacts) +
                                              " impacts (t = " + std::to_string(t_impact) + " s)");
+                // The end of a cascade: a rebound slower than the rest velocity
+                // (or than the solver's own accuracy, 10 atol), or a second impact
+                // within 1e-6/p of the last (a bounce too small to resolve), leaves
+                // the block at rest; the input may lift it again at once.
+                const double rest = std::max(options.rest_velocity,
+                                             options.solver.kind == SolverKind::exact ? 0.0 : 10.0 * options.solver.atol_alpha);
+                const bool micro = result.impact_times.size() >= 2 &&
+                                   t_impact - result.impact_times[result.impact_times.size() - 2] < 1e-6 / p;
                 t = t_impact;
                 theta = 0.0;
                 omega = model.restitution * om_i;
                 sigma = -sigma;
-                if (std::fabs(omega) < options.rest_velocity * alpha * p) {
+                if (micro || std::fabs(omega) < rest * alpha * p) {
                     omega = 0.0;
                     resting = true;
                     ++result.rests;

@@ -33,6 +33,8 @@ struct SimulationOptions {
     double overturn_angle = M_PI / 2; // |theta| at which the block has fallen
     double rest_velocity = 1e-9;      // |theta'| below rest_velocity * alpha * p after an impact: the block rests
     int max_impacts = 1000000;        // beyond: std::runtime_error (an impact cascade that does not end)
+    double initial_theta = 0.0;       // a block released from theta0 (free-rocking tests); 0: at rest
+    double initial_omega = 0.0;
 };
 
 struct Sample {
@@ -49,6 +51,8 @@ struct SimulationResult {
     bool overturned_during_input = false;
     double t_overturn = NAN;         // NaN when decided by energy without simulating the fall
     int impacts = 0;
+    double t_first_impact = NAN;
+    std::vector<double> impact_times;  // every impact, in order
     int rests = 0;                   // times an impact cascade ended with the block at rest
     long rhs_evaluations = 0, steps = 0;
     std::vector<Sample> samples;

@@ -1,0 +1,159 @@
+// The speed-accuracy trade, measured (a benchmark, not a test): each solver's
+// tolerance is swept on a pulse scene and on a real record, and the error is
+// written against CPU time and right-hand-side evaluations.
+//
+//   bench_work_precision [--records DIR] [--out DIR]
+//
+// Truth: on the pulse scene, the superposition engine (S1) (closed form); on
+// the record, the exact solver (exact for piecewise-linear input), itself
+// checked against GSL rk8pd at rtol 1e-13 (the difference is printed).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "dynamics/simulate.hpp"
+#include "qfactor/closed_forms.hpp"
+#include "qfactor/superposition.hpp"
+#include "records/record.hpp"
+
+#ifndef ROCKING_SOURCE_DIR
+#define ROCKING_SOURCE_DIR "."
+#endif
+
+using namespace rocking;
+using namespace rocking::dynamics;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Timed {
+    SimulationResult result;
+    double seconds;  // CPU time of one run (median-free mean over repeats >= 0.3 s)
+};
+
+Timed timed(const Model& m, const GroundInput& in, const SimulationOptions& o) {
+    Timed t{simulate(m, in, o), 0};
+    int repeats = 0;
+    const auto start = std::chrono::steady_clock::now();
+    double elapsed = 0;
+    do {
+        simulate(m, in, o);
+        ++repeats;
+        elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    } while (elapsed < 0.3 && repeats < 100000);
+    t.seconds = elapsed / repeats;
+    return t;
+}
+
+// The record's block: it rocks with impacts through the strong motion and
+// does not overturn, so the error measures the motion, not a yes/no outcome.
+double kAlpha = 0.2, kP = 2.0;
+
+SimulationOptions with(SolverKind k, double rtol) {
+    SimulationOptions o;
+    o.solver.kind = k;
+    o.solver.rtol = rtol;
+    o.solver.atol_alpha = rtol;
+    return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string records = std::string(ROCKING_SOURCE_DIR) + "/../shared/records";
+    std::string out = "out/bench";
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string a = argv[i];
+        if (a == "--records") records = argv[i + 1];
+        else if (a == "--out") out = argv[i + 1];
+        else if (a == "--alpha") kAlpha = std::atof(argv[i + 1]);
+        else if (a == "--p") kP = std::atof(argv[i + 1]);
+        else {
+            std::fprintf(stderr, "usage: bench_work_precision [--records DIR] [--out DIR]\n");
+            return 2;
+        }
+    }
+    fs::create_directories(out);
+    std::ofstream csv(out + "/work_precision.csv");
+    csv << "# benchmark: error against CPU time and RHS evaluations, per solver and tolerance\n"
+        << "# pulse: case 2, x = 0.6, Rd = 0.9, alpha = 0.1, p = 2 rad/s, linearised, restitution 1, free rocking; "
+           "error |theta(t_fin) - (S1)| / alpha\n"
+        << "# record: error |max|theta| - exact| / alpha over the input, linearised, Housner restitution\n"
+        << "scene,solver,rtol,error,cpu_seconds,rhs_evaluations,steps\n";
+    const SolverKind ode[] = {SolverKind::dopri5, SolverKind::rkf78, SolverKind::bulirsch_stoer, SolverKind::gsl_rk8pd};
+    std::FILE* summary = std::fopen((out + "/summary.txt").c_str(), "w");
+    auto say = [&](const char* fmt, auto... args) {
+        std::printf(fmt, args...);
+        std::fprintf(summary, fmt, args...);
+    };
+
+    // The pulse scene.
+    {
+        const double x = 0.6, alpha = 0.1, p = 2.0, q = q2(x) * 0.9;
+        Model m;
+        m.block = Block::from_p(p, alpha);
+        const PulseInput input(pulse_case(2), q * alpha, x / p);
+        const double truth = response(pulse_case(2), x, q, 2.0).phi;
+        const Timed exact = timed(m, input, with(SolverKind::exact, 0));
+        const double e0 = std::fabs(exact.result.theta_at_tfin / alpha - truth);
+        csv << "pulse,exact,0," << e0 << "," << exact.seconds << ",0," << exact.result.steps << "\n";
+        say("pulse scene: exact solver error %.2e in %.2e s\n", e0, exact.seconds);
+        for (SolverKind k : ode)
+            for (int e = 3; e <= 12; ++e) {
+                const double tol = std::pow(10.0, -e);
+                const Timed r = timed(m, input, with(k, tol));
+                const double err = std::fabs(r.result.theta_at_tfin / alpha - truth);
+                csv << "pulse," << solver_name(k) << "," << tol << "," << err << "," << r.seconds << ","
+                    << r.result.rhs_evaluations << "," << r.result.steps << "\n";
+                if (e == 6)
+                    say("pulse scene: %s at rtol 1e-6: error %.2e in %.2e s (%ld RHS)\n", solver_name(k).c_str(), err,
+                        r.seconds, r.result.rhs_evaluations);
+            }
+    }
+
+    // A real record.
+    const std::string path = records + "/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC";
+    if (!fs::exists(path)) {
+        say("record scene skipped: %s not found (the shared records folder is absent)\n", path.c_str());
+    } else {
+        const records::Record rec = records::read_esm(path);
+        const SampledInput input(rec.in_g(), rec.dt, rec.name);
+        Model m;
+        m.block = Block::from_p(kP, kAlpha);
+        m.restitution = housner_restitution(kAlpha);
+        const Timed exact = timed(m, input, with(SolverKind::exact, 0));
+        const SimulationResult check = simulate(m, input, with(SolverKind::gsl_rk8pd, 1e-13));
+        const double truth = exact.result.max_abs_theta_input / kAlpha;
+        say("record %s (%zu samples, %.1f s): exact solver %.3e s per run, %d impacts, max|theta|/alpha %.12f\n",
+            rec.name.c_str(), rec.accel.size(), rec.duration(), exact.seconds, exact.result.impacts, truth);
+        say("record: exact solver against GSL rk8pd at rtol 1e-13: |difference in max|theta||/alpha = %.2e\n",
+            std::fabs(check.max_abs_theta_input / kAlpha - truth));
+        csv << "record,exact,0,0," << exact.seconds << ",0," << exact.result.steps << "\n";
+        double dopri_1e6 = NAN;
+        for (SolverKind k : ode)
+            for (int e = 3; e <= 12; ++e) {
+                const double tol = std::pow(10.0, -e);
+                const Timed r = timed(m, input, with(k, tol));
+                const double err = std::fabs(r.result.max_abs_theta_input / kAlpha - truth);
+                csv << "record," << solver_name(k) << "," << tol << "," << err << "," << r.seconds << ","
+                    << r.result.rhs_evaluations << "," << r.result.steps << "\n";
+                if (e == 6) {
+                    say("record: %s at rtol 1e-6: error %.2e in %.3e s (%ld RHS, %d impacts)\n", solver_name(k).c_str(),
+                        err, r.seconds, r.result.rhs_evaluations, r.result.impacts);
+                    if (k == SolverKind::dopri5) dopri_1e6 = r.seconds;
+                }
+            }
+        say("record: the exact solver is %.1f times faster than Dormand-Prince at rtol 1e-6 (target: 20)\n",
+            dopri_1e6 / exact.seconds);
+    }
+    std::fclose(summary);
+    csv.close();
+    const std::string script = std::string(ROCKING_SOURCE_DIR) + "/bench/work_precision.gp";
+    const std::string cmd = "gnuplot -e \"dir='" + out + "'\" '" + script + "'";
+    if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "plot failed (gnuplot)\n");
+    std::printf("wrote %s/work_precision.csv, work_precision.png and summary.txt\n", out.c_str());
+    return 0;
+}

@@ -1,0 +1,180 @@
+#include "records/record.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace rocking::records {
+
+double Record::pga() const {
+    double m = 0;
+    for (double a : accel) m = std::max(m, std::fabs(a));
+    return m;
+}
+
+std::vector<double> Record::in_g(double g) const {
+    std::vector<double> out(accel.size());
+    for (std::size_t k = 0; k < accel.size(); ++k) out[k] = accel[k] / g;
+    return out;
+}
+
+namespace {
+
+std::string trim(const std::string& s) {
+    const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
+    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+// A whole token as a finite double, or false.
+bool parse_number(const std::string& token, double& value) {
+    if (token.empty()) return false;
+    char* end = nullptr;
+    errno = 0;
+    value = std::strtod(token.c_str(), &end);
+    return end == token.c_str() + token.size() && errno != ERANGE && std::isfinite(value);
+}
+
+std::ifstream open(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw RecordError(path, 0, "cannot open the file");
+    return in;
+}
+
+// Number of decimals printed in a header value (for the PGA comparison).
+int decimals(const std::string& text) {
+    const auto dot = text.find('.');
+    return dot == std::string::npos ? 0 : static_cast<int>(text.size() - dot - 1);
+}
+
+}  // namespace
+
+Record read_esm(const std::string& path) {
+    std::ifstream in = open(path);
+    Record r;
+    r.path = path;
+    r.format = "ESM ASCII";
+    std::string line;
+    int number = 0;
+    std::map<std::string, int> line_of;
+    bool in_header = true;
+    while (std::getline(in, line)) {
+        ++number;
+        const std::string t = trim(line);
+        if (in_header) {
+            const auto colon = t.find(':');
+            double v;
+            if (colon != std::string::npos && !parse_number(t, v)) {
+                const std::string key = trim(t.substr(0, colon));
+                r.header[key] = trim(t.substr(colon + 1));
+                line_of[key] = number;
+                continue;
+            }
+            in_header = false;
+        }
+        if (t.empty()) continue;
+        double v;
+        if (!parse_number(t, v)) throw RecordError(path, number, "sample '" + t + "' is not a number");
+        r.accel.push_back(v);
+    }
+    if (r.header.empty() && r.accel.empty()) throw RecordError(path, 0, "empty file");
+    for (const char* key : {"SAMPLING_INTERVAL_S", "NDATA", "UNITS", "PGA_CM/S^2"})
+        if (!r.header.count(key)) throw RecordError(path, 0, std::string("missing header key ") + key);
+    double dt, ndata, pga;
+    if (!parse_number(r.header["SAMPLING_INTERVAL_S"], dt) || !(dt > 0))
+        throw RecordError(path, line_of["SAMPLING_INTERVAL_S"], "SAMPLING_INTERVAL_S must be a number > 0");
+    if (!parse_number(r.header["NDATA"], ndata) || ndata != std::floor(ndata) || ndata < 2)
+        throw RecordError(path, line_of["NDATA"], "NDATA must be a whole number >= 2");
+    if (r.header["UNITS"] != "cm/s^2")
+        throw RecordError(path, line_of["UNITS"], "UNITS is '" + r.header["UNITS"] + "', expected cm/s^2");
+    if (!parse_number(r.header["PGA_CM/S^2"], pga))
+        throw RecordError(path, line_of["PGA_CM/S^2"], "PGA_CM/S^2 is not a number");
+    if (r.accel.size() != static_cast<std::size_t>(ndata))
+        throw RecordError(path, line_of["NDATA"], "NDATA says " + r.header["NDATA"] + " samples, the file has " +
+                                                      std::to_string(r.accel.size()));
+    double peak = 0;
+    for (double a : r.accel) peak = std::max(peak, std::fabs(a));
+    // The header's PGA is signed (the sign of the peak) and comes from ESM's
+    // own data; the samples are single-precision values printed to fixed
+    // decimals (seen: relative differences up to 4e-8).  1e-6 relative plus
+    // half a unit of the printed digit separates that from a wrong header.
+    const double allowed = 0.5 * std::pow(10.0, -decimals(r.header["PGA_CM/S^2"])) + 1e-6 * std::fabs(pga);
+    if (std::fabs(peak - std::fabs(pga)) > allowed) {
+        std::ostringstream os;
+        os.precision(10);
+        os << "PGA_CM/S^2 says " << r.header["PGA_CM/S^2"] << ", max |a| of the samples is " << peak;
+        throw RecordError(path, line_of["PGA_CM/S^2"], os.str());
+    }
+    r.dt = dt;
+    for (double& a : r.accel) a *= 0.01;  // cm/s^2 -> m/s^2
+    r.name = r.header["NETWORK"] + "." + r.header["STATION_CODE"] + " " + r.header["STREAM"] + " " +
+             r.header["EVENT_DATE_YYYYMMDD"] + "_" + r.header["EVENT_TIME_HHMMSS"];
+    return r;
+}
+
+Record read_peer(const std::string& path) {
+    std::ifstream in = open(path);
+    Record r;
+    r.path = path;
+    r.format = "PEER AT2";
+    std::string line;
+    int number = 0;
+    long npts = -1;
+    while (std::getline(in, line)) {
+        ++number;
+        if (number <= 3) {
+            r.header["LINE" + std::to_string(number)] = trim(line);
+            if (number == 3) {
+                std::string upper = line;
+                std::transform(upper.begin(), upper.end(), upper.begin(), ::toupper);
+                if (upper.find("UNITS OF G") == std::string::npos)
+                    throw RecordError(path, 3, "expected 'UNITS OF G' on the third header line");
+            }
+            continue;
+        }
+        if (number == 4) {
+            std::string upper = line;
+            std::transform(upper.begin(), upper.end(), upper.begin(), ::toupper);
+            const auto n = upper.find("NPTS="), d = upper.find("DT=");
+            if (n == std::string::npos || d == std::string::npos)
+                throw RecordError(path, 4, "expected 'NPTS= n, DT= dt SEC'");
+            std::string npts_text = trim(upper.substr(n + 5, upper.find(',', n) - n - 5));
+            std::string dt_text = trim(upper.substr(d + 3));
+            dt_text = trim(dt_text.substr(0, dt_text.find_first_of(" ,S")));
+            double v;
+            if (!parse_number(npts_text, v) || v != std::floor(v) || v < 2)
+                throw RecordError(path, 4, "NPTS '" + npts_text + "' is not a whole number >= 2");
+            npts = static_cast<long>(v);
+            if (!parse_number(dt_text, r.dt) || !(r.dt > 0)) throw RecordError(path, 4, "DT '" + dt_text + "' must be > 0");
+            r.header["NPTS"] = npts_text;
+            r.header["DT"] = dt_text;
+            continue;
+        }
+        std::istringstream ss(line);
+        std::string token;
+        while (ss >> token) {
+            double v;
+            if (!parse_number(token, v)) throw RecordError(path, number, "sample '" + token + "' is not a number");
+            r.accel.push_back(v * 9.81);  // g -> m/s^2 (NGA files use g = 9.81 m/s^2)
+        }
+    }
+    if (number == 0) throw RecordError(path, 0, "empty file");
+    if (npts < 0) throw RecordError(path, number, "the header ends before the NPTS line");
+    if (static_cast<long>(r.accel.size()) != npts)
+        throw RecordError(path, 4, "NPTS says " + std::to_string(npts) + " samples, the file has " +
+                                       std::to_string(r.accel.size()));
+    r.name = r.header["LINE2"];
+    return r;
+}
+
+Record read_any(const std::string& path) {
+    std::ifstream in = open(path);
+    std::string first;
+    std::getline(in, first);
+    if (first.find(':') != std::string::npos) return read_esm(path);
+    return read_peer(path);
+}
+
+}  // namespace rocking::records
