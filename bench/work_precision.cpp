@@ -35,7 +35,15 @@ struct Timed {
 };
 
 Timed timed(const Model& m, const GroundInput& in, const SimulationOptions& o) {
-    Timed t{simulate(m, in, o), 0};
+    Timed t{};
+    try {
+        t.result = simulate(m, in, o);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s at rtol %g failed: %s\n", solver_name(o.solver.kind).c_str(), o.solver.rtol, e.what());
+        t.seconds = NAN;
+        t.result.theta_at_tfin = t.result.max_abs_theta_input = NAN;
+        return t;
+    }
     int repeats = 0;
     const auto start = std::chrono::steady_clock::now();
     double elapsed = 0;

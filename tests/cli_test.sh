@@ -28,4 +28,17 @@ status "unknown option exits 2"      2 "$rocking" q --case 2 --x 1 --frobnicate 
 status "no command exits 2"          2 "$rocking"
 status "impossible train exits 1"    1 "$rocking" q --train 1:1,-5:1 --x 1
 status "good call exits 0"           0 "$rocking" q --case 4 --x 0.3 --json
+# simulate: case 2 at Rd = 0.9 keeps theta(t_fin)/alpha = 0.845691936518 (x = 0.5; the jump sum).
+check "simulate below collapse"      "theta(t_fin)/alpha = 0.8456919365" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2
+check "simulate criterion named"     "no collapse under final-rotation" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2
+check "simulate json"                '"collapse_overturning": true' "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --json
+check "simulate at collapse"         "COLLAPSE under final-rotation" "$rocking" simulate --case 2 --x 0.5 --rd 1.0001 --alpha 0.15 --p 2
+check "full model needs an ODE solver" "exact solver handles the linearised equation only" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --model full --solver exact
+check "simulate geometry required"   "give exactly one of --p, --half-height and --height" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15
+check "simulate bad solver"          "unknown solver 'rk4'" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver rk4
+status "simulate bad criterion exits 2" 2 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --criterion soon
+out=$(mktemp)
+"$rocking" simulate --one-sine --ap 0.45 --wp 6 --alpha 0.15 --p 2 --output "$out" --dt 0.1 >/dev/null
+check "simulate writes theta(t)"     "t,theta_over_alpha,omega_over_alpha_p" cat "$out"
+rm -f "$out"
 exit $fail

@@ -68,6 +68,7 @@ public:
     double peak() const override { return peak_; }
     double dt() const { return dt_; }
     std::size_t size() const { return samples_.size(); }
+    const std::vector<double>& samples() const { return samples_; }
 
 private:
     std::vector<double> samples_;

@@ -95,6 +95,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     SimulationResult result;
     result.t_fin = t_fin;
     auto stepper = make_stepper(model, input, options.solver);
+    stepper->set_batching(options.record_dt <= 0.0, options.overturn_angle);
 
     double t = 0.0, theta = options.initial_theta, omega = options.initial_omega;
     int sigma = theta > 0 || (theta == 0 && omega > 0) ? 1 : -1;
@@ -164,6 +165,13 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
         double ta = t, tha = theta, oma = omega;
         bool event = false;
         while (!event && stepper->advance()) {
+            // The step may have started after the last one seen (a batched run);
+            // at the segment's start the state is known exactly (an interpolant
+            // may put theta' = 0 a rounding error off and fake an extremum).
+            if (stepper->t_begin() != ta) {
+                ta = stepper->t_begin();
+                stepper->state_at(ta, tha, oma);
+            }
             const double tb = stepper->t_end();
             double thb, omb;
             stepper->state_at(tb, thb, omb);

@@ -32,6 +32,11 @@ public:
     virtual void reset(double t, double theta, double omega, int sigma, double t_stop) = 0;
     // One step; false when the segment is already at t_stop.
     virtual bool advance() = 0;
+    // A stepper may cover several input pieces in one step when nothing
+    // happens in them: no zero, extremum, alpha crossing or fall of theta
+    // at their ends (the driver then sees only the last piece).  Off while a
+    // record of theta(t) is kept.
+    virtual void set_batching(bool /*on*/, double /*overturn_angle*/) {}
     double t_begin() const { return t0_; }
     double t_end() const { return t1_; }
     // State at t in [t_begin, t_end] of the last step.
