@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -20,11 +21,16 @@ public:
     void write(const harness::Table& table, const std::string& file);
     const std::string& dir() const { return dir_; }
     const std::vector<std::string>& written() const { return written_; }
+    // A file the scene cannot write here (its input is absent), with the reason:
+    // the diff reports it as skipped instead of failing.
+    void skip(const std::string& file, const std::string& reason) { skipped_.emplace_back(file, reason); }
+    const std::vector<std::pair<std::string, std::string>>& skipped() const { return skipped_; }
 
 private:
     std::string dir_;
     bool reference_;
     std::vector<std::string> written_;
+    std::vector<std::pair<std::string, std::string>> skipped_;
 };
 
 struct Scene {
@@ -46,5 +52,9 @@ void run_fig07(SceneContext& ctx);
 void run_errata(SceneContext& ctx);
 void run_fig05(SceneContext& ctx);
 void run_fig06(SceneContext& ctx);
+void run_table1(SceneContext& ctx);
+void run_table2(SceneContext& ctx);
+void run_fig11(SceneContext& ctx);
+void run_fig12(SceneContext& ctx);
 
 }  // namespace rocking::scenes

@@ -41,4 +41,20 @@ out=$(mktemp)
 "$rocking" simulate --one-sine --ap 0.45 --wp 6 --alpha 0.15 --p 2 --output "$out" --dt 0.1 >/dev/null
 check "simulate writes theta(t)"     "t,theta_over_alpha,omega_over_alpha_p" cat "$out"
 rm -f "$out"
+# records: every file in the shared folder can be assessed (skipped without the folder).
+records="$(dirname "$0")/../../shared/records"
+if [ -d "$records" ]; then
+    for f in "$records"/esm/* "$records"/peer/*; do
+        check "assess $(basename "$f")" "q from eq. 27" "$rocking" assess "$f" --alpha 0.15 --height 2
+    done
+    check "record info names to_11" "to_11" "$rocking" record info "$records/peer/RSN1158_KOCAELI_DZC180.AT2"
+    check "collapse json" '"found": true' "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15 --json
+else
+    echo "skipped: record commands (no shared records folder at $records)"
+fi
+bad=$(mktemp)
+printf 'NDATA: 3\nUNITS: cm/s^2\n1\n2\n' > "$bad"
+check "broken record is named" "missing header key SAMPLING_INTERVAL_S" "$rocking" record info "$bad"
+status "broken record exits 1" 1 "$rocking" record info "$bad"
+rm -f "$bad"
 exit $fail

@@ -18,6 +18,9 @@
 #include "pulse/pulse_train.hpp"
 #include "dynamics/simulate.hpp"
 #include "qfactor/closed_forms.hpp"
+#include "records/collapse.hpp"
+#include "records/measures.hpp"
+#include "records/record.hpp"
 #include "qfactor/superposition.hpp"
 
 using namespace rocking;
@@ -30,6 +33,9 @@ const char* kUsage =
     "       rocking response --case I --x X [--pulses N] [--q Q] [--steps K] [--json]\n"
     "       rocking simulate INPUT GEOMETRY [--model M] [--solver S] [--rtol R] [--criterion C]\n"
     "                        [--restitution E|housner] [--output FILE --dt DT] [--json]\n"
+    "       rocking record info FILE [--json]\n"
+    "       rocking collapse FILE --alpha A [--model M] [--solver S] [--criterion C] [--restitution E|housner] [--json]\n"
+    "       rocking assess FILE --alpha A (--height H | --half-height h) [--json]\n"
     "\n"
     "  --case I     input of Figure 3, I = 1..5 (amplitudes in PGA, durations in to)\n"
     "  --pulses N   repeat the case's pattern to N pulses (case 2, N = 6 is eq. 27)\n"
@@ -48,7 +54,14 @@ const char* kUsage =
     "  (default exact for linearised, dopri5 for full); --rtol (default 1e-6);\n"
     "  --criterion final-rotation|peak-rotation|overturning (default final-rotation, the paper's);\n"
     "  --restitution on angular velocity at impact (default 1) or housner (1 - 1.5 sin^2 alpha);\n"
-    "  --output FILE writes t,theta/alpha,theta'/(alpha p) every --dt seconds (default 0.01).\n";
+    "  --output FILE writes t,theta/alpha,theta'/(alpha p) every --dt seconds (default 0.01).\n"
+    "\n"
+    "record FILE: ESM/ITACA ASCII or PEER AT2 (by content); a one-column (add --dt DT --unit U) or\n"
+    "  two-column time,acceleration file (add --unit U), U = g, m/s2 or cm/s2.\n"
+    "collapse: the smallest p (rad/s) at which the record overturns a block of slenderness A\n"
+    "  (defaults: linearised, exact solver, Housner restitution, overturning; Table 1's search).\n"
+    "assess: the block's p (eqs. 2, 4), the record's to_5 (eq. 31), q from eq. 27, the record's\n"
+    "  q = PGA/(alpha g), and the check: the record is safe for the block when its q < eq. 27's.\n";
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -306,6 +319,123 @@ int cmd_simulate(int argc, char** argv) {
     return 0;
 }
 
+records::Record load_record(const std::string& path, const Args& a) {
+    if (a.values.count("--unit") || a.values.count("--dt")) {
+        if (!a.values.count("--unit")) throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2)");
+        const std::string unit = a.values.at("--unit");
+        const double dt = a.values.count("--dt") ? number("--dt", a.values.at("--dt")) : 0.0;
+        return records::read_plain(path, unit, dt);
+    }
+    return records::read_any(path);
+}
+
+int cmd_record(int argc, char** argv) {
+    if (argc < 4 || std::string(argv[2]) != "info") throw UsageError("usage: rocking record info FILE [--json]");
+    const std::string path = argv[3];
+    const Args a = parse(argc, argv, 4, {"--unit", "--dt"});
+    const records::Record r = load_record(path, a);
+    const records::HalfPeriods h = records::half_periods(r);
+    if (a.json) {
+        std::cout << "{\"file\": " << json_string(path) << ", \"format\": " << json_string(r.format)
+                  << ", \"name\": " << json_string(r.name) << ", \"samples\": " << r.accel.size()
+                  << ", \"dt\": " << harness::format_number(r.dt) << ", \"pga_ms2\": " << harness::format_number(h.pga)
+                  << ", \"pgv_ms\": " << harness::format_number(h.pgv) << ", \"amax_ms\": " << harness::format_number(h.amax)
+                  << ", \"to\": [";
+        for (int k = 0; k < 11; ++k) std::cout << (k ? ", " : "") << harness::format_number(h.to[k]);
+        std::cout << "]}\n";
+    } else {
+        std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,
+                    r.duration());
+        std::printf("  PGA = %.4f m/s^2 (%.4f g), PGV = %.4f m/s, Amax = %.4f m/s\n", h.pga, h.pga / 9.81, h.pgv, h.amax);
+        static const char* what[] = {"largest-area pulse", "pulse holding the PGA", "sine of same PGA and area (eq. 29)",
+                                     "constant of same PGA and area (eq. 30)", "pi PGV / PGA (eq. 31)",
+                                     "Fourier peak, acceleration", "Fourier peak, velocity", "CWT max amplitude, acceleration",
+                                     "CWT mean amplitude, velocity", "CWT energy, acceleration", "CWT energy, velocity"};
+        for (int k = 0; k < 11; ++k) std::printf("  to_%-2d = %.4f s  %s\n", k + 1, h.to[k], what[k]);
+    }
+    return 0;
+}
+
+int cmd_collapse(int argc, char** argv) {
+    using namespace rocking::dynamics;
+    if (argc < 3) throw UsageError("usage: rocking collapse FILE --alpha A [options]");
+    const std::string path = argv[2];
+    const Args a = parse(argc, argv, 3, {"--alpha", "--model", "--solver", "--criterion", "--restitution", "--rtol", "--unit", "--dt"});
+    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
+    const double alpha = number("--alpha", a.values.at("--alpha"));
+    if (!(alpha > 0 && alpha < 0.7)) throw UsageError("--alpha: must be in (0, 0.7)");
+    records::CollapseOptions o;
+    if (a.values.count("--model")) {
+        const std::string m = a.values.at("--model");
+        if (m == "full") o.equation = Equation::full, o.solver.kind = SolverKind::dopri5;
+        else if (m != "linearised") throw UsageError("--model: linearised or full");
+    }
+    try {
+        if (a.values.count("--solver")) o.solver.kind = parse_solver(a.values.at("--solver"));
+        if (a.values.count("--criterion")) o.criterion = parse_criterion(a.values.at("--criterion"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    if (a.values.count("--rtol")) o.solver.rtol = o.solver.atol_alpha = number("--rtol", a.values.at("--rtol"));
+    if (a.values.count("--restitution") && a.values.at("--restitution") != "housner") {
+        o.housner_restitution = false;
+        o.restitution = number("--restitution", a.values.at("--restitution"));
+        if (!(o.restitution >= 0 && o.restitution <= 1)) throw UsageError("--restitution: must be in [0, 1]");
+    }
+    if (o.equation == Equation::full && o.solver.kind == SolverKind::exact)
+        throw UsageError("the exact solver handles the linearised equation only");
+    const records::Record r = load_record(path, a);
+    const SampledInput input(r.in_g(9.81), r.dt, r.name);
+    const records::CollapseResult c = records::smallest_collapse_p(input, alpha, o);
+    if (a.json) {
+        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
+                  << ", \"found\": " << (c.found ? "true" : "false") << ", \"p\": " << harness::format_number(c.p)
+                  << ", \"p_safe\": " << harness::format_number(c.p_safe) << ", \"simulations\": " << c.simulations
+                  << ", \"search\": " << json_string(o.describe()) << "}\n";
+    } else {
+        if (c.found) std::printf("p = %.6f rad/s: the smallest pulsation at which %s overturns the block (alpha = %g); "
+                                 "safe at %.6f\n", c.p, r.name.c_str(), alpha, c.p_safe);
+        else std::printf("no collapse for p up to %g rad/s\n", o.p_max);
+        std::printf("  %s; %d simulations\n", o.describe().c_str(), c.simulations);
+    }
+    return 0;
+}
+
+int cmd_assess(int argc, char** argv) {
+    using namespace rocking::dynamics;
+    if (argc < 3) throw UsageError("usage: rocking assess FILE --alpha A (--height H | --half-height h)");
+    const std::string path = argv[2];
+    const Args a = parse(argc, argv, 3, {"--alpha", "--height", "--half-height", "--unit", "--dt"});
+    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
+    const double alpha = number("--alpha", a.values.at("--alpha"));
+    if (a.values.count("--height") + a.values.count("--half-height") != 1)
+        throw UsageError("give exactly one of --height and --half-height");
+    Block b{};
+    try {
+        b = a.values.count("--height") ? Block::from_full_height(number("--height", a.values.at("--height")), alpha)
+                                       : Block::from_half_height(number("--half-height", a.values.at("--half-height")), alpha);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    const records::Record r = load_record(path, a);
+    const records::HalfPeriods h = records::half_periods(r);
+    const double to5 = h.to[4], x = b.p * to5, q27 = q2_n6(x), q_record = h.pga / (alpha * 9.81);
+    const bool safe = q_record < q27;
+    if (a.json) {
+        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
+                  << ", \"p\": " << harness::format_number(b.p) << ", \"to5\": " << harness::format_number(to5)
+                  << ", \"x\": " << harness::format_number(x) << ", \"q_eq27\": " << harness::format_number(q27)
+                  << ", \"q_record\": " << harness::format_number(q_record) << ", \"passes\": " << (safe ? "true" : "false")
+                  << "}\n";
+    } else {
+        std::printf("%s: %s\n", r.name.c_str(), safe ? "PASSES (the record's q is below eq. 27's)" : "FAILS");
+        std::printf("  block: alpha = %g, p = %.4f rad/s (eqs. 2, 4, half-height %.3f m)\n", alpha, b.p, b.R * std::cos(alpha));
+        std::printf("  record: PGA = %.4f g, to_5 = pi PGV/PGA = %.4f s; x = p to_5 = %.4f\n", h.pga / 9.81, to5, x);
+        std::printf("  q from eq. 27 = %.4f; the record's q = PGA/(alpha g) = %.4f\n", q27, q_record);
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -314,6 +444,9 @@ int main(int argc, char** argv) {
         if (command == "q") return cmd_q(argc, argv);
         if (command == "response") return cmd_response(argc, argv);
         if (command == "simulate") return cmd_simulate(argc, argv);
+        if (command == "record") return cmd_record(argc, argv);
+        if (command == "collapse") return cmd_collapse(argc, argv);
+        if (command == "assess") return cmd_assess(argc, argv);
         if (command == "help" || command == "--help" || command == "-h") {
             std::cout << kUsage;
             return 0;

@@ -169,6 +169,57 @@ Record read_peer(const std::string& path) {
     return r;
 }
 
+Record read_plain(const std::string& path, const std::string& unit, double dt) {
+    double scale;
+    if (unit == "g") scale = 9.81;
+    else if (unit == "m/s2" || unit == "m/s^2") scale = 1.0;
+    else if (unit == "cm/s2" || unit == "cm/s^2") scale = 0.01;
+    else throw RecordError(path, 0, "unknown unit '" + unit + "' (g, m/s2, cm/s2)");
+    if (!(dt >= 0) || !std::isfinite(dt)) throw RecordError(path, 0, "time step must be > 0");
+    std::ifstream in = open(path);
+    Record r;
+    r.path = path;
+    r.format = dt > 0 ? "one column" : "two columns";
+    r.name = path;
+    std::string line;
+    int number = 0;
+    std::vector<double> times;
+    while (std::getline(in, line)) {
+        ++number;
+        std::string t = trim(line);
+        if (t.empty() || t[0] == '#') continue;
+        std::replace(t.begin(), t.end(), ',', ' ');
+        std::istringstream ss(t);
+        std::vector<std::string> tokens;
+        std::string token;
+        while (ss >> token) tokens.push_back(token);
+        const std::size_t want = dt > 0 ? 1 : 2;
+        if (tokens.size() != want)
+            throw RecordError(path, number, std::to_string(tokens.size()) + " values, expected " + std::to_string(want));
+        double v;
+        for (const auto& tok : tokens)
+            if (!parse_number(tok, v)) throw RecordError(path, number, "'" + tok + "' is not a number");
+        if (dt == 0) {
+            double time;
+            parse_number(tokens[0], time);
+            if (!times.empty() && !(time > times.back()))
+                throw RecordError(path, number, "time does not increase");
+            if (times.size() >= 2) {
+                const double step = times[1] - times[0];
+                if (std::fabs((time - times.back()) - step) > 1e-6 * step)
+                    throw RecordError(path, number, "uneven time step (the engine needs evenly spaced samples)");
+            }
+            times.push_back(time);
+        }
+        parse_number(tokens.back(), v);
+        r.accel.push_back(v * scale);
+    }
+    if (r.accel.empty()) throw RecordError(path, 0, "empty file");
+    if (r.accel.size() < 2) throw RecordError(path, number, "a record needs at least 2 samples");
+    r.dt = dt > 0 ? dt : times[1] - times[0];
+    return r;
+}
+
 Record read_any(const std::string& path) {
     std::ifstream in = open(path);
     std::string first;

@@ -37,8 +37,11 @@ Record read_esm(const std::string& path);
 // PEER NGA .AT2: four header lines (the fourth 'NPTS= n, DT= dt SEC'), then
 // samples in g, several per line.  Checks NPTS against the samples read.
 Record read_peer(const std::string& path);
-// By content: ESM when the first line is 'KEY: value', PEER when line 3 names
-// units of G and line 4 holds NPTS.
+// By content: ESM when the first line is 'KEY: value', PEER otherwise.
 Record read_any(const std::string& path);
+// Plain text: two columns 'time acceleration' (evenly spaced times; dt = 0) or
+// one column with the given dt > 0, in `unit` (g, m/s2, cm/s2).  Comma,
+// space or tab separated; lines starting with '#' are comments.
+Record read_plain(const std::string& path, const std::string& unit, double dt);
 
 }  // namespace rocking::records

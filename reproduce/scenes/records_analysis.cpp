@@ -1,0 +1,106 @@
+#include "records_analysis.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "dynamics/ground_input.hpp"
+#include "records/record.hpp"
+
+#ifndef ROCKING_SOURCE_DIR
+#define ROCKING_SOURCE_DIR "."
+#endif
+
+namespace rocking::scenes {
+
+namespace fs = std::filesystem;
+
+std::string records_dir() {
+    if (const char* env = std::getenv("ROCKING_RECORDS")) return env;
+    return std::string(ROCKING_SOURCE_DIR) + "/../shared/records";
+}
+
+records::CollapseOptions table1_search() {
+    records::CollapseOptions o;  // linearised, exact, Housner restitution, overturning
+    return o;
+}
+
+namespace {
+
+RecordRow analyse(const std::string& root, const std::string& path, bool reference) {
+    RecordRow row;
+    const records::Record r = records::read_any(path);
+    row.file = fs::relative(path, root).string();
+    row.name = r.name;
+    row.h = records::half_periods(r);
+    row.pga_cms2 = 100.0 * row.h.pga;
+    row.pgv_cms = 100.0 * row.h.pgv;
+    const dynamics::SampledInput input(r.in_g(9.81), r.dt, r.name);
+    const records::CollapseOptions o = table1_search();
+    for (std::size_t k = 0; k < kTableAlphas.size(); ++k) {
+        row.collapse[k] = records::smallest_collapse_p(input, kTableAlphas[k], o);
+        if (reference && row.collapse[k].found && row.collapse[k].p_safe > 0) {
+            // A second solver at a much tighter tolerance must see the same
+            // boundary: collapse at p, none at p_safe.  rtol 1e-13: at 1e-11
+            // rk8pd itself flips borderline outcomes (rocking on a record is
+            // that sensitive near the boundary; measured, see PROVENANCE.md).
+            dynamics::Model m;
+            m.restitution = dynamics::housner_restitution(kTableAlphas[k]);
+            dynamics::SimulationOptions s;
+            s.solver.kind = dynamics::SolverKind::gsl_rk8pd;
+            s.solver.rtol = 1e-13;
+            s.solver.atol_alpha = 1e-13;
+            m.block = dynamics::Block::from_p(row.collapse[k].p, kTableAlphas[k]);
+            const bool at_p = dynamics::simulate(m, input, s).collapse(o.criterion, kTableAlphas[k]);
+            m.block = dynamics::Block::from_p(row.collapse[k].p_safe, kTableAlphas[k]);
+            const bool below = dynamics::simulate(m, input, s).collapse(o.criterion, kTableAlphas[k]);
+            row.confirmed[k] = at_p && !below;
+        } else {
+            row.confirmed[k] = true;
+        }
+    }
+    return row;
+}
+
+}  // namespace
+
+const std::vector<RecordRow>& shared_records(bool reference) {
+    static std::map<bool, std::vector<RecordRow>> cache;
+    static std::mutex mutex;
+    std::lock_guard<std::mutex> lock(mutex);
+    auto found = cache.find(reference);
+    if (found != cache.end()) return found->second;
+    std::vector<RecordRow>& rows = cache[reference];
+    const std::string root = records_dir();
+    std::vector<std::string> files;
+    for (const char* sub : {"esm", "peer"}) {
+        const fs::path dir = fs::path(root) / sub;
+        if (!fs::is_directory(dir)) continue;
+        for (const auto& e : fs::directory_iterator(dir))
+            if (e.is_regular_file()) files.push_back(e.path().string());
+    }
+    std::sort(files.begin(), files.end());
+    rows.resize(files.size());
+    std::vector<std::string> errors(files.size());
+    const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), files.size()));
+    std::vector<std::thread> pool;
+    for (unsigned w = 0; w < workers; ++w)
+        pool.emplace_back([&, w] {
+            for (std::size_t i = w; i < files.size(); i += workers) {
+                try {
+                    rows[i] = analyse(root, files[i], reference);
+                } catch (const std::exception& e) {
+                    errors[i] = e.what();
+                }
+            }
+        });
+    for (auto& t : pool) t.join();
+    for (const auto& e : errors)
+        if (!e.empty()) throw std::runtime_error("record analysis: " + e);
+    return rows;
+}
+
+}  // namespace rocking::scenes

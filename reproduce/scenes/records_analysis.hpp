@@ -1,0 +1,34 @@
+// The real records of ../shared/records/ (or $ROCKING_RECORDS) analysed once
+// per process: the eleven half-periods and the collapse search for the five
+// slendernesses of Table 1, in parallel across records.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "records/collapse.hpp"
+#include "records/measures.hpp"
+
+namespace rocking::scenes {
+
+inline constexpr std::array<double, 5> kTableAlphas = {0.05, 0.1, 0.15, 0.2, 0.25};
+inline constexpr double kTableG = 981.0;  // cm/s^2, as the paper's Table 1
+
+struct RecordRow {
+    std::string file;  // path relative to the records folder
+    std::string name;
+    double pga_cms2 = 0, pgv_cms = 0;
+    records::HalfPeriods h;
+    std::array<records::CollapseResult, 5> collapse;
+    std::array<bool, 5> confirmed{};  // reference mode: a second solver confirms the bracket
+};
+
+// The records folder: $ROCKING_RECORDS, else <source>/../shared/records.
+std::string records_dir();
+// Every readable record in it, analysed (cached); empty when the folder is absent.
+const std::vector<RecordRow>& shared_records(bool reference);
+// The options of Table 1's collapse search (stated in every output).
+records::CollapseOptions table1_search();
+
+}  // namespace rocking::scenes

@@ -1,0 +1,57 @@
+#include "records/collapse.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace rocking::records {
+
+using namespace dynamics;
+
+std::string CollapseOptions::describe() const {
+    std::ostringstream os;
+    os << (equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1") << ", restitution "
+       << (housner_restitution ? std::string("Housner 1 - 1.5 sin^2 alpha") : std::to_string(restitution))
+       << ", criterion " << criterion_name(criterion) << ", solver " << solver_name(solver.kind)
+       << (solver.kind == SolverKind::exact ? std::string("") : " rtol " + std::to_string(solver.rtol))
+       << ", p scanned from " << p_min << " by x" << growth << ", refined to " << rel_tol;
+    return os.str();
+}
+
+CollapseResult smallest_collapse_p(const GroundInput& input, double alpha, const CollapseOptions& options) {
+    CollapseResult out;
+    Model model;
+    model.equation = options.equation;
+    model.restitution = options.housner_restitution ? housner_restitution(alpha) : options.restitution;
+    SimulationOptions sim;
+    sim.solver = options.solver;
+    sim.free_rocking = options.criterion == Criterion::overturning;
+    auto collapses = [&](double p) {
+        model.block = Block::from_p(p, alpha);
+        ++out.simulations;
+        return simulate(model, input, sim).collapse(options.criterion, alpha);
+    };
+    double lo = 0.0, p = options.p_min;
+    while (p <= options.p_max) {
+        if (collapses(p)) break;
+        lo = p;
+        p *= options.growth;
+    }
+    if (p > options.p_max) return out;
+    if (lo == 0.0) {  // collapses already at p_min
+        out.found = true;
+        out.p = p;
+        return out;
+    }
+    double hi = p;
+    while ((hi - lo) / hi > options.rel_tol) {
+        const double mid = 0.5 * (lo + hi);
+        if (collapses(mid)) hi = mid;
+        else lo = mid;
+    }
+    out.found = true;
+    out.p = hi;
+    out.p_safe = lo;
+    return out;
+}
+
+}  // namespace rocking::records

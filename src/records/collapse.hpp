@@ -1,0 +1,35 @@
+// The collapse search of Table 1: for a record and a slenderness alpha, the
+// smallest pulsation p at which the record overturns the block.  Collapse is
+// not monotone in p, so p is raised geometrically from p_min until the first
+// collapse, then the boundary inside that last step is refined by bisection.
+#pragma once
+
+#include <string>
+
+#include "dynamics/ground_input.hpp"
+#include "dynamics/simulate.hpp"
+
+namespace rocking::records {
+
+struct CollapseOptions {
+    dynamics::Equation equation = dynamics::Equation::linearised;
+    bool housner_restitution = true;  // e = 1 - 1.5 sin^2 alpha; false: restitution below
+    double restitution = 1.0;
+    dynamics::Criterion criterion = dynamics::Criterion::overturning;
+    dynamics::SolverOptions solver{};  // exact by default
+    double p_min = 0.3, p_max = 30.0;  // rad/s
+    double growth = 1.01;              // scan step: p *= growth
+    double rel_tol = 1e-4;             // bisection until (p_hi - p_lo) / p_hi < rel_tol
+    std::string describe() const;
+};
+
+struct CollapseResult {
+    bool found = false;
+    double p = 0;            // smallest collapsing p found (the upper end of the final bracket)
+    double p_safe = 0;       // the largest p below it known not to collapse
+    int simulations = 0;
+};
+
+CollapseResult smallest_collapse_p(const dynamics::GroundInput& input, double alpha, const CollapseOptions& options);
+
+}  // namespace rocking::records

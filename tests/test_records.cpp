@@ -1,0 +1,167 @@
+// Record readers (real files and broken ones), ground-motion measures on
+// signals whose answers are known in closed form, and the collapse search.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include "dynamics/ground_input.hpp"
+#include "records/collapse.hpp"
+#include "records/measures.hpp"
+#include "records/record.hpp"
+
+using namespace rocking;
+using namespace rocking::records;
+namespace fs = std::filesystem;
+
+namespace {
+const std::string kRecords = std::string(ROCKING_SOURCE_DIR) + "/../shared/records";
+
+std::string write_file(const std::string& name, const std::string& text) {
+    const fs::path dir = fs::temp_directory_path() / "rocking-record-tests";
+    fs::create_directories(dir);
+    const std::string path = (dir / name).string();
+    std::ofstream(path) << text;
+    return path;
+}
+
+std::string error_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const RecordError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string esm(const std::string& ndata, const std::string& pga, const std::string& units, const std::string& samples,
+                bool with_dt = true) {
+    return std::string("EVENT_ID: TEST\nSTATION_CODE: X\n") + (with_dt ? "SAMPLING_INTERVAL_S: 0.010000\n" : "") +
+           "NDATA: " + ndata + "\nUNITS: " + units + "\nPGA_CM/S^2: " + pga + "\n" + samples;
+}
+}  // namespace
+
+TEST(Readers, EveryRealRecordReadsAndChecksItself) {
+    if (!fs::is_directory(kRecords)) GTEST_SKIP() << "shared records folder absent: " << kRecords;
+    int files = 0;
+    for (const char* sub : {"esm", "peer"})
+        for (const auto& e : fs::directory_iterator(fs::path(kRecords) / sub)) {
+            const Record r = read_any(e.path().string());
+            EXPECT_GE(r.accel.size(), 5000u) << e.path();
+            EXPECT_GT(r.dt, 0.0);
+            ++files;
+        }
+    EXPECT_EQ(files, 16);
+    const Record norcia = read_esm(kRecords + "/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC");
+    EXPECT_EQ(norcia.accel.size(), 8000u);
+    EXPECT_NEAR(norcia.pga() * 100, 352.571, 5e-4);
+    const Record duzce = read_peer(kRecords + "/peer/RSN1158_KOCAELI_DZC180.AT2");
+    EXPECT_EQ(duzce.accel.size(), 5437u);
+    EXPECT_NEAR(duzce.pga() / 9.81, 0.312, 5e-4);
+}
+
+TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
+    const std::string ok = "1.0\n-2.0\n0.5\n";
+    EXPECT_EQ(error_of([&] { read_esm(write_file("ok.asc", esm("3", "2.000000", "cm/s^2", ok))); }), "");
+    struct Case { std::string name, text, want; };
+    const std::vector<Case> cases = {
+        {"no_dt.asc", esm("3", "2.0", "cm/s^2", ok, false), ":0: missing header key SAMPLING_INTERVAL_S"},
+        {"bad_sample.asc", esm("3", "2.0", "cm/s^2", "1.0\nabc\n0.5\n"), ":8: sample 'abc' is not a number"},
+        {"ndata.asc", esm("4", "2.0", "cm/s^2", ok), ":4: NDATA says 4 samples, the file has 3"},
+        {"pga.asc", esm("3", "2.5", "cm/s^2", ok), ":6: PGA_CM/S^2 says 2.5"},
+        {"unit.asc", esm("3", "2.0", "g", ok), ":5: UNITS is 'g', expected cm/s^2"},
+        {"empty.asc", "", ":0: empty file"},
+        {"peer_npts.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nDT= .01 SEC\n0.1 0.2\n", ":4: expected 'NPTS= n, DT= dt SEC'"},
+        {"peer_count.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 3, DT= .01 SEC\n0.1 0.2\n", ":4: NPTS says 3 samples, the file has 2"},
+        {"peer_sample.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 x\n", ":5: sample 'x' is not a number"},
+    };
+    for (const Case& c : cases) {
+        const std::string path = write_file(c.name, c.text);
+        const std::string message = error_of([&] { read_any(path); });
+        EXPECT_NE(message.find(path + c.want), std::string::npos) << c.name << ": " << message;
+    }
+    const std::string uneven = write_file("uneven.txt", "0 1\n0.01 2\n0.03 1\n");
+    EXPECT_NE(error_of([&] { read_plain(uneven, "g", 0); }).find(":3: uneven time step"), std::string::npos);
+    const std::string two = write_file("two.txt", "# t a\n0 1\n0.01 2\n0.02 1\n");
+    EXPECT_NE(error_of([&] { read_plain(two, "furlongs", 0); }).find("unknown unit 'furlongs'"), std::string::npos);
+    const Record r = read_plain(two, "cm/s2", 0);
+    EXPECT_EQ(r.accel.size(), 3u);
+    EXPECT_NEAR(r.dt, 0.01, 1e-15);
+    EXPECT_NEAR(r.accel[1], 0.02, 1e-15);
+    const std::string one = write_file("one.txt", "0.1\n0.2,\n");
+    EXPECT_NE(error_of([&] { read_plain(one, "g", 0.01); }).find(""), std::string::npos);
+    const std::string bad = write_file("bad.txt", "0.1\nzz\n");
+    EXPECT_NE(error_of([&] { read_plain(bad, "g", 0.01); }).find(":2: 'zz' is not a number"), std::string::npos);
+}
+
+TEST(Measures, CosineHasEveryHalfPeriodAtItsHalfPeriod) {
+    const double f = 2.0, dt = 0.001;
+    std::vector<double> a;
+    for (int k = 0; k <= 20000; ++k) a.push_back(std::cos(2 * M_PI * f * k * dt));
+    const HalfPeriods h = half_periods(a, dt);
+    const double half = 1 / (2 * f);
+    EXPECT_NEAR(h.to[0], half, 1e-9);                       // a full interior half-cycle
+    // Areas are exact for the linear interpolation between samples, which
+    // differs from the cosine's own integral by (w dt)^2 / 12 relative.
+    const double interp = std::pow(2 * M_PI * f * dt, 2) / 12;
+    EXPECT_NEAR(h.amax * M_PI * f, 1.0, 2 * interp);        // area of a half-cycle of cos
+    EXPECT_NEAR(h.to[2] / half, 1.0, 2 * interp);           // eq. 29 is exact for a sine
+    EXPECT_NEAR(h.to[3] * M_PI * f, 1.0, 2 * interp);       // eq. 30: Amax / PGA
+    EXPECT_NEAR(h.to[4], half, 1e-4);                       // eq. 31: PGV = 1/(2 pi f)
+    EXPECT_NEAR(h.to[5], half, 1e-4);                       // Fourier peaks
+    EXPECT_NEAR(h.to[6], half, 1e-4);
+    for (int k = 7; k < 11; ++k) EXPECT_NEAR(h.to[k], half, 2e-3) << "to_" << k + 1;  // CWT, 16 voices + parabola
+}
+
+TEST(Measures, HalfSinePulseAndRickerWavelet) {
+    const double dt = 1e-4;
+    {   // one half-sine pulse of duration T: to_1 = to_2 = to_3 = T, Amax = 2T/pi.
+        const double T = 0.3;
+        std::vector<double> a(1000, 0.0);
+        for (double t = 0; t <= T + 1e-12; t += dt) a.push_back(std::sin(M_PI * t / T));
+        a.resize(a.size() + 1000, 0.0);
+        const auto pulses = pulses_of(a, dt);
+        const HalfPeriods h = half_periods(a, dt);
+        EXPECT_NEAR(h.amax, 2 * T / M_PI, 1e-7);
+        EXPECT_NEAR(h.to[0], T, 2 * dt);
+        EXPECT_NEAR(h.to[1], T, 2 * dt);
+        EXPECT_NEAR(h.to[2], T, 1e-6);
+        EXPECT_NEAR(h.to[3], 2 * T / M_PI, 1e-6);
+    }
+    {   // Ricker of peak frequency fp: central lobe sqrt(2)/(pi fp), area sqrt(2) e^{-1/2}/(pi fp),
+        // Fourier amplitude peak at fp.
+        const double fp = 3.0, t0 = 2.0;
+        std::vector<double> a;
+        for (double t = 0; t <= 2 * t0; t += dt) {
+            const double u = M_PI * fp * (t - t0);
+            a.push_back((1 - 2 * u * u) * std::exp(-u * u));
+        }
+        const HalfPeriods h = half_periods(a, dt);
+        EXPECT_NEAR(h.to[0], std::sqrt(2.0) / (M_PI * fp), 1e-6);
+        EXPECT_NEAR(h.amax / (std::sqrt(2.0) * std::exp(-0.5) / (M_PI * fp)), 1.0, 1e-6);  // O(dt^2) interpolation
+        EXPECT_NEAR(h.to[5], 1 / (2 * fp), 1e-3);
+    }
+}
+
+TEST(CollapseSearch, ConstantStepHasAClosedFormThreshold) {
+    // A step of a/g = A for D seconds, then the ground at rest.  Linearised, no
+    // impact before the end: theta/alpha = (q-1)(cosh pt - 1), q = A/alpha, and
+    // the block overturns in the free rocking iff (q-1)(e^{pD} - 1) >= 1:
+    // p* = ln(q/(q-1)) / D.
+    const double alpha = 0.1, A = 0.15, D = 0.4, dt = 1e-4;
+    std::vector<double> a;
+    for (double t = 0; t <= D + 1e-12; t += dt) a.push_back(A);
+    a.push_back(0.0);
+    a.push_back(0.0);
+    const dynamics::SampledInput input(a, dt, "step");
+    CollapseOptions o;
+    o.housner_restitution = false;
+    o.restitution = 1.0;
+    const CollapseResult c = smallest_collapse_p(input, alpha, o);
+    const double q = A / alpha, expected = std::log(q / (q - 1)) / D;
+    ASSERT_TRUE(c.found);
+    EXPECT_NEAR(c.p / expected, 1.0, 2e-3);  // the sampled step ramps down over one dt
+    EXPECT_LT(c.p_safe, c.p);
+}
