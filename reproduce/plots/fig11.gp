@@ -16,7 +16,7 @@ set key top right font ",8"
 do for [k=1:11] {
   set title sprintf("t_{o,%d}", k)
   plot dir."/fig11_points.csv" using (strcol(1) eq "paper" && $3 == k ? $8 : 1/0):5 with points pt 6 ps 0.7 lc rgb "blue" title "paper", \
-       "" using (strcol(1) eq "records" && $3 == k ? $8 : 1/0):5 with points pt 8 ps 0.7 lc rgb "dark-orange" title "records", \
+       dir."/fig11_records.csv" using ($3 == k ? $8 : 1/0):5 with points pt 8 ps 0.7 lc rgb "dark-orange" title "records", \
        [0.05:3] q27(x) with lines lw 2 lc rgb "red" notitle
 }
 unset multiplot

@@ -19,5 +19,5 @@ set arrow from 0,2 to 2,2 nohead lw 2 dt 2 lc rgb "black"
 set arrow from x2,1 to x2,40 nohead dt 3 lc rgb "gray40"
 set label sprintf("eq. 27 = 2 at x = %.3f", x2) at x2+0.02,30
 plot dir."/fig12_points.csv" using (strcol(1) eq "paper" ? $5 : 1/0):4 with points pt 6 ps 1 lc rgb "blue" title "paper (Tables 1-2)", \
-     "" using (strcol(1) eq "records" ? $5 : 1/0):4 with points pt 8 ps 1 lc rgb "dark-orange" title "available records", \
+     dir."/fig12_records.csv" using 5:4 with points pt 8 ps 1 lc rgb "dark-orange" title "available records", \
      [0.05:2] q27(x) with lines lw 2 lc rgb "red" title "eq. 27"

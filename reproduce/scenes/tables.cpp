@@ -172,45 +172,60 @@ void run_table2(SceneContext& ctx) {
 }
 
 void run_fig11(SceneContext& ctx) {
-    harness::Table pts({"source", "id", "k", "alpha", "q", "p", "to", "x", "q_eq27", "conservative"});
-    pts.note("scene", "fig11: points (p to_k, q) against eq. 27; conservative when eq. 27 at x = p to_k does not exceed q");
-    pts.note("inputs", "source paper: Tables 1-2 transcribed; source records: the real records of the records folder (p from table1, to_k from table2)");
+    const std::vector<std::string> columns = {"source", "id", "k", "alpha", "q", "p", "to", "x", "q_eq27", "conservative"};
+    harness::Table paper(columns), recs(columns);
+    paper.note("scene", "fig11: points (p to_k, q) of the paper's Tables 1-2 against eq. 27; conservative when eq. 27 at x = p to_k does not exceed q");
+    recs.note("scene", "fig11: the same for the real records of the records folder (NOT the paper's): p from table1, to_k from table2");
     std::map<std::pair<std::string, int>, std::pair<int, int>> counts;  // (source, k) -> (points, non-conservative)
-    auto add = [&](const std::string& source, const std::string& id, int k, double alpha, double q, double p, double to) {
+    auto add = [&](harness::Table& t, const std::string& source, const std::string& id, int k, double alpha, double q,
+                   double p, double to) {
         const double x = p * to, qe = q2_n6(x);
         const bool ok = qe <= q;
-        pts.row().add(source).add(id).add(k).add(alpha_label(alpha)).add(q).add(p).add(to).add(x).add(qe).add(ok);
+        t.row().add(source).add(id).add(k).add(alpha_label(alpha)).add(q).add(p).add(to).add(x).add(qe).add(ok);
         auto& n = counts[{source, k}];
         ++n.first;
         if (!ok) ++n.second;
     };
     for (const PaperRow& r : paper_rows())
         for (int k = 0; k < 11; ++k)
-            for (std::size_t a = 0; a < 5; ++a) add("paper", std::to_string(r.id), k + 1, kTableAlphas[a], r.q[a], r.p[a], r.to[k]);
+            for (std::size_t a = 0; a < 5; ++a)
+                add(paper, "paper", std::to_string(r.id), k + 1, kTableAlphas[a], r.q[a], r.p[a], r.to[k]);
+    ctx.write(paper, "fig11_points.csv");
     const auto& rows = shared_records(false);
     for (const RecordRow& r : rows)
         for (int k = 0; k < 11; ++k)
             for (std::size_t a = 0; a < 5; ++a)
                 if (r.collapse[a].found)
-                    add("records", r.file, k + 1, kTableAlphas[a], r.pga_cms2 / (kTableAlphas[a] * kTableG),
+                    add(recs, "records", r.file, k + 1, kTableAlphas[a], r.pga_cms2 / (kTableAlphas[a] * kTableG),
                         r.collapse[a].p, r.h.to[k]);
-    ctx.write(pts, "fig11_points.csv");
-    harness::Table c({"source", "k", "points", "non_conservative"});
-    c.note("scene", "fig11: non-conservative points per definition of to");
-    if (rows.empty()) c.note("records", std::string("skipped: ") + kNoRecords);
-    for (const auto& [key, n] : counts) c.row().add(key.first).add(key.second).add(n.first).add(n.second);
-    ctx.write(c, "fig11_counts.csv");
+    auto write_counts = [&](const std::string& source, const std::string& file) {
+        harness::Table c({"source", "k", "points", "non_conservative"});
+        c.note("scene", "fig11: non-conservative points per definition of to (" + source + ")");
+        for (const auto& [key, n] : counts)
+            if (key.first == source) c.row().add(key.first).add(key.second).add(n.first).add(n.second);
+        ctx.write(c, file);
+    };
+    write_counts("paper", "fig11_counts.csv");
+    if (rows.empty()) {
+        ctx.skip("fig11_records.csv", kNoRecords);
+        ctx.skip("fig11_counts_records.csv", kNoRecords);
+    } else {
+        ctx.write(recs, "fig11_records.csv");
+        write_counts("records", "fig11_counts_records.csv");
+    }
 }
 
 void run_fig12(SceneContext& ctx) {
     const double x2 = eq27_crossing_two();
-    harness::Table pts({"source", "id", "alpha", "q", "x", "q_eq27", "conservative", "code_q2_unsafe"});
-    pts.note("scene", "fig12: to_5 only; the code's q = 2 is unsafe for a point whose collapse q is below 2");
-    pts.note("model", "eq. 27 with x = p to_5; eq. 27 = 2 at x = " + harness::format_number(x2));
+    const std::vector<std::string> columns = {"source", "id", "alpha", "q", "x", "q_eq27", "conservative", "code_q2_unsafe"};
+    harness::Table paper(columns), recs(columns);
+    paper.note("scene", "fig12: to_5 only; the code's q = 2 is unsafe for a point whose collapse q is below 2");
+    paper.note("model", "eq. 27 with x = p to_5; eq. 27 = 2 at x = " + harness::format_number(x2));
+    recs.note("scene", "fig12: the same for the real records of the records folder (NOT the paper's)");
     int paper_points = 0, paper_nc = 0, beyond = 0, beyond_unsafe = 0;
-    auto add = [&](const std::string& source, const std::string& id, double alpha, double q, double x) {
+    auto add = [&](harness::Table& t, const std::string& source, const std::string& id, double alpha, double q, double x) {
         const double qe = q2_n6(x);
-        pts.row().add(source).add(id).add(alpha_label(alpha)).add(q).add(x).add(qe).add(qe <= q).add(q < 2.0);
+        t.row().add(source).add(id).add(alpha_label(alpha)).add(q).add(x).add(qe).add(qe <= q).add(q < 2.0);
         if (source == "paper") {
             ++paper_points;
             if (qe > q) ++paper_nc;
@@ -218,12 +233,15 @@ void run_fig12(SceneContext& ctx) {
         }
     };
     for (const PaperRow& r : paper_rows())
-        for (std::size_t a = 0; a < 5; ++a) add("paper", std::to_string(r.id), kTableAlphas[a], r.q[a], r.p[a] * r.to[4]);
-    for (const RecordRow& r : shared_records(false))
+        for (std::size_t a = 0; a < 5; ++a) add(paper, "paper", std::to_string(r.id), kTableAlphas[a], r.q[a], r.p[a] * r.to[4]);
+    ctx.write(paper, "fig12_points.csv");
+    const auto& rows = shared_records(false);
+    for (const RecordRow& r : rows)
         for (std::size_t a = 0; a < 5; ++a)
             if (r.collapse[a].found)
-                add("records", r.file, kTableAlphas[a], r.pga_cms2 / (kTableAlphas[a] * kTableG), r.collapse[a].p * r.h.to[4]);
-    ctx.write(pts, "fig12_points.csv");
+                add(recs, "records", r.file, kTableAlphas[a], r.pga_cms2 / (kTableAlphas[a] * kTableG), r.collapse[a].p * r.h.to[4]);
+    if (rows.empty()) ctx.skip("fig12_records.csv", kNoRecords);
+    else ctx.write(recs, "fig12_records.csv");
     harness::Table s({"quantity", "value"});
     s.note("scene", "fig12: summary for the paper's points");
     s.row().add("x where eq. 27 = 2").add(x2);
