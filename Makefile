@@ -5,7 +5,7 @@ JOBS    ?= 2
 # Debian packages the project needs (header-only Boost: Odeint, Math, Multiprecision).
 PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath
 
-.PHONY: all deps build reproduce test bless bench clean
+.PHONY: all deps build reproduce test bless bench report clean
 
 all: build
 
@@ -43,6 +43,15 @@ bless: build
 bench: build
 	cmake --build $(BUILD) --target bench_work_precision -j $(JOBS)
 	$(BUILD)/bench_work_precision --out $(OUT)/bench
+
+# One PDF for a reviewer: every reproduced figure and table, the paper's claims, the
+# comparison, the errata and the findings (matplotlib, Debian's /usr/bin/python3).
+report: reproduce-for-report bench
+	/usr/bin/python3 tools/report.py $(OUT)
+
+# The report reads the scenes even when some differ (it says so on its first page).
+reproduce-for-report: build
+	-$(BUILD)/reproduce --out $(OUT)
 
 clean:
 	rm -rf $(BUILD) $(OUT)

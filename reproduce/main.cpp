@@ -266,5 +266,16 @@ int main(int argc, char** argv) {
         ok = ok && r.status == "match";
     }
     std::cout << (ok ? "all scenes match\n" : "some scenes differ: see above\n");
+    // The summary, for the report.
+    if (o.scenes.empty() && !o.reference) {
+        harness::Table summary({"scene", "status", "seconds", "largest_deviation"});
+        summary.note("expected", o.expected);
+        for (const auto& r : outcomes) summary.row().add(r.scene).add(r.status).add(r.seconds).add(r.detail);
+        try {
+            summary.write(o.out + "/summary.csv");
+        } catch (const std::exception& e) {
+            std::cerr << e.what() << "\n";
+        }
+    }
     return ok ? 0 : 1;
 }

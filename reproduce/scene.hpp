@@ -56,5 +56,6 @@ void run_table1(SceneContext& ctx);
 void run_table2(SceneContext& ctx);
 void run_fig11(SceneContext& ctx);
 void run_fig12(SceneContext& ctx);
+void run_fig08(SceneContext& ctx);
 
 }  // namespace rocking::scenes

@@ -50,8 +50,19 @@ double locate(F f, double a, double b) {
     return 0.5 * (r.first + r.second);
 }
 
-// First time >= t, before t_end, at which |a|/g exceeds the uplift threshold.
+double find_uplift_raw(const GroundInput& input, double t, double t_end, double thr);
+
+// First time >= t, before t_end, at which |a|/g exceeds the uplift threshold:
+// a located crossing is moved forward by ulps until |a| > thr there, so that
+// the block never leaves the ground with an acceleration pushing it back.
 double find_uplift(const GroundInput& input, double t, double t_end, double thr) {
+    double tu = find_uplift_raw(input, t, t_end, thr);
+    for (int k = 0; k < 64 && tu < t_end && !(std::fabs(input.accel(tu)) > thr); ++k)
+        tu = std::max(std::nextafter(tu, INFINITY), tu + 1e-15 * std::fmax(1.0, std::fabs(tu)) * (1 << std::min(k, 40)));
+    return tu;
+}
+
+double find_uplift_raw(const GroundInput& input, double t, double t_end, double thr) {
     while (t < t_end) {
         const InputPiece piece = input.piece_at(t);
         const double end = std::min(piece.t1, t_end);
@@ -164,6 +175,11 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
         stepper->reset(t, theta, omega, sigma, t_stop);
         double ta = t, tha = theta, oma = omega;
         bool event = false;
+        // A block lifted from rest with an acceleration just above the threshold
+        // rises from theta = 0 by less than rounding at first; a return to 0
+        // before it has risen above that noise is no impact: it stays at rest.
+        const double noise = 1e-12 * alpha;
+        bool rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
         while (!event && stepper->advance()) {
             // The step may have started after the last one seen (a batched run);
             // at the segment's start the state is known exactly (an interpolant
@@ -212,6 +228,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                     result.t_first_alpha = locate([&](double s) { return sigma * th_at(s) - alpha; }, ta, t_ext);
             }
             if (!std::isnan(t_ext) && t_ext <= t_cut) note_theta(t_ext, th_ext);
+            if (sigma * thb > noise || (!std::isnan(t_ext) && t_ext <= t_cut && sigma * th_ext > noise)) rose = true;
             sample_until(t_cut, [&](double s, double& th, double& om) { stepper->state_at(s, th, om); });
             if (t_fall <= t_cut && t_fall < INFINITY) {
                 result.overturned = true;
@@ -219,6 +236,13 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                 result.overturned_during_input = t_fall <= t_fin;
                 note_theta(t_fall, sigma * options.overturn_angle);
                 done = true;
+                event = true;
+            } else if (t_impact <= t_cut && t_impact < INFINITY && !rose) {
+                // Still within rounding of the ground: at rest to the end of the
+                // step (progress is guaranteed), then the uplift rule again.
+                t = tb;
+                theta = omega = 0.0;
+                resting = true;
                 event = true;
             } else if (t_impact <= t_cut && t_impact < INFINITY) {
                 double th_i, om_i;
