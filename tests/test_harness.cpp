@@ -11,27 +11,16 @@
 #include "harness/compare.hpp"
 #include "harness/table.hpp"
 #include "scene.hpp"
+#include "test_util.hpp"
 
 using namespace rocking::harness;
 namespace fs = std::filesystem;
 
 namespace {
 std::string write_temp(const std::string& name, const std::string& text) {
-    const fs::path dir = fs::temp_directory_path() / "rocking-harness-test";
-    fs::create_directories(dir);
-    const std::string path = (dir / name).string();
-    std::ofstream(path) << text;
-    return path;
+    return rocking::testing::write_temp("rocking-harness-test", name, text);
 }
-
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
+using rocking::testing::error_of;
 }  // namespace
 
 TEST(Harness, ToleranceFileErrorsNameFileAndLine) {

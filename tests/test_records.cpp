@@ -11,6 +11,7 @@
 #include "records/collapse.hpp"
 #include "records/measures.hpp"
 #include "records/record.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::records;
@@ -20,21 +21,9 @@ namespace {
 const std::string kRecords = std::string(ROCKING_SOURCE_DIR) + "/../shared/records";
 
 std::string write_file(const std::string& name, const std::string& text) {
-    const fs::path dir = fs::temp_directory_path() / "rocking-record-tests";
-    fs::create_directories(dir);
-    const std::string path = (dir / name).string();
-    std::ofstream(path) << text;
-    return path;
+    return rocking::testing::write_temp("rocking-record-tests", name, text);
 }
-
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const RecordError& e) {
-        return e.what();
-    }
-    return "";
-}
+using rocking::testing::error_of;
 
 std::string esm(const std::string& ndata, const std::string& pga, const std::string& units, const std::string& samples,
                 bool with_dt = true) {

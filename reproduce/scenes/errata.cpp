@@ -1,12 +1,11 @@
 // The errata check: each printed formula of Section 2-3 evaluated as printed
 // against the superposition engine, and each textual claim about the curves
 // measured.
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
-#include <cstdint>
 #include <functional>
 #include <sstream>
 
+#include "numerics/roots.hpp"
 #include "pulse/pulse_train.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "qfactor/printed.hpp"
@@ -50,12 +49,7 @@ double q_difference(const PulseTrain& train, const std::function<double(double)>
     return worst;
 }
 
-template <class F>
-double root_of(F f, double a, double b) {
-    std::uintmax_t iterations = 200;
-    const auto r = boost::math::tools::toms748_solve(f, a, b, boost::math::tools::eps_tolerance<double>(52), iterations);
-    return 0.5 * (r.first + r.second);
-}
+using numerics::root_of;
 
 std::string fixed(double v, int digits) {
     std::ostringstream os;

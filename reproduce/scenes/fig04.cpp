@@ -1,25 +1,13 @@
 // Figure 4: the five closed forms, their minimum and where it changes case.
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
-#include <cstdint>
 
+#include "numerics/roots.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "scene.hpp"
 
 namespace rocking::scenes {
 
-namespace {
-
-// The root of f on [a, b] to full double precision.
-template <class F>
-double root_of(F f, double a, double b) {
-    std::uintmax_t iterations = 200;
-    const auto bracket = boost::math::tools::toms748_solve(
-        f, a, b, boost::math::tools::eps_tolerance<double>(52), iterations);
-    return 0.5 * (bracket.first + bracket.second);
-}
-
-}  // namespace
+using numerics::root_of;
 
 void run_fig04(SceneContext& ctx) {
     harness::Table curves({"x", "q1", "q2", "q3", "q4", "q5", "q_min", "case_min"});

@@ -1,6 +1,5 @@
 // Tables 1 and 2 and Figures 11 and 12: the paper's records (transcribed
 // tables) and the real records available here, never mixed.
-#include <boost/math/tools/toms748_solve.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -11,6 +10,7 @@
 
 #include "dynamics/ground_input.hpp"
 #include "harness/table.hpp"
+#include "numerics/roots.hpp"
 #include "records/record.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "records_analysis.hpp"
@@ -62,12 +62,7 @@ std::string alpha_label(double a) {
     return b;
 }
 
-double eq27_crossing_two() {
-    std::uintmax_t it = 200;
-    const auto r = boost::math::tools::toms748_solve([](double x) { return q2_n6(x) - 2.0; }, 0.1, 3.0,
-                                                     boost::math::tools::eps_tolerance<double>(52), it);
-    return 0.5 * (r.first + r.second);
-}
+double eq27_crossing_two() { return numerics::root_of([](double x) { return q2_n6(x) - 2.0; }, 0.1, 3.0); }
 
 const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 
