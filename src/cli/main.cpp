@@ -306,8 +306,11 @@ int cmd_simulate(int argc, char** argv) {
                   << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
     } else {
         std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
-        std::printf("  model:  %s\n  input:  %s\n  solver: %s (rtol %g)\n", model.describe().c_str(),
-                    input->describe().c_str(), solver_name(options.solver.kind).c_str(), options.solver.rtol);
+        const std::string tolerance = options.solver.kind == SolverKind::exact
+                                          ? std::string(" (closed form between events)")
+                                          : " (rtol " + harness::format_number(options.solver.rtol) + ")";
+        std::printf("  model:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(), input->describe().c_str(),
+                    solver_name(options.solver.kind).c_str(), tolerance.c_str());
         std::printf("  theta(t_fin)/alpha = %.10g at t_fin = %g s; max |theta|/alpha during the input = %.10g\n",
                     r.theta_at_tfin / alpha, r.t_fin, r.max_abs_theta_input / alpha);
         std::printf("  impacts: %d; overturns (free rocking included): %s\n", r.impacts, r.overturned ? "yes" : "no");

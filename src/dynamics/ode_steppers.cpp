@@ -26,11 +26,18 @@ namespace {
 // evaluated on the pieces left of t_stop, so that no stage sees the jump at
 // the end of the segment.
 struct RockingSystem {
-    const Model* model;
-    const GroundInput* input;
+    const Model* model = nullptr;
+    const GroundInput* input = nullptr;
+    long* counter = nullptr;
     int sigma = 1;
     double t_stop = INFINITY;
-    long* counter;
+
+    // A new segment on corner sigma; returns the first trial step.
+    double start(int corner, double t, double stop) {
+        sigma = corner;
+        t_stop = stop;
+        return std::min(1e-3 / model->block.p, stop - t);
+    }
 
     double accel_g(double t) const {
         if (t < t_stop) return input->accel(t);
@@ -48,17 +55,11 @@ template <class Dense>
 class DenseStepper : public Stepper {
 public:
     DenseStepper(const Model& model, const GroundInput& input, const SolverOptions& options, Dense dense)
-        : options_(options), dense_(std::move(dense)) {
-        sys_.model = &model;
-        sys_.input = &input;
-        sys_.counter = &rhs_;
-    }
+        : options_(options), dense_(std::move(dense)), sys_{&model, &input, &rhs_} {}
     void reset(double t, double theta, double omega, int sigma, double t_stop) override {
-        sys_.sigma = sigma;
-        sys_.t_stop = t_stop;
+        const double h0 = sys_.start(sigma, t, t_stop);
         t0_ = t1_ = t;
         t_stop_ = t_stop;
-        const double h0 = std::min(1e-3 / sys_.model->block.p, t_stop - t);
         dense_.initialize(State{theta, omega}, t, h0 > 0 ? h0 : 1e-12);
     }
     bool advance() override {
@@ -89,18 +90,13 @@ public:
     Rkf78Stepper(const Model& model, const GroundInput& input, const SolverOptions& options)
         : options_(options),
           controlled_(odeint::make_controlled(options.atol_alpha * model.block.alpha, options.rtol,
-                                              odeint::runge_kutta_fehlberg78<State>())) {
-        sys_.model = &model;
-        sys_.input = &input;
-        sys_.counter = &rhs_;
-    }
+                                              odeint::runge_kutta_fehlberg78<State>())),
+          sys_{&model, &input, &rhs_} {}
     void reset(double t, double theta, double omega, int sigma, double t_stop) override {
-        sys_.sigma = sigma;
-        sys_.t_stop = t_stop;
+        h_ = sys_.start(sigma, t, t_stop);
         t0_ = t1_ = t;
         t_stop_ = t_stop;
         x_ = {theta, omega};
-        h_ = std::min(1e-3 / sys_.model->block.p, t_stop - t);
     }
     bool advance() override {
         if (t1_ >= t_stop_) return false;
@@ -140,10 +136,8 @@ private:
 // GSL's rk8pd (Prince-Dormand 8(9)) with GSL's standard step control.
 class GslStepper : public Stepper {
 public:
-    GslStepper(const Model& model, const GroundInput& input, const SolverOptions& options) : options_(options) {
-        sys_.model = &model;
-        sys_.input = &input;
-        sys_.counter = &rhs_;
+    GslStepper(const Model& model, const GroundInput& input, const SolverOptions& options)
+        : options_(options), sys_{&model, &input, &rhs_} {
         gsl_sys_ = {&GslStepper::rhs, nullptr, 2, &sys_};
         step_ = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
         probe_ = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
@@ -164,13 +158,11 @@ public:
         return GSL_SUCCESS;
     }
     void reset(double t, double theta, double omega, int sigma, double t_stop) override {
-        sys_.sigma = sigma;
-        sys_.t_stop = t_stop;
+        h_ = sys_.start(sigma, t, t_stop);
         t0_ = t1_ = t;
         t_stop_ = t_stop;
         y_[0] = theta;
         y_[1] = omega;
-        h_ = std::min(1e-3 / sys_.model->block.p, t_stop - t);
         gsl_odeiv2_evolve_reset(evolve_);
         gsl_odeiv2_step_reset(step_);
     }
