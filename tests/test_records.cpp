@@ -134,6 +134,29 @@ TEST(Measures, HalfSinePulseAndRickerWavelet) {
     }
 }
 
+TEST(Measures, MavroeidisPapageorgiouPulse) {
+    // Velocity pulse v(t) = A/2 [1 + cos(2 pi fp (t - t0)/gamma)] cos(2 pi fp (t - t0) + nu) for
+    // |t - t0| <= gamma/(2 fp) (Mavroeidis & Papageorgiou 2003), differentiated exactly for a.
+    // With gamma = 3 its velocity spectrum peaks at fp within a few per cent, and the
+    // velocity-based half-periods (to_7, to_9, to_11) are 1/(2 fp) to that accuracy;
+    // PGV = A (at t0 with nu = 0).
+    const double fp = 1.0, gamma = 3.0, t0 = 5.0, A = 0.5, dt = 0.002;
+    std::vector<double> a;
+    for (double t = 0; t <= 10.0; t += dt) {
+        const double u = t - t0;
+        if (std::fabs(u) > gamma / (2 * fp)) {
+            a.push_back(0.0);
+            continue;
+        }
+        const double w = 2 * M_PI * fp, env = 0.5 * A * (1 + std::cos(w * u / gamma));
+        const double denv = -0.5 * A * (w / gamma) * std::sin(w * u / gamma);
+        a.push_back(denv * std::cos(w * u) - env * w * std::sin(w * u));
+    }
+    const HalfPeriods h = half_periods(a, dt);
+    EXPECT_NEAR(h.pgv, A, 1e-4);
+    for (int k : {6, 8, 10}) EXPECT_NEAR(h.to[k] * 2 * fp, 1.0, 0.05) << "to_" << k + 1;
+}
+
 TEST(CollapseSearch, ConstantStepHasAClosedFormThreshold) {
     // A step of a/g = A for D seconds, then the ground at rest.  Linearised, no
     // impact before the end: theta/alpha = (q-1)(cosh pt - 1), q = A/alpha, and
