@@ -336,6 +336,7 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                     ax.semilogy([p[0] for p in pr], [p[1] for p in pr], "^", c="darkorange", ms=2)
                 ax.semilogy(xs, [q27(v) for v in xs], "r")
                 ax.set_xlim(0, 3); ax.set_ylim(1, 40); ax.set_title(f"to_{k}", fontsize=7); ax.tick_params(labelsize=5)
+                ax.set_xlabel("x = p·to_k [-]", fontsize=6); ax.set_ylabel("q [-]", fontsize=6)
             axs[11].axis("off")
         extra = ["Non-conservative points (eq. 27 above the collapse q), paper: " +
                  ", ".join(f"to_{r[1]}: {r[3]}/{r[2]}" for r in n11[2])]
@@ -384,7 +385,10 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                     axs[2 * si].loglog([float(ex[0][4])], [max(float(ex[0][3]), 1e-17)], "ko", label="exact")
                 axs[2 * si].set_title(f"{scene}: error/α against CPU time [s]", fontsize=8)
                 axs[2 * si + 1].set_title(f"{scene}: error/α against RHS evaluations", fontsize=8)
+                axs[2 * si].set_xlabel("CPU time per run [s]", fontsize=7)
+                axs[2 * si + 1].set_xlabel("right-hand-side evaluations [-]", fontsize=7)
                 for ax in axs[2 * si: 2 * si + 2]:
+                    ax.set_ylabel("error / α [-]", fontsize=7)
                     ax.grid(True, which="both", alpha=0.3); ax.tick_params(labelsize=6)
             axs[0].legend(fontsize=6)
         summary = os.path.join(OUT, "bench", "summary.txt")
