@@ -47,16 +47,12 @@ RecordRow analyse(const std::string& root, const std::string& path, bool referen
             // boundary: collapse at p, none at p_safe.  rtol 1e-13: at 1e-11
             // rk8pd itself flips borderline outcomes (rocking on a record is
             // that sensitive near the boundary; measured, see PROVENANCE.md).
-            dynamics::Model m;
-            m.restitution = dynamics::housner_restitution(kTableAlphas[k]);
-            dynamics::SimulationOptions s;
-            s.solver.kind = dynamics::SolverKind::gsl_rk8pd;
-            s.solver.rtol = 1e-13;
-            s.solver.atol_alpha = 1e-13;
-            m.block = dynamics::Block::from_p(row.collapse[k].p, kTableAlphas[k]);
-            const bool at_p = dynamics::simulate(m, input, s).collapse(o.criterion, kTableAlphas[k]);
-            m.block = dynamics::Block::from_p(row.collapse[k].p_safe, kTableAlphas[k]);
-            const bool below = dynamics::simulate(m, input, s).collapse(o.criterion, kTableAlphas[k]);
+            records::CollapseOptions check = o;
+            check.solver.kind = dynamics::SolverKind::gsl_rk8pd;
+            check.solver.rtol = 1e-13;
+            check.solver.atol_alpha = 1e-13;
+            const bool at_p = records::collapses_at(input, kTableAlphas[k], row.collapse[k].p, check);
+            const bool below = records::collapses_at(input, kTableAlphas[k], row.collapse[k].p_safe, check);
             row.confirmed[k] = at_p && !below;
         } else {
             row.confirmed[k] = true;

@@ -17,18 +17,22 @@ std::string CollapseOptions::describe() const {
     return os.str();
 }
 
-CollapseResult smallest_collapse_p(const GroundInput& input, double alpha, const CollapseOptions& options) {
-    CollapseResult out;
+bool collapses_at(const GroundInput& input, double alpha, double p, const CollapseOptions& options) {
     Model model;
     model.equation = options.equation;
     model.restitution = options.housner_restitution ? housner_restitution(alpha) : options.restitution;
+    model.block = Block::from_p(p, alpha);
     SimulationOptions sim;
     sim.solver = options.solver;
     sim.free_rocking = options.criterion == Criterion::overturning;
+    return simulate(model, input, sim).collapse(options.criterion, alpha);
+}
+
+CollapseResult smallest_collapse_p(const GroundInput& input, double alpha, const CollapseOptions& options) {
+    CollapseResult out;
     auto collapses = [&](double p) {
-        model.block = Block::from_p(p, alpha);
         ++out.simulations;
-        return simulate(model, input, sim).collapse(options.criterion, alpha);
+        return collapses_at(input, alpha, p, options);
     };
     double lo = 0.0, p = options.p_min;
     while (p <= options.p_max) {

@@ -32,4 +32,8 @@ struct CollapseResult {
 
 CollapseResult smallest_collapse_p(const dynamics::GroundInput& input, double alpha, const CollapseOptions& options);
 
+// Whether the input collapses the block of slenderness alpha and pulsation p,
+// under the model, restitution, criterion and solver of `options`.
+bool collapses_at(const dynamics::GroundInput& input, double alpha, double p, const CollapseOptions& options);
+
 }  // namespace rocking::records
