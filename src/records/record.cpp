@@ -94,8 +94,7 @@ Record read_esm(const std::string& path) {
     if (r.accel.size() != static_cast<std::size_t>(ndata))
         throw RecordError(path, line_of["NDATA"], "NDATA says " + r.header["NDATA"] + " samples, the file has " +
                                                       std::to_string(r.accel.size()));
-    double peak = 0;
-    for (double a : r.accel) peak = std::max(peak, std::fabs(a));
+    const double peak = r.pga();  // still in cm/s^2 here
     // The header's PGA is signed (the sign of the peak) and comes from ESM's
     // own data; the samples are single-precision values printed to fixed
     // decimals (seen: relative differences up to 4e-8).  1e-6 relative plus
@@ -196,12 +195,14 @@ Record read_plain(const std::string& path, const std::string& unit, double dt) {
         const std::size_t want = dt > 0 ? 1 : 2;
         if (tokens.size() != want)
             throw RecordError(path, number, std::to_string(tokens.size()) + " values, expected " + std::to_string(want));
-        double v;
-        for (const auto& tok : tokens)
+        std::vector<double> values;  // each token parsed once: [time,] acceleration
+        for (const auto& tok : tokens) {
+            double v;
             if (!parse_number(tok, v)) throw RecordError(path, number, "'" + tok + "' is not a number");
+            values.push_back(v);
+        }
         if (dt == 0) {
-            double time;
-            parse_number(tokens[0], time);
+            const double time = values.front();
             if (!times.empty() && !(time > times.back()))
                 throw RecordError(path, number, "time does not increase");
             if (times.size() >= 2) {
@@ -211,8 +212,7 @@ Record read_plain(const std::string& path, const std::string& unit, double dt) {
             }
             times.push_back(time);
         }
-        parse_number(tokens.back(), v);
-        r.accel.push_back(v * scale);
+        r.accel.push_back(values.back() * scale);
     }
     if (r.accel.empty()) throw RecordError(path, 0, "empty file");
     if (r.accel.size() < 2) throw RecordError(path, number, "a record needs at least 2 samples");
