@@ -12,9 +12,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
+#include <vector>
 #include <string>
 #include <thread>
 
+#include "dynamics/exact_record.hpp"
 #include "dynamics/simulate.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "qfactor/superposition.hpp"
@@ -135,10 +138,20 @@ int main(int argc, char** argv) {
         m.block = Block::from_p(kP, kAlpha);
         m.restitution = housner_restitution(kAlpha);
         const Timed exact = timed(m, input, with(SolverKind::exact, 0));
+        SimulationOptions general = with(SolverKind::exact, 0);
+        general.solver.record_kernel = false;
+        const Timed exact_general = timed(m, input, general);
         const SimulationResult check = simulate(m, input, with(SolverKind::gsl_rk8pd, 1e-13));
+        const SimulationResult extended = simulate_record_kernel_extended(m, input, with(SolverKind::exact, 0));
         const double truth = exact.result.max_abs_theta_input / kAlpha;
-        say("record %s (%zu samples, %.1f s): exact solver %.3e s per run, %d impacts, max|theta|/alpha %.12f\n",
+        say("record %s (%zu samples, %.1f s): exact solver (record kernel) %.3e s per run, %d impacts, "
+            "max|theta|/alpha %.12f\n",
             rec.name.c_str(), rec.accel.size(), rec.duration(), exact.seconds, exact.result.impacts, truth);
+        say("record: exact solver, general path (ExactStepper + driver): %.3e s per run, |difference|/alpha = %.2e\n",
+            exact_general.seconds, std::fabs(exact_general.result.max_abs_theta_input / kAlpha - truth));
+        say("record: exact solver against itself in long double: |difference in max|theta||/alpha = %.2e "
+            "(its rounding error; target 1e-12)\n",
+            std::fabs(extended.max_abs_theta_input / kAlpha - truth));
         say("record: exact solver against GSL rk8pd at rtol 1e-13: |difference in max|theta||/alpha = %.2e\n",
             std::fabs(check.max_abs_theta_input / kAlpha - truth));
         csv << "record,exact,0,0," << exact.seconds << ",0," << exact.result.steps << "\n";
@@ -158,6 +171,34 @@ int main(int argc, char** argv) {
             }
         say("record: the exact solver is %.1f times faster than Dormand-Prince at rtol 1e-6 (target: 20)\n",
             dopri_1e6 / exact.seconds);
+        // Every record of the folder, same block: the ratio's spread.
+        std::ofstream ratios(out + "/record_ratios.csv");
+        ratios << "# exact solver (record kernel) against dopri5 at rtol 1e-6, alpha " << kAlpha << ", p " << kP
+               << " rad/s, linearised, Housner restitution; CPU seconds per run\n"
+               << "record,samples,impacts_exact,impacts_dopri5,exact_seconds,dopri5_seconds,ratio\n";
+        std::vector<double> all;
+        for (const char* sub : {"esm", "peer"}) {
+            if (!fs::is_directory(records + "/" + sub)) continue;
+            std::vector<std::string> files;
+            for (const auto& e : fs::directory_iterator(records + "/" + sub)) files.push_back(e.path().string());
+            std::sort(files.begin(), files.end());
+            for (const std::string& f : files) {
+                const records::Record r = records::read_any(f);
+                const SampledInput in(r.in_g(), r.dt, r.name);
+                const Timed e = timed(m, in, with(SolverKind::exact, 0));
+                const Timed d = timed(m, in, with(SolverKind::dopri5, 1e-6));
+                ratios << fs::path(f).filename().string() << "," << r.accel.size() << "," << e.result.impacts << ","
+                       << d.result.impacts << "," << e.seconds << "," << d.seconds << "," << d.seconds / e.seconds
+                       << "\n";
+                all.push_back(d.seconds / e.seconds);
+            }
+        }
+        if (!all.empty()) {
+            std::sort(all.begin(), all.end());
+            say("records: exact solver against dopri5 at rtol 1e-6 on %zu records: ratio min %.1f, median %.1f, max %.1f "
+                "(record_ratios.csv)\n",
+                all.size(), all.front(), all[all.size() / 2], all.back());
+        }
     }
     // The Table 1 pipeline: every record, the eleven half-periods and the
     // collapse search for five alpha, in parallel across records.

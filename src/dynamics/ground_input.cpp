@@ -1,6 +1,8 @@
 #include "dynamics/ground_input.hpp"
 
 #include <algorithm>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <cstdint>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -48,20 +50,119 @@ SampledInput::SampledInput(std::vector<double> samples_g, double dt, std::string
             throw std::invalid_argument(name_ + ": sample " + std::to_string(k + 1) + " is not finite");
         peak_ = std::max(peak_, std::fabs(samples_[k]));
     }
+    block_peak_.assign((samples_.size() + kBlock - 1) / kBlock, 0.0);
+    for (std::size_t k = 0; k < samples_.size(); ++k) {
+        block_peak_[k / kBlock] = std::max(block_peak_[k / kBlock], std::fabs(samples_[k]));
+        if (k % kBlock == 0 && k > 0)  // a block's last piece ends on the next block's first sample
+            block_peak_[k / kBlock - 1] = std::max(block_peak_[k / kBlock - 1], std::fabs(samples_[k]));
+    }
 }
 
-InputPiece SampledInput::piece_at(double t) const {
+std::size_t SampledInput::piece_index(double t) const {
     const std::size_t last = samples_.size() - 1;
-    if (t >= dt_ * last) return {dt_ * last, INFINITY};
     // t / dt can round either way at a sample time: the piece must satisfy
     // k dt <= t < (k + 1) dt exactly, or a stepper starting at its end makes no progress.
     std::size_t k = std::min(last - 1, static_cast<std::size_t>(std::max(0.0, std::floor(t / dt_))));
     while (k + 1 < last && dt_ * (k + 1) <= t) ++k;
     while (k > 0 && dt_ * k > t) --k;
+    return k;
+}
+
+InputPiece SampledInput::piece_at(double t) const {
+    const std::size_t last = samples_.size() - 1;
+    if (t >= dt_ * last) return {dt_ * last, INFINITY};
+    const std::size_t k = piece_index(t);
     InputPiece p{dt_ * k, dt_ * (k + 1)};
     p.c0 = samples_[k];
     p.c1 = (samples_[k + 1] - samples_[k]) / dt_;
     return p;
+}
+
+namespace {
+
+// The crossing of +-thr by a linear piece a(t) = c0 + c1 (t - t0), strictly inside (t, end).
+double linear_crossing(double t0, double c0, double c1, double t, double end, double thr) {
+    double best = INFINITY;
+    if (c1 != 0.0)
+        for (double target : {thr, -thr}) {
+            const double tc = t0 + (target - c0) / c1;
+            if (tc > t && tc < end) best = std::min(best, tc);
+        }
+    return best;
+}
+
+}  // namespace
+
+double GroundInput::first_above(double t, double t_end, double thr) const {
+    while (t < t_end) {
+        const InputPiece piece = piece_at(t);
+        const double end = std::min(piece.t1, t_end);
+        if (std::fabs(piece.at(t)) > thr) return t;
+        if (piece.s == 0.0) {
+            const double tc = linear_crossing(piece.t0, piece.c0, piece.c1, t, end, thr);
+            if (tc < end) return tc;
+        } else {
+            // A sinusoidal piece: bracket on a fine grid, then refine.
+            const int n = 256;
+            double prev = t;
+            for (int k = 1; k <= n; ++k) {
+                const double tk = t + (end - t) * k / n;
+                if (std::fabs(piece.at(tk)) > thr) {
+                    auto f = [&](double s) { return std::fabs(piece.at(s)) - thr; };
+                    std::uintmax_t iterations = 200;
+                    const auto r = boost::math::tools::toms748_solve(f, prev, tk, f(prev), f(tk),
+                                                                     boost::math::tools::eps_tolerance<double>(50),
+                                                                     iterations);
+                    return 0.5 * (r.first + r.second);
+                }
+                prev = tk;
+            }
+        }
+        t = end;
+    }
+    return INFINITY;
+}
+
+// The same walk on the raw samples: a piece whose two ends are below thr
+// cannot exceed it (a is linear in between), which skips a quiet stretch at
+// one comparison per sample.
+double SampledInput::first_above(double t, double t_end, double thr) const {
+    const std::size_t last = samples_.size() - 1;
+    if (!(t < t_end) || t >= dt_ * last) return INFINITY;
+    std::size_t k = piece_index(t);
+    for (;;) {
+        const double t0 = dt_ * k, end = std::min(dt_ * (k + 1), t_end);
+        const double c0 = samples_[k], c1 = (samples_[k + 1] - samples_[k]) / dt_;
+        if (std::fabs(c0 + c1 * (t - t0)) > thr) return t;
+        const double tc = linear_crossing(t0, c0, c1, t, end, thr);
+        if (tc < end) return tc;
+        if (!(end < t_end) || k + 1 >= last) return INFINITY;
+        ++k;  // |a_k| <= thr: the crossing would have been found
+        if (std::fabs(samples_[k]) < thr) {
+            for (;;) {
+                // Pieces kBlock j .. kBlock (j + 1) - 1 all below thr: skip them.
+                if (k % kBlock == 0 && k / kBlock < block_peak_.size() && block_peak_[k / kBlock] < thr &&
+                    k + kBlock < last) {
+                    k += kBlock;
+                    continue;
+                }
+                if (k + 1 < last && std::fabs(samples_[k + 1]) < thr) {
+                    ++k;
+                    continue;
+                }
+                break;
+            }
+        }
+        t = dt_ * k;
+        if (!(t < t_end)) return INFINITY;
+    }
+}
+
+double uplift_time(const GroundInput& input, double t, double t_end, double thr) {
+    double tu = input.first_above(t, t_end, thr);
+    for (int k = 0; k < 64 && tu < t_end && !(std::fabs(input.accel(tu)) > thr); ++k)
+        tu = std::max(std::nextafter(tu, INFINITY), tu + 1e-15 * std::fmax(1.0, std::fabs(tu)) * std::ldexp(1.0, std::min(k, 40)));
+    return tu;
 }
 
 OneSinePulse::OneSinePulse(double ap_g, double wp, double threshold_g) : ap_(ap_g), wp_(wp) {

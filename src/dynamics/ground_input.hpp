@@ -36,7 +36,17 @@ public:
     double accel(double t) const { return piece_at(t).at(t); }
     // Largest |a|/g: the PGA in units of g.
     virtual double peak() const = 0;
+    // The first time in [t, t_end) at which |a|/g > thr, or its crossing of
+    // +-thr located in a piece (INFINITY when there is none): where a block
+    // at rest can uplift.  Walks the pieces; a record overrides it with a
+    // scan of its raw samples.
+    virtual double first_above(double t, double t_end, double thr) const;
 };
+
+// The uplift time from rest: first_above(), moved forward by ulps until
+// |a| > thr there, so that the block never leaves the ground with an
+// acceleration pushing it back (>= t_end: no uplift before t_end).
+double uplift_time(const GroundInput& input, double t, double t_end, double thr);
 
 // A pulse train (amplitudes in PGA, durations in to) scaled to real units.
 class PulseInput : public GroundInput {
@@ -66,7 +76,10 @@ public:
     InputPiece piece_at(double t) const override;
     std::vector<double> discontinuities() const override { return {}; }
     double peak() const override { return peak_; }
+    double first_above(double t, double t_end, double thr) const override;
     double dt() const { return dt_; }
+    // The piece k with k dt <= t < (k + 1) dt, exactly (0 <= k <= size - 2).
+    std::size_t piece_index(double t) const;
     std::size_t size() const { return samples_.size(); }
     const std::vector<double>& samples() const { return samples_; }
 
@@ -75,6 +88,10 @@ private:
     double dt_;
     std::string name_;
     double peak_ = 0;
+    // Largest |a| over samples [kBlock j, kBlock (j + 1)]: first_above()
+    // skips a quiet block at one comparison.
+    static constexpr std::size_t kBlock = 32;
+    std::vector<double> block_peak_;
 };
 
 // The one-sine pulse of Zhang & Makris (2001), NOTES.md, in the paper's sign:

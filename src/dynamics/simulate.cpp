@@ -1,5 +1,7 @@
 #include "dynamics/simulate.hpp"
 
+#include "dynamics/exact_record.hpp"
+
 #include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <cstdint>
@@ -50,52 +52,11 @@ double locate(F f, double a, double b) {
     return 0.5 * (r.first + r.second);
 }
 
-double find_uplift_raw(const GroundInput& input, double t, double t_end, double thr);
-
-// First time >= t, before t_end, at which |a|/g exceeds the uplift threshold:
-// a located crossing is moved forward by ulps until |a| > thr there, so that
-// the block never leaves the ground with an acceleration pushing it back.
-double find_uplift(const GroundInput& input, double t, double t_end, double thr) {
-    double tu = find_uplift_raw(input, t, t_end, thr);
-    for (int k = 0; k < 64 && tu < t_end && !(std::fabs(input.accel(tu)) > thr); ++k)
-        tu = std::max(std::nextafter(tu, INFINITY), tu + 1e-15 * std::fmax(1.0, std::fabs(tu)) * (1 << std::min(k, 40)));
-    return tu;
-}
-
-double find_uplift_raw(const GroundInput& input, double t, double t_end, double thr) {
-    while (t < t_end) {
-        const InputPiece piece = input.piece_at(t);
-        const double end = std::min(piece.t1, t_end);
-        if (std::fabs(piece.at(t)) > thr) return t;
-        if (piece.s == 0.0) {
-            if (piece.c1 != 0.0) {
-                double best = INFINITY;
-                for (double target : {thr, -thr}) {
-                    const double tc = piece.t0 + (target - piece.c0) / piece.c1;
-                    if (tc > t && tc < end) best = std::min(best, tc);
-                }
-                if (best < end) return best;
-            }
-        } else {
-            // A sinusoidal piece: bracket on a fine grid, then refine.
-            const int n = 256;
-            double prev = t;
-            for (int k = 1; k <= n; ++k) {
-                const double tk = t + (end - t) * k / n;
-                if (std::fabs(piece.at(tk)) > thr) {
-                    return locate([&](double s) { return std::fabs(piece.at(s)) - thr; }, prev, tk);
-                }
-                prev = tk;
-            }
-        }
-        t = end;
-    }
-    return INFINITY;
-}
-
 }  // namespace
 
 SimulationResult simulate(const Model& model, const GroundInput& input, const SimulationOptions& options) {
+    if (record_kernel_applies(model, input, options))
+        return simulate_record_kernel(model, static_cast<const SampledInput&>(input), options);
     const double alpha = model.block.alpha, p = model.block.p;
     const double thr = model.uplift_threshold();
     const double t_fin = input.t_end();
@@ -147,7 +108,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
             note_theta(t_fin, theta);
         }
         if (resting) {
-            const double tu = t < t_fin ? find_uplift(input, t, t_fin, thr) : INFINITY;
+            const double tu = t < t_fin ? uplift_time(input, t, t_fin, thr) : INFINITY;
             if (tu >= t_fin) {
                 sample_until(std::max(t_fin, t_limit), [](double, double& th, double& om) { th = om = 0.0; });
                 if (!recorded) {

@@ -19,6 +19,9 @@ struct SolverOptions {
     double rtol = 1e-6;        // relative tolerance (ODE solvers)
     double atol_alpha = 1e-6;  // absolute tolerance on theta, in units of alpha (theta' in alpha p)
     double max_step_p = 0.5;   // largest step times p: keeps at most one extremum of theta per step
+    // The exact solver on a record runs the record kernel (exact_record.hpp)
+    // unless this is off: the general path, kept for cross-checks.
+    bool record_kernel = true;
 };
 
 std::string solver_name(SolverKind kind);

@@ -1,0 +1,38 @@
+// The exact solver's record kernel: the event loop of simulate() fused with
+// the exact solution of the linearised equation on a record's pieces, for the
+// case the paper's records need (linearised equation, sampled input, no
+// theta(t) kept).  Same model, same rules (uplift, rest, impact cascade,
+// criteria, free rocking) and the same closed form as the general path
+// (ExactStepper + the driver); what it saves is the general path's machinery:
+// virtual steps, interpolant calls and bracketing root-finders.  Events are
+// located by Newton's method on the closed form (its derivative is known
+// exactly), safeguarded by bisection.
+//
+// One rule is stricter than the general path's: a piece on which theta''
+// changes sign is split where it vanishes, so that theta' is monotone on each
+// part and no pair of extrema of theta (and no dip below 0 between them) can
+// hide inside one piece; the general path assumes one extremum per step.
+#pragma once
+
+#include "dynamics/ground_input.hpp"
+#include "dynamics/model.hpp"
+#include "dynamics/simulate.hpp"
+
+namespace rocking::dynamics {
+
+// True when simulate() hands the run to the record kernel: exact solver with
+// options.solver.record_kernel on, linearised equation, a SampledInput whose
+// p dt <= 0.5, and no theta(t) record asked for (record_dt <= 0).
+bool record_kernel_applies(const Model& model, const GroundInput& input, const SimulationOptions& options);
+
+// The run itself (callers normally go through simulate()).
+SimulationResult simulate_record_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options);
+
+// The same kernel in long double (64-bit significand, 11 bits more than
+// double) from the same double input: the reference that measures the
+// double kernel's rounding error, which the response's sensitivity can
+// amplify by orders of magnitude over a long record (tests, benchmark).
+SimulationResult simulate_record_kernel_extended(const Model& model, const SampledInput& input,
+                                                 const SimulationOptions& options);
+
+}  // namespace rocking::dynamics
