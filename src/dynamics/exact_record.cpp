@@ -1,5 +1,7 @@
 #include "dynamics/exact_record.hpp"
 
+#include "dynamics/run_rules.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -153,10 +155,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         if (when <= t_fin) max_theta = std::max(max_theta, std::fabs(value));
     };
     auto stop_after_input = [&]() {
-        if (!options.free_rocking || resting) return true;
-        if (model.energy(theta, omega, sigma) < model.barrier()) return t >= t_limit;
-        t_limit = std::max(t_limit, t_fin + 200.0 / p);
-        return t >= t_limit;
+        return rules::stop_after_input(model, options, resting, theta, omega, sigma, t, t_fin, t_limit);
     };
 
     while (!done) {
@@ -359,14 +358,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                     f.at(u_impact, th_i, om_i);
                     const Real t_impact = t + u_impact;
                     note_theta(t_impact, 0.0);
-                    if (result.impacts == 0) result.t_first_impact = t_impact;
-                    result.impact_times.push_back(t_impact);
-                    if (++result.impacts > options.max_impacts)
-                        throw std::runtime_error("impact cascade did not end after " +
-                                                 std::to_string(options.max_impacts) +
-                                                 " impacts (t = " + std::to_string(t_impact) + " s)");
-                    const bool micro = result.impact_times.size() >= 2 &&
-                                       t_impact - result.impact_times[result.impact_times.size() - 2] < 1e-6 / p;
+                    const bool micro = rules::record_impact(result, t_impact, options, p);
                     t = t_impact;
                     theta = 0.0;
                     omega = model.restitution * om_i;

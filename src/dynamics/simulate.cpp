@@ -1,6 +1,7 @@
 #include "dynamics/simulate.hpp"
 
 #include "dynamics/exact_record.hpp"
+#include "dynamics/run_rules.hpp"
 
 #include <algorithm>
 #include <boost/math/tools/toms748_solve.hpp>
@@ -89,15 +90,8 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     auto note_theta = [&](double when, double value) {
         if (when <= t_fin) result.max_abs_theta_input = std::max(result.max_abs_theta_input, std::fabs(value));
     };
-    // After the input the ground is at rest: a block below the energy barrier
-    // can never overturn (impacts only take energy away), so the simulation
-    // stops as soon as the record asked for is complete; a block above it is
-    // followed until it falls (bounded: 200 / p after t_fin).
     auto stop_after_input = [&]() {
-        if (!options.free_rocking || resting) return true;
-        if (model.energy(theta, omega, sigma) < model.barrier()) return t >= t_limit;
-        t_limit = std::max(t_limit, t_fin + 200.0 / p);
-        return t >= t_limit;
+        return rules::stop_after_input(model, options, resting, theta, omega, sigma, t, t_fin, t_limit);
     };
 
     while (!done) {
@@ -209,19 +203,13 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                 double th_i, om_i;
                 stepper->state_at(t_impact, th_i, om_i);
                 note_theta(t_impact, 0.0);
-                if (result.impacts == 0) result.t_first_impact = t_impact;
-                result.impact_times.push_back(t_impact);
-                if (++result.impacts > options.max_impacts)
-                    throw std::runtime_error("impact cascade did not end after " + std::to_string(options.max_impacts) +
-                                             " impacts (t = " + std::to_string(t_impact) + " s)");
                 // The end of a cascade: a rebound slower than the rest velocity
                 // (or than the solver's own accuracy, 10 atol), or a second impact
                 // within 1e-6/p of the last (a bounce too small to resolve), leaves
                 // the block at rest; the input may lift it again at once.
+                const bool micro = rules::record_impact(result, t_impact, options, p);
                 const double rest = std::max(options.rest_velocity,
                                              options.solver.kind == SolverKind::exact ? 0.0 : 10.0 * options.solver.atol_alpha);
-                const bool micro = result.impact_times.size() >= 2 &&
-                                   t_impact - result.impact_times[result.impact_times.size() - 2] < 1e-6 / p;
                 t = t_impact;
                 theta = 0.0;
                 omega = model.restitution * om_i;
