@@ -228,7 +228,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             bool whole_piece = false;
             Real u1;
             if (t < t_fin) {
-                if (!(dt * k <= t && t < dt * (k + 1))) k = input.piece_index(t);
+                // k holds t here: the quiet loop above set it (t = k dt) or left both as they were.
                 te = dt * (k + 1);
                 c1 = (a[k + 1] - a[k]) * inv_dt;
                 // The samples sit at k dt exactly; te and t are that grid
