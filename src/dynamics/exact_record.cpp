@@ -133,7 +133,6 @@ namespace {
 template <class Real>
 SimulationResult run_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options) {
     const Real alpha = model.block.alpha, p = model.block.p;
-    const Real thr = model.uplift_threshold();
     const std::vector<double>& a = input.samples();
     const Real dt = input.dt(), inv_dt = 1.0 / dt, inv_p = 1.0 / p;
     const Real t_fin = input.t_end();
@@ -144,45 +143,21 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
 
     SimulationResult result;
     result.t_fin = t_fin;
-    Real t = 0.0, theta = options.initial_theta, omega = options.initial_omega;
-    int sigma = theta > 0 || (theta == 0 && omega > 0) ? 1 : -1;
-    bool resting = theta == 0.0 && omega == 0.0, recorded = false, done = false;
-    Real t_limit = t_fin + options.free_record_time;
+    rules::RunState<Real> run(options, t_fin);
+    // The segment's working copy of the state (the quiet loop keeps it in
+    // registers); written back to run at each event and at the segment's end.
+    Real &t = run.t, &theta = run.theta, &omega = run.omega;
+    int& sigma = run.sigma;
+    bool done = false;
     std::size_t k = 0;  // the record piece holding t, while t < t_fin
     Real max_theta = 0;  // largest |theta| on [0, t_fin]
 
     auto note_theta = [&](Real when, Real value) {
         if (when <= t_fin) max_theta = std::max(max_theta, std::fabs(value));
     };
-    auto stop_after_input = [&]() {
-        return rules::stop_after_input(model, options, resting, theta, omega, sigma, t, t_fin, t_limit);
-    };
 
-    while (!done) {
-        if (!recorded && t >= t_fin) {
-            result.theta_at_tfin = theta;
-            result.omega_at_tfin = omega;
-            recorded = true;
-            note_theta(t_fin, theta);
-        }
-        if (resting) {
-            const Real tu = t < t_fin ? uplift_time(input, t, t_fin, thr) : INFINITY;
-            if (tu >= t_fin) {
-                if (!recorded) {
-                    result.theta_at_tfin = result.omega_at_tfin = 0.0;
-                    recorded = true;
-                }
-                break;
-            }
-            t = tu;
-            theta = omega = 0.0;
-            sigma = input.accel(tu) > 0 ? 1 : -1;
-            resting = false;
-            result.uplifted = true;
-        }
-        if (t >= t_fin && stop_after_input()) break;
-
-        const Real t_stop = t < t_fin ? t_fin : t_limit;
+    while (!done && rules::begin_pass(run, result, model, input, options, t_fin, note_theta, [](Real) {})) {
+        const Real t_stop = t < t_fin ? t_fin : run.t_limit;
         bool rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
         bool event = false;
         while (!event && t < t_stop) {
@@ -351,7 +326,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                     // Within rounding of the ground: at rest to the piece's end.
                     t = te;
                     theta = omega = 0.0;
-                    resting = true;
+                    run.resting = true;
                     event = true;
                 } else if (u_impact <= u_cut && u_impact < INFINITY) {
                     Real th_i, om_i;
@@ -359,15 +334,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                     const Real t_impact = t + u_impact;
                     note_theta(t_impact, 0.0);
                     const bool micro = rules::record_impact(result, t_impact, options, p);
-                    t = t_impact;
-                    theta = 0.0;
-                    omega = model.restitution * om_i;
-                    sigma = -sigma;
-                    if (micro || std::fabs(omega) < rest * alpha * p) {
-                        omega = 0.0;
-                        resting = true;
-                        ++result.rests;
-                    }
+                    rules::apply_impact(run, result, model, t_impact, om_i, micro, rest);
                     event = true;
                 } else {
                     note_theta(ub >= u1 ? te : t + ub, thb);
@@ -386,9 +353,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             }
         }
     }
-    if (options.free_rocking && !result.overturned && !resting && recorded && t >= t_fin &&
-        model.energy(theta, omega, sigma) >= model.barrier())
-        result.overturned = true;
+    rules::decide_by_energy(run, result, model, options, t_fin);
     result.max_abs_theta_input = static_cast<double>(max_theta);
     return result;
 }

@@ -1,27 +1,87 @@
 // The rules of a run that the driver (simulate.cpp) and the record kernel
-// (exact_record.cpp) share, templated on the kernel's working precision.
+// (exact_record.cpp) share, templated on the kernel's working precision:
+// the run's state between segments, what happens at the top of each pass
+// (the state at t_fin, rest and uplift, the stop after the input), the
+// impact book-keeping, and the closing decision by energy.  Each caller
+// keeps only its own way of integrating a segment.
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "dynamics/ground_input.hpp"
 #include "dynamics/model.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace rocking::dynamics::rules {
+
+// The state a run carries from one segment to the next.
+template <class Real>
+struct RunState {
+    Real t = 0, theta = 0, omega = 0;
+    int sigma = 1;          // the corner rocked on (sgn theta)
+    bool resting = false;   // on the ground, waiting for the input to lift it
+    bool recorded = false;  // theta(t_fin) taken
+    Real t_limit = 0;       // end of the free rocking followed after t_fin
+
+    RunState(const SimulationOptions& options, Real t_fin)
+        : theta(options.initial_theta),
+          omega(options.initial_omega),
+          sigma(options.initial_theta > 0 || (options.initial_theta == 0 && options.initial_omega > 0) ? 1 : -1),
+          resting(options.initial_theta == 0.0 && options.initial_omega == 0.0),
+          t_limit(t_fin + options.free_record_time) {}
+};
 
 // After the input the ground is at rest: a block below the energy barrier
 // can never overturn (impacts only take energy away), so the run stops as
 // soon as the record asked for is complete (t >= t_limit); a block above it
 // is followed until it falls (t_limit raised to t_fin + 200 / p).
 template <class Real>
-bool stop_after_input(const Model& model, const SimulationOptions& options, bool resting, Real theta, Real omega,
-                      int sigma, Real t, Real t_fin, Real& t_limit) {
-    if (!options.free_rocking || resting) return true;
-    if (model.energy(theta, omega, sigma) < model.barrier()) return t >= t_limit;
-    t_limit = std::max(t_limit, t_fin + Real(200.0) / Real(model.block.p));
-    return t >= t_limit;
+bool stop_after_input(const Model& model, const SimulationOptions& options, RunState<Real>& s, Real t_fin) {
+    if (!options.free_rocking || s.resting) return true;
+    if (model.energy(static_cast<double>(s.theta), static_cast<double>(s.omega), s.sigma) < model.barrier())
+        return s.t >= s.t_limit;
+    s.t_limit = std::max(s.t_limit, t_fin + Real(200.0) / Real(model.block.p));
+    return s.t >= s.t_limit;
+}
+
+// The top of each pass of a run's loop: takes theta(t_fin) the first time
+// t reaches t_fin (note_theta(t, theta) keeps the largest |theta|); lifts a
+// resting block when the input first exceeds the uplift threshold (rest_until
+// (t) lets the caller keep its theta(t) record of the rest), or ends the run
+// when it does not before t_fin; ends the run after the input once
+// stop_after_input says so.  False: the run is over.
+template <class Real, class NoteTheta, class RestUntil>
+bool begin_pass(RunState<Real>& s, SimulationResult& result, const Model& model, const GroundInput& input,
+                const SimulationOptions& options, Real t_fin, NoteTheta note_theta, RestUntil rest_until) {
+    if (!s.recorded && s.t >= t_fin) {
+        result.theta_at_tfin = static_cast<double>(s.theta);
+        result.omega_at_tfin = static_cast<double>(s.omega);
+        s.recorded = true;
+        note_theta(t_fin, s.theta);
+    }
+    if (s.resting) {
+        const Real tu = s.t < t_fin ? Real(uplift_time(input, static_cast<double>(s.t), static_cast<double>(t_fin),
+                                                       model.uplift_threshold()))
+                                    : Real(INFINITY);
+        if (tu >= t_fin) {
+            rest_until(std::max(t_fin, s.t_limit));
+            if (!s.recorded) {
+                result.theta_at_tfin = result.omega_at_tfin = 0.0;
+                s.recorded = true;
+            }
+            return false;
+        }
+        rest_until(tu);
+        s.t = tu;
+        s.theta = s.omega = 0.0;
+        s.sigma = input.accel(static_cast<double>(tu)) > 0 ? 1 : -1;
+        s.resting = false;
+        result.uplifted = true;
+    }
+    return !(s.t >= t_fin && stop_after_input(model, options, s, t_fin));
 }
 
 // Counts an impact at t_impact and keeps its time; throws past
@@ -30,13 +90,40 @@ bool stop_after_input(const Model& model, const SimulationOptions& options, bool
 // which ends the cascade.
 template <class Real>
 bool record_impact(SimulationResult& result, Real t_impact, const SimulationOptions& options, Real p) {
-    if (result.impacts == 0) result.t_first_impact = t_impact;
-    result.impact_times.push_back(t_impact);
+    if (result.impacts == 0) result.t_first_impact = static_cast<double>(t_impact);
+    result.impact_times.push_back(static_cast<double>(t_impact));
     if (++result.impacts > options.max_impacts)
         throw std::runtime_error("impact cascade did not end after " + std::to_string(options.max_impacts) +
-                                 " impacts (t = " + std::to_string(t_impact) + " s)");
+                                 " impacts (t = " + std::to_string(static_cast<double>(t_impact)) + " s)");
     return result.impact_times.size() >= 2 &&
            t_impact - result.impact_times[result.impact_times.size() - 2] < 1e-6 / p;
+}
+
+// The impact itself: theta = 0, the angular velocity om_i before it times
+// the restitution factor, the other corner; a rebound slower than
+// rest * alpha * p, or a micro-bounce (record_impact), leaves the block at rest.
+template <class Real>
+void apply_impact(RunState<Real>& s, SimulationResult& result, const Model& model, Real t_impact, Real om_i,
+                  bool micro, Real rest) {
+    s.t = t_impact;
+    s.theta = 0.0;
+    s.omega = Real(model.restitution) * om_i;
+    s.sigma = -s.sigma;
+    if (micro || std::fabs(s.omega) < rest * Real(model.block.alpha) * Real(model.block.p)) {
+        s.omega = 0.0;
+        s.resting = true;
+        ++result.rests;
+    }
+}
+
+// Overturning decided by energy when the run stopped in free rocking
+// without simulating the fall.
+template <class Real>
+void decide_by_energy(const RunState<Real>& s, SimulationResult& result, const Model& model,
+                      const SimulationOptions& options, Real t_fin) {
+    if (options.free_rocking && !result.overturned && !s.resting && s.recorded && s.t >= t_fin &&
+        model.energy(static_cast<double>(s.theta), static_cast<double>(s.omega), s.sigma) >= model.barrier())
+        result.overturned = true;
 }
 
 }  // namespace rocking::dynamics::rules

@@ -59,7 +59,6 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     if (record_kernel_applies(model, input, options))
         return simulate_record_kernel(model, static_cast<const SampledInput&>(input), options);
     const double alpha = model.block.alpha, p = model.block.p;
-    const double thr = model.uplift_threshold();
     const double t_fin = input.t_end();
     std::vector<double> breaks = input.discontinuities();
     breaks.push_back(t_fin);
@@ -70,18 +69,14 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     auto stepper = make_stepper(model, input, options.solver);
     stepper->set_batching(options.record_dt <= 0.0, options.overturn_angle);
 
-    double t = 0.0, theta = options.initial_theta, omega = options.initial_omega;
-    int sigma = theta > 0 || (theta == 0 && omega > 0) ? 1 : -1;
-    bool resting = theta == 0.0 && omega == 0.0, recorded = false, done = false;
+    rules::RunState<double> run(options, t_fin);
     long next_sample_index = 0;
-    // Free rocking: how long to go on after t_fin (long enough to see a fall).
-    double t_limit = t_fin + options.free_record_time;
 
     auto sample_until = [&](double until, const std::function<void(double, double&, double&)>& at) {
         if (options.record_dt <= 0) return;
         // Sample times k dt; the last one may overshoot t_limit by rounding.
         for (double ts = next_sample_index * options.record_dt;
-             ts <= until && ts <= t_limit * (1 + 1e-12); ts = ++next_sample_index * options.record_dt) {
+             ts <= until && ts <= run.t_limit * (1 + 1e-12); ts = ++next_sample_index * options.record_dt) {
             double th, om;
             at(std::min(ts, until), th, om);
             result.samples.push_back({ts, th, om});
@@ -90,43 +85,21 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     auto note_theta = [&](double when, double value) {
         if (when <= t_fin) result.max_abs_theta_input = std::max(result.max_abs_theta_input, std::fabs(value));
     };
-    auto stop_after_input = [&]() {
-        return rules::stop_after_input(model, options, resting, theta, omega, sigma, t, t_fin, t_limit);
+    auto rest_until = [&](double until) {
+        sample_until(until, [](double, double& th, double& om) { th = om = 0.0; });
     };
 
-    while (!done) {
-        if (!recorded && t >= t_fin) {
-            result.theta_at_tfin = theta;
-            result.omega_at_tfin = omega;
-            recorded = true;
-            note_theta(t_fin, theta);
-        }
-        if (resting) {
-            const double tu = t < t_fin ? uplift_time(input, t, t_fin, thr) : INFINITY;
-            if (tu >= t_fin) {
-                sample_until(std::max(t_fin, t_limit), [](double, double& th, double& om) { th = om = 0.0; });
-                if (!recorded) {
-                    result.theta_at_tfin = result.omega_at_tfin = 0.0;
-                    recorded = true;
-                }
-                break;
-            }
-            sample_until(tu, [](double, double& th, double& om) { th = om = 0.0; });
-            t = tu;
-            theta = omega = 0.0;
-            sigma = input.accel(tu) > 0 ? 1 : -1;
-            resting = false;
-            result.uplifted = true;
-        }
-        if (t >= t_fin && stop_after_input()) break;
-
-        double t_stop = t_limit;
+    bool done = false;
+    while (!done && rules::begin_pass(run, result, model, input, options, t_fin, note_theta, rest_until)) {
+        const double t = run.t, theta = run.theta, omega = run.omega;
+        const int sigma = run.sigma;
+        double t_stop = run.t_limit;
         for (double b : breaks)
             if (b > t) {
                 t_stop = b;
                 break;
             }
-        if (t >= t_fin) t_stop = t_limit;
+        if (t >= t_fin) t_stop = run.t_limit;
         stepper->reset(t, theta, omega, sigma, t_stop);
         double ta = t, tha = theta, oma = omega;
         bool event = false;
@@ -195,9 +168,9 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
             } else if (t_impact <= t_cut && t_impact < INFINITY && !rose) {
                 // Still within rounding of the ground: at rest to the end of the
                 // step (progress is guaranteed), then the uplift rule again.
-                t = tb;
-                theta = omega = 0.0;
-                resting = true;
+                run.t = tb;
+                run.theta = run.omega = 0.0;
+                run.resting = true;
                 event = true;
             } else if (t_impact <= t_cut && t_impact < INFINITY) {
                 double th_i, om_i;
@@ -210,15 +183,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                 const bool micro = rules::record_impact(result, t_impact, options, p);
                 const double rest = std::max(options.rest_velocity,
                                              options.solver.kind == SolverKind::exact ? 0.0 : 10.0 * options.solver.atol_alpha);
-                t = t_impact;
-                theta = 0.0;
-                omega = model.restitution * om_i;
-                sigma = -sigma;
-                if (micro || std::fabs(omega) < rest * alpha * p) {
-                    omega = 0.0;
-                    resting = true;
-                    ++result.rests;
-                }
+                rules::apply_impact(run, result, model, t_impact, om_i, micro, rest);
                 event = true;
             } else {
                 note_theta(tb, thb);
@@ -228,14 +193,11 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
             }
         }
         if (!event) {
-            t = stepper->t_end();
-            stepper->state_at(t, theta, omega);
+            run.t = stepper->t_end();
+            stepper->state_at(run.t, run.theta, run.omega);
         }
     }
-    // Overturning decided by energy when the fall itself was not simulated.
-    if (options.free_rocking && !result.overturned && !resting && recorded && t >= t_fin &&
-        model.energy(theta, omega, sigma) >= model.barrier())
-        result.overturned = true;
+    rules::decide_by_energy(run, result, model, options, t_fin);
     result.rhs_evaluations = stepper->rhs_evaluations();
     result.steps = stepper->steps();
     return result;
