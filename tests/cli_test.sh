@@ -36,6 +36,9 @@ check "simulate at collapse"         "COLLAPSE under final-rotation" "$rocking" 
 check "full model needs an ODE solver" "exact solver handles the linearised equation only" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --model full --solver exact
 check "simulate geometry required"   "give exactly one of --p, --half-height and --height" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15
 check "simulate bad solver"          "unknown solver 'rk4'" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver rk4
+check "simulate restitution range"   "--restitution: must be in [0, 1] or housner (got 1.5)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --restitution 1.5
+check "collapse rtol range (before reading the file)" "--rtol: must be in (0, 1) (got 2)" "$rocking" collapse no-such-file --alpha 0.15 --rtol 2
+status "collapse bad restitution exits 2" 2 "$rocking" collapse no-such-file --alpha 0.15 --restitution x
 status "simulate bad criterion exits 2" 2 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --criterion soon
 out=$(mktemp)
 "$rocking" simulate --one-sine --ap 0.45 --wp 6 --alpha 0.15 --p 2 --output "$out" --dt 0.1 >/dev/null

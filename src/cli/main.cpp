@@ -79,6 +79,22 @@ double number(const std::string& flag, const std::string& text) {
     return v;
 }
 
+// --restitution: "housner" (1 - 1.5 sin^2 alpha) or a factor in [0, 1];
+// NaN stands for housner.
+double restitution_option(const std::string& text) {
+    if (text == "housner") return NAN;
+    const double e = number("--restitution", text);
+    if (!(e >= 0 && e <= 1)) throw UsageError("--restitution: must be in [0, 1] or housner (got " + text + ")");
+    return e;
+}
+
+// --rtol: a relative tolerance in (0, 1), used as the absolute one in units of alpha too.
+double rtol_option(const std::string& text) {
+    const double r = number("--rtol", text);
+    if (!(r > 0 && r < 1)) throw UsageError("--rtol: must be in (0, 1) (got " + text + ")");
+    return r;
+}
+
 int integer(const std::string& flag, const std::string& text) {
     const double v = number(flag, text);
     if (v != std::floor(v) || std::fabs(v) > 1e6) throw UsageError(flag + ": '" + text + "' is not a whole number");
@@ -232,9 +248,8 @@ int cmd_simulate(int argc, char** argv) {
     if (model_name == "full") model.equation = Equation::full;
     else if (model_name != "linearised") throw UsageError("--model: linearised or full (got " + model_name + ")");
     if (has("--restitution")) {
-        const std::string e = a.values.at("--restitution");
-        model.restitution = e == "housner" ? housner_restitution(alpha) : number("--restitution", e);
-        if (!(model.restitution >= 0 && model.restitution <= 1)) throw UsageError("--restitution: must be in [0, 1]");
+        const double e = restitution_option(a.values.at("--restitution"));
+        model.restitution = std::isnan(e) ? housner_restitution(alpha) : e;
     }
     SimulationOptions options;
     try {
@@ -243,11 +258,7 @@ int cmd_simulate(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--solver: ") + e.what());
     }
-    if (has("--rtol")) {
-        options.solver.rtol = num("--rtol");
-        options.solver.atol_alpha = options.solver.rtol;
-        if (!(options.solver.rtol > 0 && options.solver.rtol < 1)) throw UsageError("--rtol: must be in (0, 1)");
-    }
+    if (has("--rtol")) options.solver.rtol = options.solver.atol_alpha = rtol_option(a.values.at("--rtol"));
     Criterion criterion = Criterion::final_rotation;
     try {
         if (has("--criterion")) criterion = parse_criterion(a.values.at("--criterion"));
@@ -379,11 +390,11 @@ int cmd_collapse(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
-    if (a.values.count("--rtol")) o.solver.rtol = o.solver.atol_alpha = number("--rtol", a.values.at("--rtol"));
-    if (a.values.count("--restitution") && a.values.at("--restitution") != "housner") {
-        o.housner_restitution = false;
-        o.restitution = number("--restitution", a.values.at("--restitution"));
-        if (!(o.restitution >= 0 && o.restitution <= 1)) throw UsageError("--restitution: must be in [0, 1]");
+    if (a.values.count("--rtol")) o.solver.rtol = o.solver.atol_alpha = rtol_option(a.values.at("--rtol"));
+    if (a.values.count("--restitution")) {
+        const double e = restitution_option(a.values.at("--restitution"));
+        o.housner_restitution = std::isnan(e);
+        if (!o.housner_restitution) o.restitution = e;
     }
     if (o.equation == Equation::full && o.solver.kind == SolverKind::exact)
         throw UsageError("the exact solver handles the linearised equation only");
