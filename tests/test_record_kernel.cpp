@@ -5,8 +5,10 @@
 // piece walk.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -174,4 +176,70 @@ TEST(RecordKernel, TheBenchmarkRecordToOnePartIn1e12) {
     rk.solver.rtol = rk.solver.atol_alpha = 1e-13;
     const SimulationResult g = simulate(m, rec, rk);
     EXPECT_NEAR(d.max_abs_theta_input / 0.2, g.max_abs_theta_input / 0.2, 1e-10);
+}
+
+TEST(RecordKernel, ImpactCascadeUnderAConstantGroundFollowsItsClosedForm) {
+    // A block leaving theta = 0 at omega0 > 0 on a ground of constant
+    // acceleration a (|a| < alpha): on corner sigma, with lin = a - sigma alpha,
+    //   theta(u) = lin (cosh pu - 1) + (omega / p) sinh pu,
+    // which returns to 0 at u = (2 / p) atanh(|omega| / (p |lin|)) with the
+    // speed it left at (the arc is symmetric).  So the cascade is known in
+    // closed form: impact n + 1 comes u_n after impact n, at speed e^n omega0,
+    // on alternating corners; it ends at the first rebound within 1e-6 / p of
+    // the previous impact (or slower than the rest velocity).  Reference in
+    // long double.  Record steps from 0.001 s (every rebound of the first
+    // half crosses sample times) to 0.25 s (the whole cascade in one piece).
+    //
+    // The kernel writes the closed form as increments on the state (theta
+    // grows from 0 by omega u and corrections), so each impact time is
+    // solved to its own rounding: tolerance 2e-15 s on every time (times up
+    // to 0.24 s, whose ulp is 2.8e-17 s; measured below 4e-16 s).  The
+    // general path evaluates C cosh pu + D sinh pu - lin, whose rounding is
+    // eps |lin| ~ eps alpha at every impact: divided by the impact's speed it
+    // is an error in time, eps alpha / omega_n, which the cascade adds up as
+    // the rebounds slow (measured up to 1e-8 s, 7 times that sum).  Its errors
+    // are held to 16 times the sum: a few ulps in each evaluation, and the
+    // speed each impact hands on carries the previous time's error.
+    const double alpha = 0.15, p = 2.0, a = 0.06, omega0 = 2e-3;
+    const Model m = block(alpha, p, true);
+    std::vector<long double> times;
+    std::vector<double> conditioning;  // sum over impacts so far of eps (|a| + alpha) / omega_n
+    {
+        long double t = 0, omega = omega0, previous = -1, sum = 0;
+        int sigma = 1;
+        for (;;) {
+            const long double lin = a - sigma * static_cast<long double>(alpha);
+            t += 2.0L / p * std::atanh(omega / (p * std::fabs(lin)));
+            sum += std::numeric_limits<double>::epsilon() * (std::fabs(a) + alpha) / omega;
+            times.push_back(t);
+            conditioning.push_back(static_cast<double>(sum));
+            if (previous >= 0 && t - previous < 1e-6L / p) break;  // the micro-bounce rule
+            previous = t;
+            omega *= m.restitution;
+            sigma = -sigma;
+            if (omega < 1e-9L * alpha * p) break;  // the rest rule
+        }
+    }
+    ASSERT_GT(times.size(), 200u);
+    for (double dt : {0.001, 0.01, 0.25})
+        for (bool kernel : {true, false}) {
+            const SampledInput ground(std::vector<double>(static_cast<std::size_t>(std::lround(2.0 / dt)) + 1, a), dt,
+                                      "constant");
+            SimulationOptions o = exact(kernel);
+            o.initial_omega = omega0;
+            const SimulationResult r = simulate(m, ground, o);
+            const std::string what = std::string(kernel ? "record kernel" : "general path") + ", dt " + std::to_string(dt);
+            ASSERT_EQ(r.impact_times.size(), times.size()) << what;
+            EXPECT_EQ(r.rests, 1) << what;
+            double worst = 0, worst_share = 0;
+            for (std::size_t i = 0; i < times.size(); ++i) {
+                const double error = std::fabs(r.impact_times[i] - static_cast<double>(times[i]));
+                worst = std::max(worst, error);
+                worst_share = std::max(worst_share, error / conditioning[i]);
+                if (kernel) EXPECT_LT(error, 2e-15) << what << ", impact " << i;
+                else EXPECT_LT(error, 16 * conditioning[i]) << what << ", impact " << i;
+            }
+            std::printf("%s: %zu impacts, largest impact-time error %.2e s (%.1f times the sum of eps alpha / omega_n)\n",
+                        what.c_str(), times.size(), worst, worst_share);
+        }
 }

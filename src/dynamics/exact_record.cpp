@@ -13,58 +13,100 @@ namespace rocking::dynamics {
 
 namespace {
 
+// The even series of the closed form, in y = x^2:
+//   ch1(y) = (cosh x - 1) / x^2 = 1/2! + y/4! + y^2/6! + ...
+//   sh1(y) = (sinh x - x) / x^3 = 1/3! + y/5! + y^2/7! + ...
+// to y^8, whose first term left out is below 1e-21 relative for x <= 0.6
+// (every piece of the kernel: p dt <= max_step_p = 0.5 by default) and
+// below 1e-17 for x <= 1; beyond, from cosh and sinh (a few bits lost to
+// the cancellation of sinh x - x, on pieces no default option produces).
+// They carry cosh x - 1 = y ch1 and sinh x - x = x y sh1 without the
+// cancellation of the differences.
 template <class Real>
-struct CoshSinh {
-    Real c, s;
-};
-
-// cosh x and sinh x.  Below 0.1 (every record piece of a block with
-// p dt < 0.1, and the parts of pieces cut by events) the Taylor series to
-// x^12 / x^11, whose truncation is below 1e-21 relative (below 0.02, to x^6 /
-// x^7: below 1e-18): cheaper than exp and free of the cancellation of
-// (e^x - e^-x) / 2.
-template <class Real>
-CoshSinh<Real> cosh_sinh(Real x) {
-    if (std::fabs(x) < 0.1) {
-        // 1/((2k-1)(2k)) and 1/((2k)(2k+1)) as products: no division on the
-        // hot path; their rounding touches terms below x^2/2 only (< 1e-18).
-        const Real c2 = Real(1) / 2, c4 = Real(1) / 12, c6 = Real(1) / 30, c8 = Real(1) / 56, c10 = Real(1) / 90,
-                   c12 = Real(1) / 132;
-        const Real s3 = Real(1) / 6, s5 = Real(1) / 20, s7 = Real(1) / 42, s9 = Real(1) / 72, s11 = Real(1) / 110;
-        const Real y = x * x;
-        if (sizeof(Real) == sizeof(double) && y < 4e-4)  // |x| < 0.02 (a record piece, p dt ~ 0.01): x^8 terms below 1e-18
-            return {1 + y * c2 * (1 + y * c4 * (1 + y * c6)), x * (1 + y * s3 * (1 + y * s5 * (1 + y * s7)))};
-        return {1 + y * c2 * (1 + y * c4 * (1 + y * c6 * (1 + y * c8 * (1 + y * c10 * (1 + y * c12))))),
-                x * (1 + y * s3 * (1 + y * s5 * (1 + y * s7 * (1 + y * s9 * (1 + y * s11)))))};
+void series(Real y, Real& ch1, Real& sh1) {
+    if (y > 1) {
+        const Real x = std::sqrt(y);
+        ch1 = (std::cosh(x) - 1) / y;
+        sh1 = (std::sinh(x) - x) / (x * y);
+        return;
     }
-    return {std::cosh(x), std::sinh(x)};
+    // 1/n! as constants: the divisions are done once, at compile time.
+    // Shorter sums where the terms left out stay below 1e-20 relative: to
+    // y^3 below y = 4e-4 (x < 0.02: a record piece of a block with p dt ~
+    // 0.01, every rebound of a cascade), to y^5 below y = 0.01.
+    if (y < Real(4e-4)) {
+        ch1 = Real(1) / 2 + y * (Real(1) / 24 + y * (Real(1) / 720 + y * (Real(1) / 40320)));
+        sh1 = Real(1) / 6 + y * (Real(1) / 120 + y * (Real(1) / 5040 + y * (Real(1) / 362880)));
+        return;
+    }
+    if (y < Real(0.01)) {
+        ch1 = Real(1) / 2 +
+              y * (Real(1) / 24 + y * (Real(1) / 720 + y * (Real(1) / 40320 + y * (Real(1) / 3628800 +
+                                                                                   y * (Real(1) / 479001600)))));
+        sh1 = Real(1) / 6 +
+              y * (Real(1) / 120 + y * (Real(1) / 5040 + y * (Real(1) / 362880 + y * (Real(1) / 39916800 +
+                                                                                      y * (Real(1) / 6227020800.0L)))));
+        return;
+    }
+    ch1 = Real(1) / 2 +
+          y * (Real(1) / 24 +
+               y * (Real(1) / 720 +
+                    y * (Real(1) / 40320 +
+                         y * (Real(1) / 3628800 +
+                              y * (Real(1) / 479001600 +
+                                   y * (Real(1) / 87178291200.0L +
+                                        y * (Real(1) / 20922789888000.0L + y * (Real(1) / 6402373705728000.0L))))))));
+    sh1 = Real(1) / 6 +
+          y * (Real(1) / 120 +
+               y * (Real(1) / 5040 +
+                    y * (Real(1) / 362880 +
+                         y * (Real(1) / 39916800 +
+                              y * (Real(1) / 6227020800.0L +
+                                   y * (Real(1) / 1307674368000.0L +
+                                        y * (Real(1) / 355687428096000.0L + y * (Real(1) / 121645100408832000.0L))))))));
 }
 
 // The linearised equation on corner sigma, over a piece where the record is
 // linear, a(t + u)/g = a0 + c1 u, from the state (theta0, omega0) at t:
 //   theta''(u) = p^2 (theta + a0 + c1 u - sigma alpha)   (eq. 3, corrected sign)
 //   theta(u)   = C cosh pu + D sinh pu - lin - c1 u,      lin = a0 - sigma alpha,
-//   theta'(u)  = p (C sinh pu + D cosh pu) - c1,          C = theta0 + lin,
-//   theta''(u) = p^2 (C cosh pu + D sinh pu),              D = (omega0 + c1) / p.
-// The same closed form as ExactStepper's (exact_stepper.cpp).
+//   C = theta0 + lin, D = (omega0 + c1) / p = W / p
+// (the same closed form as ExactStepper's, exact_stepper.cpp), written as
+// increments on the state, x = pu, y = x^2:
+//   theta(u)        = theta0 + omega0 u + C y ch1 + W u y sh1,
+//   theta'(u)       = omega0 + p C x (1 + y sh1) + W y ch1,
+//   theta''(u)/p^2  = C (1 + y ch1) + W u (1 + y sh1).
+// Each term is a correction of the state, so the rounding is relative to
+// theta and theta', not to alpha: the general form's C cosh - lin carries an
+// error eps alpha, which divided by theta' at an impact is an error in its
+// time (eps alpha / theta', 1e-13 s on a rebound of 1e-4 rad/s).
 template <class Real>
 struct Closed {
-    Real p, C, D, lin, c1;
+    Real p, theta0, omega0, C, W;
 
-    void at(Real u, Real& theta, Real& omega) const {
-        const CoshSinh<Real> cs = cosh_sinh(p * u);
-        theta = C * cs.c + D * cs.s - lin - c1 * u;
-        omega = p * (C * cs.s + D * cs.c) - c1;
+    struct Point {
+        Real theta, omega, curvature;  // curvature: theta''/p^2
+    };
+    Point at(Real u) const {
+        const Real x = p * u, y = x * x;
+        Real ch1, sh1;
+        series(y, ch1, sh1);
+        const Real k1 = y * ch1, s0 = 1 + y * sh1;  // cosh x - 1, sinh x / x
+        return {theta0 + omega0 * u + C * k1 + W * u * y * sh1, omega0 + p * C * x * s0 + W * k1,
+                C * (1 + k1) + W * u * s0};
     }
-    Real theta_at(Real u) const {
-        const CoshSinh<Real> cs = cosh_sinh(p * u);
-        return C * cs.c + D * cs.s - lin - c1 * u;
+    // Rounding levels of theta, theta' and theta''/p^2 on [0, u1] (four
+    // ulps of the largest term; k1 = cosh pu1 - 1).
+    Real theta_noise(Real u1, Real k1) const {
+        return 4 * std::numeric_limits<Real>::epsilon() *
+               (std::fabs(theta0) + std::fabs(omega0) * u1 + (std::fabs(C) + std::fabs(W) * u1) * k1);
     }
-    // theta''/p^2 and its derivative/p^2.
-    void curvature_at(Real u, Real& e, Real& de) const {
-        const CoshSinh<Real> cs = cosh_sinh(p * u);
-        e = C * cs.c + D * cs.s;
-        de = p * (C * cs.s + D * cs.c);
+    Real omega_noise(Real u1, Real k1) const {
+        return 4 * std::numeric_limits<Real>::epsilon() *
+               (std::fabs(omega0) + (p * std::fabs(C) * p * u1 + std::fabs(W)) * (1 + k1));
+    }
+    Real curvature_noise(Real u1, Real k1) const {
+        return 4 * std::numeric_limits<Real>::epsilon() * (std::fabs(C) + std::fabs(W) * u1) * (1 + k1);
     }
 };
 
@@ -117,6 +159,44 @@ Real quadratic_root(Real fa, Real fpa, Real fpp) {
     return best;
 }
 
+// A bounce: the block leaves theta = 0 with theta' = omega (sigma omega > 0)
+// on a piece where the record is linear, a0 + c1 u.  With C = lin
+// (theta0 = 0), x = p u, y = x^2 and the even series
+//   ch1(y) = (cosh x - 1) / x^2 = 1/2 + y/24 + y^2/720 + ...
+//   sh1(y) = (sinh x - x) / x^3 = 1/6 + y/120 + y^2/5040 + ...
+// the closed form divided by u (its root at u = 0 taken out) is
+//   g(u) = theta(u) / u = omega + p lin x ch1 + (omega + c1) y sh1,
+//   g'(u) = p^2 lin (1 + y sh1 - ch1) + p x (omega + c1) (ch1 - sh1),
+//   theta'(u) = omega + p lin x (1 + y sh1) + (omega + c1) y ch1,
+//   theta''(u) / p^2 = lin (1 + y ch1) + (omega + c1) u (1 + y sh1),
+// every term a correction to omega: none of the cancellation of
+// D sinh pu - c1 u that the general form carries when c1 >> omega (a small
+// rebound on a steep record).
+template <class Real>
+struct Bounce {
+    Real p, omega, lin, c1;
+
+    // The landing: the first root u > 0 of theta, by Newton on g from the
+    // parabola's root -2 omega / (p^2 lin); NaN when the iteration does not
+    // settle within 8 steps or leaves (0, u_max).
+    Real landing(Real u_max) const {
+        const Real eps = std::numeric_limits<Real>::epsilon();
+        Real u = -2 * omega / (p * p * lin);
+        for (int i = 0; i < 8; ++i) {
+            if (!(u > 0 && u < u_max)) return NAN;
+            const Real x = p * u, y = x * x;
+            Real ch1, sh1;
+            series(y, ch1, sh1);
+            const Real g = omega + p * lin * x * ch1 + (omega + c1) * y * sh1;
+            const Real dg = p * p * lin * (1 + y * sh1 - ch1) + p * x * (omega + c1) * (ch1 - sh1);
+            const Real next = u - g / dg;
+            if (std::fabs(next - u) <= 4 * eps * u) return next > 0 && next < u_max ? next : Real(NAN);
+            u = next;
+        }
+        return NAN;
+    }
+};
+
 }  // namespace
 
 bool record_kernel_applies(const Model& model, const GroundInput& input, const SimulationOptions& options) {
@@ -137,7 +217,12 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     const Real dt = input.dt(), inv_dt = 1.0 / dt, inv_p = 1.0 / p;
     const Real t_fin = input.t_end();
     const Real h_free = options.solver.max_step_p / p;  // step of the free rocking (ground at rest)
-    const CoshSinh<Real> whole{std::cosh(p * dt), std::sinh(p * dt)};
+    // A whole piece's constants: cosh p dt - 1, sinh p dt and
+    // (sinh p dt - p dt) / p (the increments of the closed form, Closed).
+    Real ch1_dt, sh1_dt;
+    series(p * dt * p * dt, ch1_dt, sh1_dt);
+    const Real k1_dt = p * dt * p * dt * ch1_dt, s_dt = p * dt * (1 + p * dt * p * dt * sh1_dt),
+               q_dt = dt * p * dt * p * dt * sh1_dt;
     const Real noise = 1e-12 * alpha;  // the general path's "rose" rule (simulate.cpp)
     const Real rest = options.rest_velocity;
 
@@ -176,9 +261,10 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 if (t == dt * k) {
                     while (k + 1 < a.size()) {  // t_stop = t_fin here
                         const Real c1 = (a[k + 1] - a[k]) * inv_dt, lin = a[k] - sa;
-                        const Real C = theta + lin, D = (omega + c1) * inv_p;
-                        const Real e1 = C * whole.c + D * whole.s;
-                        const Real th1 = e1 - lin - c1 * dt, om1 = p * (C * whole.s + D * whole.c) - c1;
+                        const Real C = theta + lin, W = omega + c1;
+                        const Real th1 = theta + omega * dt + C * k1_dt + W * q_dt;
+                        const Real om1 = omega + p * C * s_dt + W * k1_dt;
+                        const Real e1 = C * (1 + k1_dt) + W * inv_p * s_dt;  // theta''/p^2 at the end
                         const Real s1 = sigma * th1;
                         // omega om1 > 0 and C e1 > 0: one sign at both ends,
                         // of theta' and of theta'' (an underflow to 0 only
@@ -220,44 +306,43 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 u1 = te - t;
             }
             const Real lin = a0 - sigma * alpha;
-            const Closed<Real> f{p, theta + lin, (omega + c1) * inv_p, lin, c1};
-            const CoshSinh<Real> cs = whole_piece ? whole : cosh_sinh(p * u1);
-            const Real th1 = f.C * cs.c + f.D * cs.s - lin - c1 * u1;
-            const Real om1 = p * (f.C * cs.s + f.D * cs.c) - c1;
+            const Closed<Real> f{p, theta, omega, theta + lin, omega + c1};
+            const typename Closed<Real>::Point end = f.at(u1);
+            const Real th1 = end.theta, om1 = end.omega;
             ++result.steps;
             // Rounding levels of theta, theta' and theta''/p^2 on this piece.
             const Real eps4 = 4 * std::numeric_limits<Real>::epsilon();
-            const Real e_noise = eps4 * (std::fabs(f.C) + std::fabs(f.D));
-            const Real th_noise = e_noise + eps4 * (std::fabs(lin) + std::fabs(c1) * u1);
-            const Real om_noise = p * e_noise + eps4 * std::fabs(c1);
+            // cosh pu1 - 1, bounded above by y/2 + y^2/20 (y = (p u1)^2 <= 1): a
+            // rounding level needs no more.
+            const Real y1 = (p * u1) * (p * u1), k1 = y1 * (Real(0.5) + y1 * Real(0.05));
+            const Real e_noise = f.curvature_noise(u1, k1);
+            const Real th_noise = f.theta_noise(u1, k1);
+            const Real om_noise = f.omega_noise(u1, k1);
 
             // Where theta'' changes sign with theta' keeping its sign at both
             // ends, theta' may vanish twice: split where theta'' = 0.
             Real u_split = u1;
-            const Real e0 = f.C, e1 = f.C * cs.c + f.D * cs.s;
+            const Real e0 = f.C, e1 = end.curvature;
             if ((e0 < 0) != (e1 < 0) && e0 != 0.0 && e1 != 0.0 && (omega < 0) == (om1 < 0)) {
                 const Real ue = newton_root<Real>(
                     [&](Real u) {
-                        Real e, de;
-                        f.curvature_at(u, e, de);
-                        return std::make_pair(e, de);
+                        const typename Closed<Real>::Point q = f.at(u);
+                        return std::make_pair(q.curvature, q.omega + c1);  // (theta + a - sigma alpha)' = theta' + c1
                     },
                     0.0, u1, e0, e1, e_noise);
-                Real th_e, om_e;
-                f.at(ue, th_e, om_e);
+                const Real om_e = f.at(ue).omega;
                 if (ue > 0.0 && ue < u1 && (om_e < 0) != (omega < 0)) u_split = ue;
             }
 
             Real ua = 0.0, tha = theta, oma = omega;
             while (!event) {
                 const Real ub = u_split;
-                Real thb = th1, omb = om1;
-                if (ub < u1) f.at(ub, thb, omb);
+                const typename Closed<Real>::Point at_b = ub < u1 ? f.at(ub) : end;
+                const Real thb = at_b.theta, omb = at_b.omega;
                 auto sigma_theta = [&](Real level) {
                     return [&f, sigma, level](Real u) {
-                        Real th, om;
-                        f.at(u, th, om);
-                        return std::make_pair(sigma * th - level, sigma * om);
+                        const typename Closed<Real>::Point q = f.at(u);
+                        return std::make_pair(sigma * q.theta - level, sigma * q.omega);
                     };
                 };
                 // Extremum of theta inside the part (theta' changes sign, once).
@@ -265,12 +350,11 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) {
                     u_ext = newton_root<Real>(
                         [&](Real u) {
-                            Real e, de;
-                            f.curvature_at(u, e, de);
-                            return std::make_pair(de - c1, p * p * e);
+                            const typename Closed<Real>::Point q = f.at(u);
+                            return std::make_pair(q.omega, p * p * q.curvature);
                         },
                         ua, ub, oma, omb, om_noise);
-                    th_ext = f.theta_at(u_ext);
+                    th_ext = f.at(u_ext).theta;
                 }
                 const bool has_ext = !std::isnan(u_ext);
                 // Terminal events: impact (sigma theta reaches 0), fall.
@@ -279,13 +363,11 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 // rebound is small (the end of an impact cascade): Newton starts
                 // from the parabola's root, u_ext -+ sqrt(2 |theta_ext / theta''_ext|).
                 auto beside_ext = [&](Real side) {
-                    Real e, de;
-                    f.curvature_at(u_ext, e, de);
+                    const Real e = f.at(u_ext).curvature;
                     return u_ext + side * std::sqrt(std::fabs(2 * th_ext / (p * p * e)));
                 };
                 auto beside_start = [&]() {
-                    Real e, de;
-                    f.curvature_at(ua, e, de);
+                    const Real e = f.at(ua).curvature;
                     return ua + quadratic_root(sigma * tha, sigma * oma, sigma * p * p * e);
                 };
                 if (has_ext && sigma * th_ext < 0.0)
@@ -303,7 +385,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 const Real u_cut = std::min({u_impact, u_fall, ub});
                 // First time |theta| = alpha.
                 if (std::isnan(result.t_first_alpha) && sigma * tha < alpha) {
-                    const Real th_cut = u_cut == ub ? thb : f.theta_at(u_cut);
+                    const Real th_cut = u_cut == ub ? thb : f.at(u_cut).theta;
                     if (sigma * th_cut >= alpha)
                         result.t_first_alpha =
                             t + newton_root<Real>(sigma_theta(alpha), ua, u_cut, sigma * tha - alpha, sigma * th_cut - alpha,
@@ -329,13 +411,39 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                     run.resting = true;
                     event = true;
                 } else if (u_impact <= u_cut && u_impact < INFINITY) {
-                    Real th_i, om_i;
-                    f.at(u_impact, th_i, om_i);
+                    const Real om_i = f.at(u_impact).omega;
                     const Real t_impact = t + u_impact;
                     note_theta(t_impact, 0.0);
                     const bool micro = rules::record_impact(result, t_impact, options, p);
                     rules::apply_impact(run, result, model, t_impact, om_i, micro, rest);
                     event = true;
+                    // The rebounds that land inside the same record piece (an
+                    // impact cascade) go by the bounce form, one Newton solve each,
+                    // while it can be shown that nothing else happens on the way:
+                    // sigma theta'' < 0 at both ends (theta'' has one sign change
+                    // at most, so sigma theta is concave: one rise, one fall, no
+                    // dip), and the rise below the bound of a concave arc, so below
+                    // the largest |theta| so far and below alpha when alpha has not
+                    // been reached.  Otherwise the piece
+                    // goes back to the analysis above.
+                    while (!run.resting && t < t_fin && t < dt * (k + 1)) {
+                        const Real c1b = (a[k + 1] - a[k]) * inv_dt;
+                        const Real lin_b = a[k] + c1b * std::fma(-Real(k), dt, t) - sigma * alpha;
+                        const Real u_max = std::min(std::fma(Real(k + 1), dt, -t), Real(0.1) * inv_p);
+                        if (!(sigma * lin_b < 0)) break;
+                        const Real u_land = Bounce<Real>{p, omega, lin_b, c1b}.landing(u_max);
+                        if (std::isnan(u_land)) break;
+                        const typename Closed<Real>::Point land = Closed<Real>{p, 0, omega, lin_b, omega + c1b}.at(u_land);
+                        const Real om_land = land.omega;
+                        if (!(sigma * land.curvature < 0 && sigma * om_land < 0)) break;
+                        // On the concave arc theta <= omega u and theta <= |omega_land| (u_land - u).
+                        const Real w0 = std::fabs(omega), w1 = std::fabs(om_land);
+                        if (!(w0 * w1 * u_land < max_theta * (w0 + w1))) break;
+                        ++result.steps;
+                        const Real t_land = t + u_land;
+                        const bool micro_b = rules::record_impact(result, t_land, options, p);
+                        rules::apply_impact(run, result, model, t_land, om_land, micro_b, rest);
+                    }
                 } else {
                     note_theta(ub >= u1 ? te : t + ub, thb);
                     if (ub >= u1) break;
