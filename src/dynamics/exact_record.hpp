@@ -3,10 +3,13 @@
 // case the paper's records need (linearised equation, sampled input, no
 // theta(t) kept).  Same model, same rules (uplift, rest, impact cascade,
 // criteria, free rocking) and the same closed form as the general path
-// (ExactStepper + the driver); what it saves is the general path's machinery:
-// virtual steps, interpolant calls and bracketing root-finders.  Events are
-// located by Newton's method on the closed form (its derivative is known
-// exactly), safeguarded by bisection.
+// (ExactStepper + the driver), written as increments on the state so that
+// its rounding is relative to theta and theta' rather than to alpha; what it
+// saves is the general path's machinery: virtual steps, interpolant calls
+// and bracketing root-finders.  Events are located by Newton's method on the
+// closed form (its derivative is known exactly), safeguarded by bisection;
+// rebounds that land inside the record piece they start in, by Newton on
+// theta(u)/u.
 //
 // One rule is stricter than the general path's: a piece on which theta''
 // changes sign is split where it vanishes, so that theta' is monotone on each
