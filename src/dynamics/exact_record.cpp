@@ -31,7 +31,7 @@ void series(Real y, Real& ch1, Real& sh1) {
         return;
     }
     // 1/n! as constants: the divisions are done once, at compile time.
-    // Shorter sums where the terms left out stay below 1e-20 relative: to
+    // Shorter sums where the terms left out stay below 2e-20 relative: to
     // y^3 below y = 4e-4 (x < 0.02: a record piece of a block with p dt ~
     // 0.01, every rebound of a cascade), to y^5 below y = 0.01.
     if (y < Real(4e-4)) {
@@ -167,11 +167,8 @@ Real quadratic_root(Real fa, Real fpa, Real fpp) {
 // the closed form divided by u (its root at u = 0 taken out) is
 //   g(u) = theta(u) / u = omega + p lin x ch1 + (omega + c1) y sh1,
 //   g'(u) = p^2 lin (1 + y sh1 - ch1) + p x (omega + c1) (ch1 - sh1),
-//   theta'(u) = omega + p lin x (1 + y sh1) + (omega + c1) y ch1,
-//   theta''(u) / p^2 = lin (1 + y ch1) + (omega + c1) u (1 + y sh1),
-// every term a correction to omega: none of the cancellation of
-// D sinh pu - c1 u that the general form carries when c1 >> omega (a small
-// rebound on a steep record).
+// every term a correction to omega; the state at the landing is Closed's
+// with theta0 = 0.
 template <class Real>
 struct Bounce {
     Real p, omega, lin, c1;
