@@ -226,8 +226,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     SimulationResult result;
     result.t_fin = t_fin;
     rules::RunState<Real> run(options, t_fin);
-    // The segment's working copy of the state (the quiet loop keeps it in
-    // registers); written back to run at each event and at the segment's end.
+    // The state itself (run's fields), under the names of the equations.
     Real &t = run.t, &theta = run.theta, &omega = run.omega;
     int& sigma = run.sigma;
     bool done = false;
@@ -236,6 +235,21 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
 
     auto note_theta = [&](Real when, Real value) {
         if (when <= t_fin) max_theta = std::max(max_theta, std::fabs(value));
+    };
+    // The rest of record piece k from t (t < t_fin, k holding t): the record
+    // a0 + c1 u over 0 <= u <= u1.  The samples sit at k dt exactly; t and
+    // the piece's end are that grid rounded.  A whole piece (t = k dt as
+    // computed) is dt long, from a[k]; a part of one is measured from the
+    // exact grid, fma rounding (k + 1) dt - t once (the rounded end minus t
+    // would carry the end's rounding, which c1 turns into an error
+    // ~ c1 ulp(t), far above theta's).
+    struct Rest {
+        Real a0, c1, u1;
+    };
+    auto rest_of_piece = [&]() -> Rest {
+        const Real c1 = (a[k + 1] - a[k]) * inv_dt;
+        if (t == dt * k) return {Real(a[k]), c1, dt};
+        return {a[k] + c1 * std::fma(-Real(k), dt, t), c1, std::max(Real(0), std::fma(Real(k + 1), dt, -t))};
     };
 
     while (!done && rules::begin_pass(run, result, model, input, options, t_fin, note_theta, [](Real) {})) {
@@ -283,20 +297,14 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             }
             // The piece [t, te] and its closed form.
             Real te, a0, c1;
-            bool whole_piece = false;
             Real u1;
             if (t < t_fin) {
                 // k holds t here: the quiet loop above set it (t = k dt) or left both as they were.
                 te = dt * (k + 1);
-                c1 = (a[k + 1] - a[k]) * inv_dt;
-                // The samples sit at k dt exactly; te and t are that grid
-                // rounded.  A whole piece is dt long (as in the quiet loop);
-                // a part of one is measured from the exact grid, fma rounding
-                // (k + 1) dt - t once (te - t would carry te's rounding, which
-                // c1 turns into an error ~ c1 ulp(t), far above theta's).
-                whole_piece = t == dt * k;
-                a0 = whole_piece ? Real(a[k]) : a[k] + c1 * std::fma(-Real(k), dt, t);
-                u1 = whole_piece ? dt : std::max(Real(0), std::fma(Real(k + 1), dt, -t));
+                const Rest piece = rest_of_piece();
+                a0 = piece.a0;
+                c1 = piece.c1;
+                u1 = piece.u1;
             } else {
                 te = t + h_free >= t_stop ? t_stop : t + h_free;
                 a0 = c1 = 0.0;
@@ -424,13 +432,14 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                     // been reached.  Otherwise the piece
                     // goes back to the analysis above.
                     while (!run.resting && t < t_fin && t < dt * (k + 1)) {
-                        const Real c1b = (a[k + 1] - a[k]) * inv_dt;
-                        const Real lin_b = a[k] + c1b * std::fma(-Real(k), dt, t) - sigma * alpha;
-                        const Real u_max = std::min(std::fma(Real(k + 1), dt, -t), Real(0.1) * inv_p);
+                        const Rest piece = rest_of_piece();
+                        const Real lin_b = piece.a0 - sigma * alpha;
+                        const Real u_max = std::min(piece.u1, Real(0.1) * inv_p);
                         if (!(sigma * lin_b < 0)) break;
-                        const Real u_land = Bounce<Real>{p, omega, lin_b, c1b}.landing(u_max);
+                        const Real u_land = Bounce<Real>{p, omega, lin_b, piece.c1}.landing(u_max);
                         if (std::isnan(u_land)) break;
-                        const typename Closed<Real>::Point land = Closed<Real>{p, 0, omega, lin_b, omega + c1b}.at(u_land);
+                        const typename Closed<Real>::Point land =
+                            Closed<Real>{p, 0, omega, lin_b, omega + piece.c1}.at(u_land);
                         const Real om_land = land.omega;
                         if (!(sigma * land.curvature < 0 && sigma * om_land < 0)) break;
                         // On the concave arc theta <= omega u and theta <= |omega_land| (u_land - u).
