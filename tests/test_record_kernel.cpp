@@ -243,3 +243,94 @@ TEST(RecordKernel, ImpactCascadeUnderAConstantGroundFollowsItsClosedForm) {
                         what.c_str(), times.size(), worst, worst_share);
         }
 }
+
+namespace {
+
+// The closed form on corner +1 under a constant ground a, from (theta0,
+// omega0), in long double: theta(u) = theta0 + omega0 u + C (cosh pu - 1) +
+// omega0 (sinh pu - pu) / p with C = theta0 + a - alpha (cosh x - 1 as
+// 2 sinh^2(x/2), free of cancellation).
+struct ConstantGroundArc {
+    long double p, alpha, a, theta0, omega0;
+    long double theta(long double u) const {
+        const long double x = p * u, h = std::sinh(x / 2);
+        return theta0 + omega0 * u + (theta0 + a - alpha) * 2 * h * h + omega0 * (std::sinh(x) - x) / p;
+    }
+    long double omega(long double u) const {
+        const long double x = p * u;
+        return omega0 * std::cosh(x) + p * (theta0 + a - alpha) * std::sinh(x);
+    }
+    // The root of f on [lo, hi] (f(lo), f(hi) of opposite signs), by bisection to
+    // the last bit of long double.
+    template <class F>
+    static long double bisect(F f, long double lo, long double hi) {
+        const bool rising = f(lo) < 0;
+        for (int i = 0; i < 200 && lo < hi; ++i) {
+            const long double mid = (lo + hi) / 2;
+            if (mid == lo || mid == hi) break;
+            ((f(mid) < 0) == rising ? lo : hi) = mid;
+        }
+        return (lo + hi) / 2;
+    }
+};
+
+}  // namespace
+
+TEST(RecordKernel, EventsHiddenInsideOneRecordPieceAreFound) {
+    // Two events that happen strictly inside a record piece, between two
+    // sample times at which the block is above the ground and below alpha,
+    // with theta' changing sign in between: the piece's ends alone cannot
+    // tell them from a quiet piece.  Truth from the closed form in long double.
+    const double alpha = 0.1, p = 2.0, dt = 0.01;
+    const Model m = block(alpha, p, true);
+    for (bool kernel : {true, false}) {
+        const std::string what = kernel ? "record kernel" : "general path";
+        {
+            // A dip: the block falls at 2e-3 rad/s from 1e-6 rad on a ground
+            // pushing it back (a = 3 alpha): theta reaches 0 at ~5e-4 s, where
+            // it would have turned at 2.5e-3 s at -1.5e-6 rad and been back
+            // above 2e-5 rad by the sample at 0.01 s.  The impact is there.
+            const double a = 3 * alpha, theta0 = 1e-6, omega0 = -2e-3;
+            const ConstantGroundArc arc{p, alpha, a, theta0, omega0};
+            ASSERT_GT(arc.theta(dt), 1e-5L);  // the piece's end is well above the ground
+            const long double u_turn = ConstantGroundArc::bisect([&](long double u) { return arc.omega(u); }, 0, dt);
+            ASSERT_LT(arc.theta(u_turn), -1e-6L);  // the dip goes below it
+            const long double u_impact =
+                ConstantGroundArc::bisect([&](long double u) { return arc.theta(u); }, 0, u_turn);
+            SimulationOptions o = exact(kernel);
+            o.initial_theta = theta0;
+            o.initial_omega = omega0;
+            o.free_rocking = false;
+            const SimulationResult r = simulate(m, SampledInput(std::vector<double>(3, a), dt, "pushing ground"), o);
+            ASSERT_GE(r.impacts, 1) << what;
+            // Rounding of theta ~ eps 1e-6 rad, divided by theta' = 2e-3 rad/s:
+            // 1e-19 s; the general path's eps alpha / theta' is 1e-14 s.
+            EXPECT_NEAR(r.impact_times[0], static_cast<double>(u_impact), kernel ? 1e-17 : 1e-13) << what;
+        }
+        {
+            // A peak: the block rises at 0.03 rad/s from alpha - 2e-5 on a ground
+            // pulling it back (a = -3 g): theta passes alpha, turns 1.75e-5 rad
+            // above it at 2.5e-3 s, and is 3e-4 rad below alpha at the sample at
+            // 0.01 s.  The first time |theta| = alpha, and the largest |theta|,
+            // are inside.
+            const double a = -3.0, theta0 = alpha - 2e-5, omega0 = 0.03;
+            const ConstantGroundArc arc{p, alpha, a, theta0, omega0};
+            ASSERT_LT(arc.theta(dt), alpha - 1e-4L);
+            const long double u_turn = ConstantGroundArc::bisect([&](long double u) { return arc.omega(u); }, 0, dt);
+            ASSERT_GT(arc.theta(u_turn), alpha + 1e-5L);
+            const long double u_alpha =
+                ConstantGroundArc::bisect([&](long double u) { return arc.theta(u) - alpha; }, 0, u_turn);
+            SimulationOptions o = exact(kernel);
+            o.initial_theta = theta0;
+            o.initial_omega = omega0;
+            o.free_rocking = false;
+            const SimulationResult r = simulate(m, SampledInput(std::vector<double>(3, a), dt, "pulling ground"), o);
+            // Rounding of theta ~ eps alpha, divided by theta' ~ 0.02 rad/s at
+            // the crossing: ~1e-15 s.  The largest |theta| to its rounding: a
+            // few ulps of 0.1 for the kernel; eps |a - alpha| (7e-16 rad) for
+            // the general path's C cosh pu + D sinh pu - lin.
+            EXPECT_NEAR(r.t_first_alpha, static_cast<double>(u_alpha), 1e-14) << what;
+            EXPECT_NEAR(r.max_abs_theta_input, static_cast<double>(arc.theta(u_turn)), kernel ? 4e-17 : 2e-15) << what;
+        }
+    }
+}

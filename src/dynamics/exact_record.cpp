@@ -159,6 +159,19 @@ Real quadratic_root(Real fa, Real fpa, Real fpp) {
     return best;
 }
 
+// Where theta' vanishes inside [lo, hi], given theta' = om_lo and om_hi of
+// opposite signs at the ends and theta'' of one sign between: Newton on
+// theta', to its rounding level om_noise.
+template <class Real>
+Real extremum_time(const Closed<Real>& f, Real lo, Real hi, Real om_lo, Real om_hi, Real om_noise) {
+    return newton_root<Real>(
+        [&f](Real u) {
+            const typename Closed<Real>::Point q = f.at(u);
+            return std::make_pair(q.omega, f.p * f.p * q.curvature);
+        },
+        lo, hi, om_lo, om_hi, om_noise);
+}
+
 // A bounce: the block leaves theta = 0 with theta' = omega (sigma omega > 0)
 // on a piece where the record is linear, a0 + c1 u.  With C = lin
 // (theta0 = 0), x = p u, y = x^2 and the even series
@@ -252,6 +265,49 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         return {a[k] + c1 * std::fma(-Real(k), dt, t), c1, std::max(Real(0), std::fma(Real(k + 1), dt, -t))};
     };
 
+    // The level that sigma theta, rising from s, must stay below for nothing
+    // to happen: the first alpha while it is to come, the fall angle.
+    auto upper_from = [&](Real s) -> Real {
+        return std::isnan(result.t_first_alpha) && s < alpha ? std::min(alpha, Real(options.overturn_angle))
+                                                             : Real(options.overturn_angle);
+    };
+    // An impact at u_impact on the closed form f of the piece from t, and the
+    // rebounds after it that land inside the same record piece.
+    auto impact_at = [&](const Closed<Real>& f, Real u_impact) {
+        const Real om_i = f.at(u_impact).omega;
+        const Real t_impact = t + u_impact;
+        note_theta(t_impact, 0.0);
+        const bool micro = rules::record_impact(result, t_impact, options, p);
+        rules::apply_impact(run, result, model, t_impact, om_i, micro, rest);
+        // The rebounds that land inside the same record piece (an impact
+        // cascade) go by the bounce form, one Newton solve each, while it can
+        // be shown that nothing else happens on the way: sigma theta'' < 0 at
+        // both ends (theta'' has one sign change at most, so sigma theta is
+        // concave: one rise, one fall, no dip), and the rise below the bound
+        // of a concave arc, so below the largest |theta| so far and below
+        // alpha when alpha has not been reached.  Otherwise the rest of the
+        // piece goes back to the piece analysis.
+        while (!run.resting && t < t_fin && t < dt * (k + 1)) {
+            const Rest piece = rest_of_piece();
+            const Real lin_b = piece.a0 - sigma * alpha;
+            const Real u_max = std::min(piece.u1, Real(0.1) * inv_p);
+            if (!(sigma * lin_b < 0)) break;
+            const Real u_land = Bounce<Real>{p, omega, lin_b, piece.c1}.landing(u_max);
+            if (std::isnan(u_land)) break;
+            const typename Closed<Real>::Point land =
+                Closed<Real>{p, 0, omega, lin_b, omega + piece.c1}.at(u_land);
+            const Real om_land = land.omega;
+            if (!(sigma * land.curvature < 0 && sigma * om_land < 0)) break;
+            // On the concave arc theta <= omega u and theta <= |omega_land| (u_land - u).
+            const Real w0 = std::fabs(omega), w1 = std::fabs(om_land);
+            if (!(w0 * w1 * u_land < max_theta * (w0 + w1))) break;
+            ++result.steps;
+            const Real t_land = t + u_land;
+            const bool micro_b = rules::record_impact(result, t_land, options, p);
+            rules::apply_impact(run, result, model, t_land, om_land, micro_b, rest);
+        }
+    };
+
     while (!done && rules::begin_pass(run, result, model, input, options, t_fin, note_theta, [](Real) {})) {
         const Real t_stop = t < t_fin ? t_fin : run.t_limit;
         bool rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
@@ -264,9 +320,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             if (t < t_fin) {
                 if (!(dt * k <= t && t < dt * (k + 1))) k = input.piece_index(t);
                 const Real sa = sigma * alpha;
-                const Real upper = std::isnan(result.t_first_alpha) && sigma * theta < alpha
-                                         ? std::min(alpha, Real(options.overturn_angle))
-                                         : options.overturn_angle;
+                const Real upper = upper_from(sigma * theta);
                 const std::size_t k0 = k;
                 Real peak = 0.0;
                 if (t == dt * k) {
@@ -277,10 +331,36 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                         const Real om1 = omega + p * C * s_dt + W * k1_dt;
                         const Real e1 = C * (1 + k1_dt) + W * inv_p * s_dt;  // theta''/p^2 at the end
                         const Real s1 = sigma * th1;
-                        // omega om1 > 0 and C e1 > 0: one sign at both ends,
-                        // of theta' and of theta'' (an underflow to 0 only
-                        // sends the piece to the full analysis).
-                        if (!(s1 > noise && s1 < upper && omega * om1 > 0.0 && C * e1 > 0.0)) break;
+                        // C e1 > 0: theta'' of one sign at both ends, so theta'
+                        // is monotone (an underflow to 0 only sends the piece
+                        // to the full analysis).
+                        if (!(s1 > noise && s1 < upper && C * e1 > 0.0)) break;
+                        if (!(omega * om1 > 0.0)) {
+                            // theta' changes sign once: one extremum of theta.
+                            // Its value is bounded by where the tangents at the
+                            // ends meet, v = s0 + w0 (s1 - s0 + w1 dt) / (w0 + w1)
+                            // (w0 = sigma theta'(0), w1 = -sigma theta'(dt)): from
+                            // above for a maximum of sigma theta (sigma theta''
+                            // < 0), from below for a minimum.  The piece stays
+                            // quiet when the bound keeps a maximum below the
+                            // first alpha and the fall angle, or a minimum above
+                            // the ground; a maximum that may be the largest
+                            // |theta| so far is located.  The bound's margin,
+                            // 1e-9 relative, is far above its rounding.
+                            const Real s0 = sigma * theta, w0 = sigma * omega, w1 = -sigma * om1;
+                            if (!(s0 > noise && omega * om1 < 0.0)) break;
+                            const Real v = s0 + w0 * ((s1 - s0 + w1 * dt) / (w0 + w1));
+                            if (sigma * C < 0.0) {
+                                if (!(v < upper * Real(1 - 1e-9))) break;
+                                if (!(v < std::max(peak, max_theta) * Real(1 - 1e-9))) {
+                                    const Closed<Real> f{p, theta, omega, C, W};
+                                    const Real u = extremum_time(f, Real(0), dt, omega, om1, f.omega_noise(dt, k1_dt));
+                                    peak = std::max(peak, sigma * f.at(u).theta);
+                                }
+                            } else if (!(v > 2 * noise)) {
+                                break;
+                            }
+                        }
                         ++k;
                         theta = th1;
                         omega = om1;
@@ -315,148 +395,133 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             const typename Closed<Real>::Point end = f.at(u1);
             const Real th1 = end.theta, om1 = end.omega;
             ++result.steps;
-            // Rounding levels of theta, theta' and theta''/p^2 on this piece.
-            const Real eps4 = 4 * std::numeric_limits<Real>::epsilon();
-            // cosh pu1 - 1, bounded above by y/2 + y^2/20 (y = (p u1)^2 <= 1): a
-            // rounding level needs no more.
-            const Real y1 = (p * u1) * (p * u1), k1 = y1 * (Real(0.5) + y1 * Real(0.05));
-            const Real e_noise = f.curvature_noise(u1, k1);
-            const Real th_noise = f.theta_noise(u1, k1);
-            const Real om_noise = f.omega_noise(u1, k1);
-
-            // Where theta'' changes sign with theta' keeping its sign at both
-            // ends, theta' may vanish twice: split where theta'' = 0.
-            Real u_split = u1;
-            const Real e0 = f.C, e1 = end.curvature;
-            if ((e0 < 0) != (e1 < 0) && e0 != 0.0 && e1 != 0.0 && (omega < 0) == (om1 < 0)) {
-                const Real ue = newton_root<Real>(
-                    [&](Real u) {
-                        const typename Closed<Real>::Point q = f.at(u);
-                        return std::make_pair(q.curvature, q.omega + c1);  // (theta + a - sigma alpha)' = theta' + c1
-                    },
-                    0.0, u1, e0, e1, e_noise);
-                const Real om_e = f.at(ue).omega;
-                if (ue > 0.0 && ue < u1 && (om_e < 0) != (omega < 0)) u_split = ue;
-            }
-
-            Real ua = 0.0, tha = theta, oma = omega;
-            while (!event) {
-                const Real ub = u_split;
-                const typename Closed<Real>::Point at_b = ub < u1 ? f.at(ub) : end;
-                const Real thb = at_b.theta, omb = at_b.omega;
-                auto sigma_theta = [&](Real level) {
-                    return [&f, sigma, level](Real u) {
-                        const typename Closed<Real>::Point q = f.at(u);
-                        return std::make_pair(sigma * q.theta - level, sigma * q.omega);
-                    };
+            // sigma theta - level and its derivative: Newton's function for the
+            // times theta reaches a level.
+            auto sigma_theta = [&f, sigma](Real level) {
+                return [&f, sigma, level](Real u) {
+                    const typename Closed<Real>::Point q = f.at(u);
+                    return std::make_pair(sigma * q.theta - level, sigma * q.omega);
                 };
-                // Extremum of theta inside the part (theta' changes sign, once).
-                Real u_ext = NAN, th_ext = NAN;
-                if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) {
-                    u_ext = newton_root<Real>(
+            };
+            // Where theta' and theta'' keep their signs, sigma theta is monotone
+            // from s0 >= 0 to s1, and two kinds of piece need none of the
+            // analysis below: those that end above noise and below the level
+            // that the first alpha or the fall would cross (nothing happens),
+            // and those that end below the ground (one impact, nothing before
+            // it; rose: the block has left the ground since the pass began,
+            // else it rests, which the analysis below decides).
+            const Real s0 = sigma * theta, s1 = sigma * th1;
+            const bool monotone = f.C * end.curvature > 0.0 && omega * om1 > 0.0 && s0 >= 0.0;
+            if (monotone && s1 > noise && s1 < upper_from(s0)) {
+                note_theta(te, th1);
+                rose = true;
+            } else if (monotone && rose && s1 < 0.0) {
+                const Real y1 = (p * u1) * (p * u1), k1 = y1 * (Real(0.5) + y1 * Real(0.05));
+                impact_at(f, newton_root<Real>(sigma_theta(0.0), 0.0, u1, s0, s1, f.theta_noise(u1, k1),
+                                               quadratic_root(s0, sigma * omega, sigma * p * p * f.C)));
+                event = true;
+            } else {
+                // Rounding levels of theta, theta' and theta''/p^2 on this piece.
+                const Real eps4 = 4 * std::numeric_limits<Real>::epsilon();
+                // cosh pu1 - 1, bounded above by y/2 + y^2/20 (y = (p u1)^2 <= 1): a
+                // rounding level needs no more.
+                const Real y1 = (p * u1) * (p * u1), k1 = y1 * (Real(0.5) + y1 * Real(0.05));
+                const Real e_noise = f.curvature_noise(u1, k1);
+                const Real th_noise = f.theta_noise(u1, k1);
+                const Real om_noise = f.omega_noise(u1, k1);
+
+                // Where theta'' changes sign with theta' keeping its sign at both
+                // ends, theta' may vanish twice: split where theta'' = 0.
+                Real u_split = u1;
+                const Real e0 = f.C, e1 = end.curvature;
+                if ((e0 < 0) != (e1 < 0) && e0 != 0.0 && e1 != 0.0 && (omega < 0) == (om1 < 0)) {
+                    const Real ue = newton_root<Real>(
                         [&](Real u) {
                             const typename Closed<Real>::Point q = f.at(u);
-                            return std::make_pair(q.omega, p * p * q.curvature);
+                            // (theta + a - sigma alpha)' = theta' + c1
+                            return std::make_pair(q.curvature, q.omega + c1);
                         },
-                        ua, ub, oma, omb, om_noise);
-                    th_ext = f.at(u_ext).theta;
+                        0.0, u1, e0, e1, e_noise);
+                    const Real om_e = f.at(ue).omega;
+                    if (ue > 0.0 && ue < u1 && (om_e < 0) != (omega < 0)) u_split = ue;
                 }
-                const bool has_ext = !std::isnan(u_ext);
-                // Terminal events: impact (sigma theta reaches 0), fall.
-                Real u_impact = INFINITY, u_fall = INFINITY;
-                // Next to an extremum theta is a parabola, nearly flat when the
-                // rebound is small (the end of an impact cascade): Newton starts
-                // from the parabola's root, u_ext -+ sqrt(2 |theta_ext / theta''_ext|).
-                auto beside_ext = [&](Real side) {
-                    const Real e = f.at(u_ext).curvature;
-                    return u_ext + side * std::sqrt(std::fabs(2 * th_ext / (p * p * e)));
-                };
-                auto beside_start = [&]() {
-                    const Real e = f.at(ua).curvature;
-                    return ua + quadratic_root(sigma * tha, sigma * oma, sigma * p * p * e);
-                };
-                if (has_ext && sigma * th_ext < 0.0)
-                    u_impact = newton_root<Real>(sigma_theta(0.0), ua, u_ext, sigma * tha, sigma * th_ext, th_noise,
-                                           beside_ext(-1.0));
-                else if (sigma * thb < 0.0)
-                    u_impact = has_ext ? newton_root<Real>(sigma_theta(0.0), u_ext, ub, sigma * th_ext, sigma * thb, th_noise,
-                                                     beside_ext(1.0))
-                                       : newton_root<Real>(sigma_theta(0.0), ua, ub, sigma * tha, sigma * thb, th_noise,
-                                                     beside_start());
-                if (sigma * thb >= options.overturn_angle)
-                    u_fall = newton_root<Real>(sigma_theta(options.overturn_angle), ua, ub,
-                                         sigma * tha - options.overturn_angle, sigma * thb - options.overturn_angle,
-                                         th_noise + eps4 * options.overturn_angle);
-                const Real u_cut = std::min({u_impact, u_fall, ub});
-                // First time |theta| = alpha.
-                if (std::isnan(result.t_first_alpha) && sigma * tha < alpha) {
-                    const Real th_cut = u_cut == ub ? thb : f.at(u_cut).theta;
-                    if (sigma * th_cut >= alpha)
-                        result.t_first_alpha =
-                            t + newton_root<Real>(sigma_theta(alpha), ua, u_cut, sigma * tha - alpha, sigma * th_cut - alpha,
-                                              th_noise + eps4 * alpha);
-                    else if (has_ext && u_ext < u_cut && sigma * th_ext >= alpha)
-                        result.t_first_alpha =
-                            t + newton_root<Real>(sigma_theta(alpha), ua, u_ext, sigma * tha - alpha, sigma * th_ext - alpha,
-                                              th_noise + eps4 * alpha);
-                }
-                if (has_ext && u_ext <= u_cut) note_theta(t + u_ext, th_ext);
-                if (sigma * thb > noise || (has_ext && u_ext <= u_cut && sigma * th_ext > noise)) rose = true;
 
-                if (u_fall <= u_cut && u_fall < INFINITY) {
-                    result.overturned = true;
-                    result.t_overturn = t + u_fall;
-                    result.overturned_during_input = result.t_overturn <= t_fin;
-                    note_theta(result.t_overturn, sigma * options.overturn_angle);
-                    done = event = true;
-                } else if (u_impact <= u_cut && u_impact < INFINITY && !rose) {
-                    // Within rounding of the ground: at rest to the piece's end.
-                    t = te;
-                    theta = omega = 0.0;
-                    run.resting = true;
-                    event = true;
-                } else if (u_impact <= u_cut && u_impact < INFINITY) {
-                    const Real om_i = f.at(u_impact).omega;
-                    const Real t_impact = t + u_impact;
-                    note_theta(t_impact, 0.0);
-                    const bool micro = rules::record_impact(result, t_impact, options, p);
-                    rules::apply_impact(run, result, model, t_impact, om_i, micro, rest);
-                    event = true;
-                    // The rebounds that land inside the same record piece (an
-                    // impact cascade) go by the bounce form, one Newton solve each,
-                    // while it can be shown that nothing else happens on the way:
-                    // sigma theta'' < 0 at both ends (theta'' has one sign change
-                    // at most, so sigma theta is concave: one rise, one fall, no
-                    // dip), and the rise below the bound of a concave arc, so below
-                    // the largest |theta| so far and below alpha when alpha has not
-                    // been reached.  Otherwise the piece
-                    // goes back to the analysis above.
-                    while (!run.resting && t < t_fin && t < dt * (k + 1)) {
-                        const Rest piece = rest_of_piece();
-                        const Real lin_b = piece.a0 - sigma * alpha;
-                        const Real u_max = std::min(piece.u1, Real(0.1) * inv_p);
-                        if (!(sigma * lin_b < 0)) break;
-                        const Real u_land = Bounce<Real>{p, omega, lin_b, piece.c1}.landing(u_max);
-                        if (std::isnan(u_land)) break;
-                        const typename Closed<Real>::Point land =
-                            Closed<Real>{p, 0, omega, lin_b, omega + piece.c1}.at(u_land);
-                        const Real om_land = land.omega;
-                        if (!(sigma * land.curvature < 0 && sigma * om_land < 0)) break;
-                        // On the concave arc theta <= omega u and theta <= |omega_land| (u_land - u).
-                        const Real w0 = std::fabs(omega), w1 = std::fabs(om_land);
-                        if (!(w0 * w1 * u_land < max_theta * (w0 + w1))) break;
-                        ++result.steps;
-                        const Real t_land = t + u_land;
-                        const bool micro_b = rules::record_impact(result, t_land, options, p);
-                        rules::apply_impact(run, result, model, t_land, om_land, micro_b, rest);
+                Real ua = 0.0, tha = theta, oma = omega;
+                while (!event) {
+                    const Real ub = u_split;
+                    const typename Closed<Real>::Point at_b = ub < u1 ? f.at(ub) : end;
+                    const Real thb = at_b.theta, omb = at_b.omega;
+                    // Extremum of theta inside the part (theta' changes sign, once).
+                    Real u_ext = NAN, th_ext = NAN;
+                    if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) {
+                        u_ext = extremum_time(f, ua, ub, oma, omb, om_noise);
+                        th_ext = f.at(u_ext).theta;
                     }
-                } else {
-                    note_theta(ub >= u1 ? te : t + ub, thb);
-                    if (ub >= u1) break;
-                    ua = ub;
-                    tha = thb;
-                    oma = omb;
-                    u_split = u1;
+                    const bool has_ext = !std::isnan(u_ext);
+                    // Terminal events: impact (sigma theta reaches 0), fall.
+                    Real u_impact = INFINITY, u_fall = INFINITY;
+                    // Next to an extremum theta is a parabola, nearly flat when the
+                    // rebound is small (the end of an impact cascade): Newton starts
+                    // from the parabola's root, u_ext -+ sqrt(2 |theta_ext / theta''_ext|).
+                    auto beside_ext = [&](Real side) {
+                        const Real e = f.at(u_ext).curvature;
+                        return u_ext + side * std::sqrt(std::fabs(2 * th_ext / (p * p * e)));
+                    };
+                    auto beside_start = [&]() {
+                        const Real e = f.at(ua).curvature;
+                        return ua + quadratic_root(sigma * tha, sigma * oma, sigma * p * p * e);
+                    };
+                    if (has_ext && sigma * th_ext < 0.0)
+                        u_impact = newton_root<Real>(sigma_theta(0.0), ua, u_ext, sigma * tha, sigma * th_ext, th_noise,
+                                                     beside_ext(-1.0));
+                    else if (sigma * thb < 0.0)
+                        u_impact = has_ext ? newton_root<Real>(sigma_theta(0.0), u_ext, ub, sigma * th_ext, sigma * thb,
+                                                               th_noise, beside_ext(1.0))
+                                           : newton_root<Real>(sigma_theta(0.0), ua, ub, sigma * tha, sigma * thb,
+                                                               th_noise, beside_start());
+                    if (sigma * thb >= options.overturn_angle)
+                        u_fall = newton_root<Real>(
+                            sigma_theta(options.overturn_angle), ua, ub, sigma * tha - options.overturn_angle,
+                            sigma * thb - options.overturn_angle, th_noise + eps4 * options.overturn_angle);
+                    const Real u_cut = std::min({u_impact, u_fall, ub});
+                    // First time |theta| = alpha.
+                    if (std::isnan(result.t_first_alpha) && sigma * tha < alpha) {
+                        const Real th_cut = u_cut == ub ? thb : f.at(u_cut).theta;
+                        if (sigma * th_cut >= alpha)
+                            result.t_first_alpha =
+                                t + newton_root<Real>(sigma_theta(alpha), ua, u_cut, sigma * tha - alpha,
+                                                      sigma * th_cut - alpha, th_noise + eps4 * alpha);
+                        else if (has_ext && u_ext < u_cut && sigma * th_ext >= alpha)
+                            result.t_first_alpha =
+                                t + newton_root<Real>(sigma_theta(alpha), ua, u_ext, sigma * tha - alpha,
+                                                      sigma * th_ext - alpha, th_noise + eps4 * alpha);
+                    }
+                    if (has_ext && u_ext <= u_cut) note_theta(t + u_ext, th_ext);
+                    if (sigma * thb > noise || (has_ext && u_ext <= u_cut && sigma * th_ext > noise)) rose = true;
+
+                    if (u_fall <= u_cut && u_fall < INFINITY) {
+                        result.overturned = true;
+                        result.t_overturn = t + u_fall;
+                        result.overturned_during_input = result.t_overturn <= t_fin;
+                        note_theta(result.t_overturn, sigma * options.overturn_angle);
+                        done = event = true;
+                    } else if (u_impact <= u_cut && u_impact < INFINITY && !rose) {
+                        // Within rounding of the ground: at rest to the piece's end.
+                        t = te;
+                        theta = omega = 0.0;
+                        run.resting = true;
+                        event = true;
+                    } else if (u_impact <= u_cut && u_impact < INFINITY) {
+                        impact_at(f, u_impact);
+                        event = true;
+                    } else {
+                        note_theta(ub >= u1 ? te : t + ub, thb);
+                        if (ub >= u1) break;
+                        ua = ub;
+                        tha = thb;
+                        oma = omb;
+                        u_split = u1;
+                    }
                 }
             }
             if (!event) {

@@ -6,10 +6,14 @@
 // (ExactStepper + the driver), written as increments on the state so that
 // its rounding is relative to theta and theta' rather than to alpha; what it
 // saves is the general path's machinery: virtual steps, interpolant calls
-// and bracketing root-finders.  Events are located by Newton's method on the
-// closed form (its derivative is known exactly), safeguarded by bisection;
-// rebounds that land inside the record piece they start in, by Newton on
-// theta(u)/u.
+// and bracketing root-finders.  A piece whose ends prove that nothing
+// happens inside (theta' and theta'' of one sign; or theta'' of one sign and
+// the one extremum of theta bounded, by the tangents at the ends, away from
+// the ground, from alpha and from the largest |theta| so far) costs a few
+// flops, and one that only falls through the ground, one Newton solve.
+// Events are located by Newton's method on the closed form (its derivative
+// is known exactly), safeguarded by bisection; rebounds that land inside the
+// record piece they start in, by Newton on theta(u)/u.
 //
 // One rule is stricter than the general path's: a piece on which theta''
 // changes sign is split where it vanishes, so that theta' is monotone on each
