@@ -334,3 +334,37 @@ TEST(RecordKernel, EventsHiddenInsideOneRecordPieceAreFound) {
         }
     }
 }
+
+TEST(RecordKernel, LiftsOffWhereItsOwnInterpolationExceedsTheThreshold) {
+    // Four samples of IT.NRC HGN 20161026_191806 (in g, samples 1969-1972 on
+    // its 5 ms grid) after silence: the input crosses alpha = 0.15 inside
+    // piece 1970, where 1970 dt rounds below the exact grid.  uplift_time
+    // puts the uplift where SampledInput::accel (rounded grid) exceeds alpha;
+    // the kernel's exact-grid interpolation put the input 1.9e-15 g below it
+    // there, the block started pressed into the ground, returned to it within
+    // rounding and rested to the piece's end: 1.6 ms of motion lost, theta at
+    // 9.86 s 15% low, and on the record a trajectory that collapsed where the
+    // true one survives.  Truth: from rest at the crossing of the exact-grid
+    // interpolation, theta = c1 (sinh pu - pu) / p on piece 1970, then the
+    // closed form on piece 1971, in long double.  Tolerance 1e-10 relative:
+    // theta grows as (t - tu)^3 from the uplift, whose time is rounded to
+    // ~1e-14 s (5e-12 relative at 6.6 ms).
+    const double dt = 0.005, alpha = 0.15, p = 5.0885170013790386;
+    std::vector<double> a(1969, 0.0);
+    for (double v : {0.1184160886850153, 0.13705965443425075, 0.15608442405708461, 0.17389284607543323}) a.push_back(v);
+    const SampledInput rec(a, dt, "uplift inside piece 1970");
+    const long double lp = p, c1 = (static_cast<long double>(a[1971]) - a[1970]) / dt,
+                      c2 = (static_cast<long double>(a[1972]) - a[1971]) / dt;
+    const long double tu = 1970 * static_cast<long double>(dt) + (alpha - static_cast<long double>(a[1970])) / c1;
+    const long double x = lp * (1971 * static_cast<long double>(dt) - tu);
+    const long double th1 = c1 * (std::sinh(x) - x) / lp, om1 = c1 * (std::cosh(x) - 1);
+    const long double C = th1 + a[1971] - alpha, W = om1 + c2, y = lp * dt;
+    const long double truth = th1 + om1 * dt + C * (std::cosh(y) - 1) + W * (std::sinh(y) - y) / lp;
+    for (bool kernel : {true, false}) {
+        SimulationOptions o = exact(kernel);
+        o.free_rocking = false;
+        const SimulationResult r = simulate(block(alpha, p, true), rec, o);
+        ASSERT_TRUE(r.uplifted);
+        EXPECT_NEAR(r.theta_at_tfin / static_cast<double>(truth), 1.0, 1e-10) << (kernel ? "record kernel" : "general path");
+    }
+}

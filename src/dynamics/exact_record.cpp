@@ -249,20 +249,32 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     auto note_theta = [&](Real when, Real value) {
         if (when <= t_fin) max_theta = std::max(max_theta, std::fabs(value));
     };
-    // The rest of record piece k from t (t < t_fin, k holding t): the record
-    // a0 + c1 u over 0 <= u <= u1.  The samples sit at k dt exactly; t and
-    // the piece's end are that grid rounded.  A whole piece (t = k dt as
-    // computed) is dt long, from a[k]; a part of one is measured from the
-    // exact grid, fma rounding (k + 1) dt - t once (the rounded end minus t
+    // The rest of record piece j from s (s < t_fin, j holding s): the record
+    // a0 + c1 u over 0 <= u <= u1.  The samples sit at j dt exactly; s and
+    // the piece's end are that grid rounded.  A whole piece (s = j dt as
+    // computed) is dt long, from a[j]; a part of one is measured from the
+    // exact grid, fma rounding (j + 1) dt - s once (the rounded end minus s
     // would carry the end's rounding, which c1 turns into an error
-    // ~ c1 ulp(t), far above theta's).
+    // ~ c1 ulp(s), far above theta's).  rest_of_piece(): piece k from t.
     struct Rest {
         Real a0, c1, u1;
     };
-    auto rest_of_piece = [&]() -> Rest {
-        const Real c1 = (a[k + 1] - a[k]) * inv_dt;
-        if (t == dt * k) return {Real(a[k]), c1, dt};
-        return {a[k] + c1 * std::fma(-Real(k), dt, t), c1, std::max(Real(0), std::fma(Real(k + 1), dt, -t))};
+    auto rest_of_piece_at = [&](std::size_t j, Real s) -> Rest {
+        const Real c1 = (a[j + 1] - a[j]) * inv_dt;
+        if (s == dt * j) return {Real(a[j]), c1, dt};
+        return {a[j] + c1 * std::fma(-Real(j), dt, s), c1, std::max(Real(0), std::fma(Real(j + 1), dt, -s))};
+    };
+    auto rest_of_piece = [&]() { return rest_of_piece_at(k, t); };
+    // A block just lifted from rest at t, where uplift_time made the input
+    // exceed the threshold as SampledInput::accel evaluates it, from the
+    // rounded grid: the exact grid above can put it up to ~ c1 ulp(t) lower,
+    // below the threshold, and the block would start pressed into the ground,
+    // return to it within rounding and rest to the piece's end, losing the
+    // motion there.  t moves on until this interpolation exceeds it too.
+    auto lift_on_own_input = [&]() {
+        t = move_until(static_cast<double>(t), static_cast<double>(t_fin),
+                       [&](double s) { return sigma * rest_of_piece_at(input.piece_index(s), s).a0 > alpha; });
+        k = input.piece_index(static_cast<double>(t));
     };
 
     // The level that sigma theta, rising from s, must stay below for nothing
@@ -309,6 +321,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     };
 
     while (!done && rules::begin_pass(run, result, model, input, options, t_fin, note_theta, [](Real) {})) {
+        if (theta == 0.0 && omega == 0.0 && t < t_fin) lift_on_own_input();
         const Real t_stop = t < t_fin ? t_fin : run.t_limit;
         bool rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
         bool event = false;

@@ -159,10 +159,8 @@ double SampledInput::first_above(double t, double t_end, double thr) const {
 }
 
 double uplift_time(const GroundInput& input, double t, double t_end, double thr) {
-    double tu = input.first_above(t, t_end, thr);
-    for (int k = 0; k < 64 && tu < t_end && !(std::fabs(input.accel(tu)) > thr); ++k)
-        tu = std::max(std::nextafter(tu, INFINITY), tu + 1e-15 * std::fmax(1.0, std::fabs(tu)) * std::ldexp(1.0, std::min(k, 40)));
-    return tu;
+    return move_until(input.first_above(t, t_end, thr), t_end,
+                      [&](double s) { return std::fabs(input.accel(s)) > thr; });
 }
 
 OneSinePulse::OneSinePulse(double ap_g, double wp, double threshold_g) : ap_(ap_g), wp_(wp) {

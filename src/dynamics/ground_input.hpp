@@ -5,6 +5,8 @@
 // forms of exactly these terms) and what the ODE solvers evaluate.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,6 +49,17 @@ public:
 // |a| > thr there, so that the block never leaves the ground with an
 // acceleration pushing it back (>= t_end: no uplift before t_end).
 double uplift_time(const GroundInput& input, double t, double t_end, double thr);
+
+// t moved forward until exceeds(t) holds, at most 64 tries, stopping at
+// t_end: one ulp, then steps doubling from 1e-15 max(1, |t|).  What makes a
+// crossing located on one evaluation of the input hold for another, whose
+// rounding differs (uplift_time, and the record kernel's own interpolation).
+template <class Exceeds>
+double move_until(double t, double t_end, Exceeds exceeds) {
+    for (int k = 0; k < 64 && t < t_end && !exceeds(t); ++k)
+        t = std::max(std::nextafter(t, INFINITY), t + 1e-15 * std::fmax(1.0, std::fabs(t)) * std::ldexp(1.0, std::min(k, 40)));
+    return t;
+}
 
 // A pulse train (amplitudes in PGA, durations in to) scaled to real units.
 class PulseInput : public GroundInput {
