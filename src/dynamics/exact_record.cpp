@@ -408,6 +408,9 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             const typename Closed<Real>::Point end = f.at(u1);
             const Real th1 = end.theta, om1 = end.omega;
             ++result.steps;
+            // cosh pu1 - 1, bounded above by y/2 + y^2/20 (y = (p u1)^2 <= 1):
+            // for rounding levels, which need no more.
+            const Real y1 = (p * u1) * (p * u1), k1 = y1 * (Real(0.5) + y1 * Real(0.05));
             // sigma theta - level and its derivative: Newton's function for the
             // times theta reaches a level.
             auto sigma_theta = [&f, sigma](Real level) {
@@ -429,16 +432,12 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 note_theta(te, th1);
                 rose = true;
             } else if (monotone && rose && s1 < 0.0) {
-                const Real y1 = (p * u1) * (p * u1), k1 = y1 * (Real(0.5) + y1 * Real(0.05));
                 impact_at(f, newton_root<Real>(sigma_theta(0.0), 0.0, u1, s0, s1, f.theta_noise(u1, k1),
                                                quadratic_root(s0, sigma * omega, sigma * p * p * f.C)));
                 event = true;
             } else {
                 // Rounding levels of theta, theta' and theta''/p^2 on this piece.
                 const Real eps4 = 4 * std::numeric_limits<Real>::epsilon();
-                // cosh pu1 - 1, bounded above by y/2 + y^2/20 (y = (p u1)^2 <= 1): a
-                // rounding level needs no more.
-                const Real y1 = (p * u1) * (p * u1), k1 = y1 * (Real(0.5) + y1 * Real(0.05));
                 const Real e_noise = f.curvature_noise(u1, k1);
                 const Real th_noise = f.theta_noise(u1, k1);
                 const Real om_noise = f.omega_noise(u1, k1);
