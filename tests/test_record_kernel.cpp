@@ -193,7 +193,7 @@ TEST(RecordKernel, ImpactCascadeUnderAConstantGroundFollowsItsClosedForm) {
     // The kernel writes the closed form as increments on the state (theta
     // grows from 0 by omega u and corrections), so each impact time is
     // solved to its own rounding: tolerance 2e-15 s on every time (times up
-    // to 0.24 s, whose ulp is 2.8e-17 s; measured below 4e-16 s).  The
+    // to 0.24 s, whose ulp is 2.8e-17 s; measured up to 5e-16 s).  The
     // general path evaluates C cosh pu + D sinh pu - lin, whose rounding is
     // eps |lin| ~ eps alpha at every impact: divided by the impact's speed it
     // is an error in time, eps alpha / omega_n, which the cascade adds up as

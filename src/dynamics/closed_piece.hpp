@@ -1,0 +1,290 @@
+// The record kernel's closed form on one piece where the record is linear
+// (exact_record.cpp): its series, its points, the roots it looks for and the
+// bounce form of a rebound.  Templated on the working precision: the kernel
+// runs in double, its twin in long double, and the tests check each piece
+// against the other precision (tests/test_closed_piece.cpp).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+namespace rocking::dynamics::closed_piece {
+
+// The even series of the closed form, in y = x^2:
+//   ch1(y) = (cosh x - 1) / x^2 = 1/2! + y/4! + y^2/6! + ...
+//   sh1(y) = (sinh x - x) / x^3 = 1/3! + y/5! + y^2/7! + ...
+// to y^8, whose first term left out is below 1e-21 relative for x <= 0.6
+// (every piece of the kernel: p dt <= max_step_p = 0.5 by default) and
+// below 1e-17 for x <= 1; beyond, from cosh and sinh (a few bits lost to
+// the cancellation of sinh x - x, on pieces no default option produces).
+// They carry cosh x - 1 = y ch1 and sinh x - x = x y sh1 without the
+// cancellation of the differences.
+template <class Real>
+void series(Real y, Real& ch1, Real& sh1) {
+    if (y > 1) {
+        const Real x = std::sqrt(y);
+        ch1 = (std::cosh(x) - 1) / y;
+        sh1 = (std::sinh(x) - x) / (x * y);
+        return;
+    }
+    // 1/n! as constants: the divisions are done once, at compile time.
+    // Shorter sums where the terms left out stay below 2e-20 relative: to
+    // y^3 below y = 4e-4 (x < 0.02: a record piece of a block with p dt ~
+    // 0.01, every rebound of a cascade), to y^5 below y = 0.01.
+    if (y < Real(4e-4)) {
+        ch1 = Real(1) / 2 + y * (Real(1) / 24 + y * (Real(1) / 720 + y * (Real(1) / 40320)));
+        sh1 = Real(1) / 6 + y * (Real(1) / 120 + y * (Real(1) / 5040 + y * (Real(1) / 362880)));
+        return;
+    }
+    if (y < Real(0.01)) {
+        ch1 = Real(1) / 2 +
+              y * (Real(1) / 24 + y * (Real(1) / 720 + y * (Real(1) / 40320 + y * (Real(1) / 3628800 +
+                                                                                   y * (Real(1) / 479001600)))));
+        sh1 = Real(1) / 6 +
+              y * (Real(1) / 120 + y * (Real(1) / 5040 + y * (Real(1) / 362880 + y * (Real(1) / 39916800 +
+                                                                                      y * (Real(1) / 6227020800.0L)))));
+        return;
+    }
+    ch1 = Real(1) / 2 +
+          y * (Real(1) / 24 +
+               y * (Real(1) / 720 +
+                    y * (Real(1) / 40320 +
+                         y * (Real(1) / 3628800 +
+                              y * (Real(1) / 479001600 +
+                                   y * (Real(1) / 87178291200.0L +
+                                        y * (Real(1) / 20922789888000.0L + y * (Real(1) / 6402373705728000.0L))))))));
+    sh1 = Real(1) / 6 +
+          y * (Real(1) / 120 +
+               y * (Real(1) / 5040 +
+                    y * (Real(1) / 362880 +
+                         y * (Real(1) / 39916800 +
+                              y * (Real(1) / 6227020800.0L +
+                                   y * (Real(1) / 1307674368000.0L +
+                                        y * (Real(1) / 355687428096000.0L + y * (Real(1) / 121645100408832000.0L))))))));
+}
+
+// The first root s > 0 of fa + fpa s + fpp s^2 / 2 (Taylor's polynomial of
+// f at a bracket's start: the root finders' first point), NaN when it has none.
+template <class Real>
+Real quadratic_root(Real fa, Real fpa, Real fpp) {
+    const Real disc = fpa * fpa - 2 * fa * fpp;
+    if (!(disc >= 0)) return NAN;
+    const Real q = fpa + std::copysign(std::sqrt(disc), fpa);  // no cancellation
+    const Real s1 = q != 0 ? -2 * fa / q : Real(NAN), s2 = fpp != 0 ? -q / fpp : Real(NAN);
+    Real best = NAN;
+    for (Real s : {s1, s2})
+        if (s > 0 && !(s >= best)) best = s;
+    return best;
+}
+
+// What a root is sought of on a piece's closed form: sigma theta - level (an
+// impact, the first alpha, the fall), theta' (an extremum), theta''/p^2 (where
+// theta'' changes sign).
+enum class Seek { level, extremum, inflection };
+
+// The linearised equation on corner sigma, over a piece where the record is
+// linear, a(t + u)/g = a0 + c1 u, from the state (theta0, omega0) at t:
+//   theta''(u) = p^2 (theta + a0 + c1 u - sigma alpha)   (eq. 3, corrected sign)
+//   theta(u)   = C cosh pu + D sinh pu - lin - c1 u,      lin = a0 - sigma alpha,
+//   C = theta0 + lin, D = (omega0 + c1) / p = W / p
+// (the same closed form as ExactStepper's, exact_stepper.cpp), written as
+// increments on the state, x = pu, y = x^2:
+//   theta(u)        = theta0 + omega0 u + C y ch1 + W u y sh1,
+//   theta'(u)       = omega0 + p C x (1 + y sh1) + W y ch1,
+//   theta''(u)/p^2  = C (1 + y ch1) + W u (1 + y sh1).
+// Each term is a correction of the state, so the rounding is relative to
+// theta and theta', not to alpha: the general form's C cosh - lin carries an
+// error eps alpha, which divided by theta' at an impact is an error in its
+// time (eps alpha / theta', 1e-13 s on a rebound of 1e-4 rad/s).
+// Eq. 3 differentiated gives each higher derivative from the point itself,
+//   theta''' = p^2 (theta' + c1),  theta'''' = p^2 theta''  (c1 = W - omega0),
+// which the root finder (solve) uses for a third-order step, for its error bound
+// and for the point at the root.
+template <class Real>
+struct Closed {
+    Real p, theta0, omega0, C, W;
+
+    struct Point {
+        Real theta, omega, curvature;  // curvature: theta''/p^2
+    };
+    Point at(Real u) const {
+        const Real x = p * u, y = x * x;
+        Real ch1, sh1;
+        series(y, ch1, sh1);
+        const Real k1 = y * ch1, s0 = 1 + y * sh1;  // cosh x - 1, sinh x / x
+        return {theta0 + omega0 * u + C * k1 + W * u * y * sh1, omega0 + p * C * x * s0 + W * k1,
+                C * (1 + k1) + W * u * s0};
+    }
+    // The point at u + d from the point q at u, by Taylor's polynomials in d
+    // with the derivatives above (theta to d^4, theta' to d^3, theta''/p^2 to
+    // d^2).  For |p d| <= 1e-6 the terms left out are below 1e-25 of the
+    // state's scale (|C|, |W| / p), under its rounding; beyond, the closed
+    // form itself.  (theta's terms in d^3 and d^4 are below double's
+    // rounding there, not below long double's: the kernel's twin needs them.)
+    Point near(const Point& q, Real u, Real d) const {
+        if (!(std::fabs(p * d) <= Real(1e-6))) return at(u + d);
+        const Real p2 = p * p, r = q.omega + (W - omega0);
+        const Real d2 = p2 * q.curvature, d3 = p2 * r, d4 = p2 * d2;
+        return {q.theta + d * (q.omega + d / 2 * (d2 + d / 3 * (d3 + d / 4 * d4))),
+                q.omega + d * (d2 + d / 2 * (d3 + d / 3 * d4)), q.curvature + d * (r + d / 2 * d2)};
+    }
+    // Rounding levels of theta, theta' and theta''/p^2 on [0, u1] (four
+    // ulps of the largest term; k1 = cosh pu1 - 1).
+    Real theta_noise(Real u1, Real k1) const {
+        return 4 * std::numeric_limits<Real>::epsilon() *
+               (std::fabs(theta0) + std::fabs(omega0) * u1 + (std::fabs(C) + std::fabs(W) * u1) * k1);
+    }
+    Real omega_noise(Real u1, Real k1) const {
+        return 4 * std::numeric_limits<Real>::epsilon() *
+               (std::fabs(omega0) + (p * std::fabs(C) * p * u1 + std::fabs(W)) * (1 + k1));
+    }
+    Real curvature_noise(Real u1, Real k1) const {
+        return 4 * std::numeric_limits<Real>::epsilon() * (std::fabs(C) + std::fabs(W) * u1) * (1 + k1);
+    }
+
+    // A root and the point there.
+    struct Found {
+        Real u;
+        Point q;
+    };
+    // The root of what is sought (sigma theta - level for Seek::level) on
+    // [lo, hi], given its values flo and fhi at the ends of opposite signs:
+    // Chebyshev's method from the false-position point (or from start, a
+    // better one a caller knows), each iterate kept inside the shrinking
+    // bracket (bisection otherwise).  With f and its derivatives f1, f2, f3
+    // at the iterate, the step s = (f / f1) (1 + f f2 / (2 f1^2)) leaves an
+    // error e' = (f2^2 / (2 f1^2) - f3 / (6 f1)) e^3 + O(e^4), e ~ s: the
+    // iteration stops when that bound (doubled for the derivatives' change
+    // over e, e taken as 1.25 |s|) is below eps/64 of the root, with no
+    // evaluation there (the margin keeps the errors of the test it replaced,
+    // one more evaluation to see the step vanish); or when f is down to its
+    // rounding level f_noise (after the step from there); or at a step below
+    // 2 ulps.  The point at the root is near() the last one evaluated.
+    // Conventions as the general path's locate(): fhi = 0 gives hi; flo = 0,
+    // or no sign change (rounding at a root just located), gives lo.
+    Found solve(Seek seek, Real sigma, Real level, Real lo, Real hi, Real flo, Real fhi, Real f_noise,
+                Real start = NAN) const {
+        if (fhi == 0.0) return {hi, at(hi)};
+        if (flo == 0.0 || (flo < 0) == (fhi < 0)) return {lo, at(lo)};
+        const Real flip = flo < 0 ? 1 : -1;  // orient so that f(a) < 0 < f(b)
+        const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, c1 = W - omega0;
+        Real a = lo, b = hi;
+        Real x = std::isnan(start) ? lo + (hi - lo) * (flo / (flo - fhi)) : start;
+        if (!(x >= a && x <= b)) x = 0.5 * (a + b);
+        for (int i = 0; i < 100; ++i) {
+            const Point q = at(x);
+            Real f, f1, f2, f3;
+            switch (seek) {
+                case Seek::level:
+                    f = sigma * q.theta - level, f1 = sigma * q.omega, f2 = sigma * p2 * q.curvature,
+                    f3 = sigma * p2 * (q.omega + c1);
+                    break;
+                case Seek::extremum:
+                    f = q.omega, f1 = p2 * q.curvature, f2 = p2 * (q.omega + c1), f3 = p2 * p2 * q.curvature;
+                    break;
+                default:
+                    f = q.curvature, f1 = q.omega + c1, f2 = p2 * q.curvature, f3 = p2 * (q.omega + c1);
+            }
+            if (flip * f < 0) a = x;
+            else b = x;
+            // Chebyshev's step: Newton's, corrected to third order by f2
+            // (one division; Halley's form would take two).
+            const Real inv1 = 1 / f1, newton = f * inv1, r2 = f2 * inv1, r3 = f3 * inv1;
+            const Real h = newton * r2 / 2;
+            const Real step = std::fabs(h) < Real(0.5) ? newton * (1 + h) : newton;
+            Real next = x - step;
+            if (std::fabs(f) <= f_noise) {
+                if (!(next >= a && next <= b)) next = x;
+                return {next, near(q, x, next - x)};
+            }
+            if (!(next > a && next < b)) {
+                x = 0.5 * (a + b);
+                continue;
+            }
+            const Real e = Real(1.25) * std::fabs(step);
+            const Real K = 2 * (r2 * r2 / 2 + std::fabs(r3) / 6);
+            if ((K * e * e <= Real(0.01) && K * e * e * e <= eps / 64 * std::fabs(next)) ||
+                std::fabs(next - x) <= 2 * eps * std::fabs(x) ||
+                b - a <= 2 * eps * std::fmax(std::fabs(a), std::fabs(b)))
+                return {next, near(q, x, next - x)};
+            x = next;
+        }
+        return {x, at(x)};
+    }
+    Found level(Real sigma, Real value, Real lo, Real hi, Real flo, Real fhi, Real f_noise,
+                Real start = NAN) const {
+        return solve(Seek::level, sigma, value, lo, hi, flo, fhi, f_noise, start);
+    }
+    // Where theta' vanishes inside [lo, hi], given theta' = om_lo and om_hi
+    // of opposite signs at the ends and theta'' of one sign between.
+    Found extremum(Real lo, Real hi, Real om_lo, Real om_hi, Real om_noise) const {
+        return solve(Seek::extremum, 1, 0, lo, hi, om_lo, om_hi, om_noise);
+    }
+    // Where theta'' vanishes inside [lo, hi], given theta''/p^2 = e_lo and
+    // e_hi of opposite signs at the ends.
+    Found inflection(Real lo, Real hi, Real e_lo, Real e_hi, Real e_noise) const {
+        return solve(Seek::inflection, 1, 0, lo, hi, e_lo, e_hi, e_noise);
+    }
+};
+
+// A bounce: the block leaves theta = 0 with theta' = omega (sigma omega > 0)
+// on a piece where the record is linear, a0 + c1 u.  With C = lin
+// (theta0 = 0), W = omega + c1, x = p u, y = x^2 and the even series
+//   ch1(y) = (cosh x - 1) / x^2 = 1/2 + y/24 + y^2/720 + ...
+//   sh1(y) = (sinh x - x) / x^3 = 1/6 + y/120 + y^2/5040 + ...
+// the closed form divided by u (its root at u = 0 taken out) is
+//   g(u) = theta(u) / u = omega + p lin x ch1 + W y sh1,
+//   g'(u) = p^2 lin (1 + y sh1 - ch1) + p x W (ch1 - sh1),
+// every term a correction to omega, and from the series in x of
+// (cosh x - 1)/x and (sinh x - x)/x,
+//   |g''(u)| <= p^2 (p |lin| x / 4 + |W| / 3) (1 + x^2 / 3).
+template <class Real>
+struct Bounce {
+    Real p, omega, lin, c1;
+
+    Closed<Real> closed() const { return {p, 0, omega, lin, omega + c1}; }
+    // The landing: the first root u > 0 of theta and the state there, by
+    // Newton on g from the root of g's series to u^4,
+    //   g ~ omega + A u (1 + beta u/u0 + delta (u/u0)^2 + gamma (u/u0)^3),
+    //   A = p^2 lin / 2, u0 = -omega / A, beta = W u0 / (3 lin),
+    //   delta = y0 / 12, gamma = beta y0 / 20 (y0 = (p u0)^2),
+    // to second order in the small beta, delta: u0 (1 + e),
+    //   e = -(beta + delta + gamma) + (2 beta + 3 delta)(beta + delta),
+    // an error of third order (one step on a cascade's short bounces; the
+    // root of the quadratic when beta or delta is not small).
+    // Newton's step s from u leaves an error g'' e^2 / (2 g'),
+    // e ~ s: the iteration stops when that bound (g'' bounded as above, e
+    // taken as 1.25 |s|) is below eps/32 of the root, or at a step below
+    // 4 ulps.  The state at the landing is near() the last point evaluated,
+    // theta = u g, theta' = g + u g', theta''/p^2 = lin (1 + y ch1) + W u (1 + y sh1).
+    // u = NaN when the iteration does not settle within 8 steps or leaves (0, u_max).
+    typename Closed<Real>::Found landing(Real u_max) const {
+        const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, W = omega + c1;
+        const typename Closed<Real>::Found none{NAN, {NAN, NAN, NAN}};
+        const Real inv_lin = 1 / lin, u0 = -2 * omega * inv_lin / p2;
+        const Real beta = W * u0 * inv_lin / 3, delta = p2 * u0 * u0 / 12;
+        Real u = u0 * (1 - (beta + delta + Real(0.6) * beta * delta) + (2 * beta + 3 * delta) * (beta + delta));
+        if (!(std::fabs(beta) + delta < Real(0.1))) u = quadratic_root(omega, p2 * lin / 2, p2 * W / 3);
+        for (int i = 0; i < 8; ++i) {
+            if (!(u > 0 && u < u_max)) return none;
+            const Real x = p * u, y = x * x;
+            Real ch1, sh1;
+            series(y, ch1, sh1);
+            const Real g = omega + p * lin * x * ch1 + W * y * sh1;
+            const Real dg = p2 * lin * (1 + y * sh1 - ch1) + p * x * W * (ch1 - sh1);
+            const Real next = u - g / dg;
+            const Real e = Real(1.25) * std::fabs(next - u), x_hi = p * (std::fmax(u, next) + e);
+            const Real M = p2 * (p * std::fabs(lin) * x_hi / 4 + std::fabs(W) / 3) * (1 + x_hi * x_hi / 3);
+            if ((M * e <= Real(0.2) * std::fabs(dg) && M * e * e <= eps / 32 * std::fabs(dg) * next) ||
+                std::fabs(next - u) <= 4 * eps * u) {
+                if (!(next > 0 && next < u_max)) return none;
+                const typename Closed<Real>::Point q{u * g, g + u * dg, lin * (1 + y * ch1) + W * u * (1 + y * sh1)};
+                return {next, closed().near(q, u, next - u)};
+            }
+            u = next;
+        }
+        return none;
+    }
+};
+
+}  // namespace rocking::dynamics::closed_piece

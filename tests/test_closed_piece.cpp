@@ -1,0 +1,225 @@
+// The record kernel's closed form on one piece (closed_piece.hpp), each part
+// in double against the same closed form in long double: the point moved by
+// Taylor's polynomial (near) against the closed form at the new time, the
+// root finder (solve: impacts, levels, extrema, inflections) against
+// bisection to the last bit of long double, and the bounce form's landing
+// against the long-double root of theta.  The tolerances are the double
+// evaluation's own rounding levels (Closed's *_noise: four ulps of the
+// largest term), so a shortcut that costs accuracy above rounding fails.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+
+#include "dynamics/closed_piece.hpp"
+
+using namespace rocking::dynamics::closed_piece;
+
+namespace {
+
+using Ld = long double;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// A piece drawn over the ranges the kernel meets: p from 0.5 to 20 rad/s,
+// |theta0| and |lin| up to 0.3 rad, |omega0| up to 1 rad/s, the record's
+// slope |c1| up to 50 g/s.
+struct Piece {
+    double p, theta0, omega0, lin, c1;
+    Closed<double> in_double() const { return {p, theta0, omega0, theta0 + lin, omega0 + c1}; }
+    // The same piece with C and W formed in long double.
+    Closed<Ld> in_long_double() const {
+        return {Ld(p), Ld(theta0), Ld(omega0), Ld(theta0) + Ld(lin), Ld(omega0) + Ld(c1)};
+    }
+};
+
+Piece draw(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const double p = 0.5 * std::pow(40.0, 0.5 * (unit(rng) + 1.0));
+    return {p, 0.3 * unit(rng), unit(rng), 0.3 * unit(rng), 50.0 * unit(rng)};
+}
+
+// cosh pu - 1 bounded above, as the kernel does for rounding levels.
+double k1_of(double p, double u) {
+    const double y = (p * u) * (p * u);
+    return y * (0.5 + y * 0.05);
+}
+
+// The root of f on [lo, hi] (f(lo), f(hi) of opposite signs) by bisection
+// to the last bit of long double.
+template <class F>
+Ld bisect(F f, Ld lo, Ld hi) {
+    const bool rising = f(lo) < 0;
+    for (int i = 0; i < 200; ++i) {
+        const Ld mid = (lo + hi) / 2;
+        if (mid == lo || mid == hi) break;
+        ((f(mid) < 0) == rising ? lo : hi) = mid;
+    }
+    return (lo + hi) / 2;
+}
+
+}  // namespace
+
+TEST(ClosedPiece, NearIsTheClosedFormWithinRounding) {
+    // near(q, u, d): the point at u + d from the point q at u by Taylor's
+    // polynomials, for |p d| up to 1e-6, where a term left out of theta' (its
+    // d^2 term is W (p d)^2 / 2, 5e-13 |W| at the bound) would show 500 times
+    // above the tolerance; beyond 1e-6 it is the closed form itself.
+    std::mt19937_64 rng(20261121);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst = 0;
+    for (int n = 0; n < 4000; ++n) {
+        const Piece piece = draw(rng);
+        const Closed<double> f = piece.in_double();
+        const Closed<Ld> g = piece.in_long_double();
+        const double u = 0.5 / piece.p * unit(rng);
+        for (double pd : {1e-9, -1e-8, 1e-7, -1e-6, 1e-6, 3e-6}) {
+            const double d = pd / piece.p;
+            const auto q = f.near(f.at(u), u, d);
+            const auto r = g.at(Ld(u) + Ld(d));
+            const double u1 = u + std::fabs(d), k1 = k1_of(piece.p, u1);
+            const double e_theta = std::fabs(q.theta - double(r.theta)) / f.theta_noise(u1, k1);
+            const double e_omega = std::fabs(q.omega - double(r.omega)) / f.omega_noise(u1, k1);
+            const double e_curv = std::fabs(q.curvature - double(r.curvature)) / f.curvature_noise(u1, k1);
+            EXPECT_LT(e_theta, 2.0) << "n " << n << ", p d " << pd;
+            EXPECT_LT(e_omega, 2.0) << "n " << n << ", p d " << pd;
+            EXPECT_LT(e_curv, 2.0) << "n " << n << ", p d " << pd;
+            worst = std::max({worst, e_theta, e_omega, e_curv});
+        }
+    }
+    std::printf("near(): largest error %.2f of the rounding level\n", worst);
+}
+
+TEST(ClosedPiece, RootsToTheRoundingOfTheirFunction) {
+    // solve() for each kind of root (sigma theta at a level: an impact, the
+    // first alpha, the fall; theta' = 0: an extremum; theta'' = 0), on the
+    // first sign change of a 64-point scan of a random piece, against
+    // bisection of the long-double closed form on the same bracket.  The
+    // double function is known to its rounding level N (f_noise), so its root
+    // to N / |f'| and a few ulps; the point returned at the root to its own
+    // rounding plus its slope times that.  The stopping rule that saves the
+    // last evaluation (an error bound below eps/64 of the root) must lose
+    // nothing measurable against this.
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int found[3] = {0, 0, 0};
+    double worst_u = 0, worst_om = 0;
+    for (int n = 0; n < 3000; ++n) {
+        const Piece piece = draw(rng);
+        const Closed<double> f = piece.in_double();
+        const Closed<Ld> g = piece.in_long_double();
+        const double u1 = 0.5 / piece.p, k1 = k1_of(piece.p, u1);
+        const double sigma = unit(rng) < 0.5 ? 1.0 : -1.0;
+        const double p2 = piece.p * piece.p, c1 = piece.c1;
+        // The level: theta's value at a random time (a crossing there).
+        const double level = sigma * double(g.at(Ld(u1 * unit(rng))).theta);
+        for (Seek seek : {Seek::level, Seek::extremum, Seek::inflection}) {
+            auto value = [&](const auto& q) {
+                return seek == Seek::level ? sigma * q.theta - level : seek == Seek::extremum ? q.omega : q.curvature;
+            };
+            auto slope = [&](const auto& q) {
+                return seek == Seek::level       ? sigma * q.omega
+                       : seek == Seek::extremum ? p2 * q.curvature
+                                                : q.omega + c1;
+            };
+            const double noise = seek == Seek::level      ? f.theta_noise(u1, k1) + 4 * kEps * std::fabs(level)
+                                 : seek == Seek::extremum ? f.omega_noise(u1, k1)
+                                                          : f.curvature_noise(u1, k1);
+            double lo = 0, f_lo = value(f.at(0.0)), hi = 0, f_hi = 0;
+            bool bracket = false;
+            for (int i = 1; i <= 64 && !bracket; ++i) {
+                hi = u1 * i / 64;
+                f_hi = value(f.at(hi));
+                if ((f_lo < 0) != (f_hi < 0) && f_lo != 0 && f_hi != 0) bracket = true;
+                else lo = hi, f_lo = f_hi;
+            }
+            if (!bracket) continue;
+            // The bracket's ends must straddle the long-double root too.
+            const Ld g_lo = value(g.at(Ld(lo))), g_hi = value(g.at(Ld(hi)));
+            if ((g_lo < 0) == (g_hi < 0)) continue;
+            ++found[static_cast<int>(seek)];
+            const auto root = f.solve(seek, sigma, seek == Seek::level ? level : 0.0, lo, hi, f_lo, f_hi, noise);
+            const Ld ref = bisect([&](Ld u) { return value(g.at(u)); }, Ld(lo), Ld(hi));
+            const auto at_ref = g.at(ref);
+            const double s = std::fabs(double(slope(at_ref)));
+            const double tol_u = 4 * kEps * std::fabs(double(ref)) + 2 * noise / s;
+            const double e_u = std::fabs(root.u - double(ref)) / tol_u;
+            EXPECT_LT(e_u, 1.0) << "n " << n << ", kind " << static_cast<int>(seek);
+            // theta' at the root: its rounding level (doubled: the double
+            // piece rounds its C and W once each, the long-double one forms
+            // them exactly) plus theta'' times the root's error (which makes
+            // most of it: measured up to 0.95 of the tolerance with a factor
+            // 1.01 on that term, hence 1.1).
+            const double du = std::fabs(root.u - double(ref));
+            const double e_om = std::fabs(root.q.omega - double(at_ref.omega)) /
+                                (4 * f.omega_noise(u1, k1) + p2 * std::fabs(double(at_ref.curvature)) * du * 1.1);
+            EXPECT_LT(e_om, 1.0) << "n " << n << ", kind " << static_cast<int>(seek);
+            worst_u = std::max(worst_u, e_u);
+            worst_om = std::max(worst_om, e_om);
+        }
+    }
+    std::printf("solve(): %d levels, %d extrema, %d inflections; largest errors %.2f (root), %.2f (theta') of "
+                "the tolerances\n",
+                found[0], found[1], found[2], worst_u, worst_om);
+    EXPECT_GT(found[0], 1000);
+    EXPECT_GT(found[1], 300);
+    EXPECT_GT(found[2], 100);
+}
+
+TEST(ClosedPiece, BounceLandsWhereTheClosedFormReturnsToTheGround) {
+    // A rebound leaving theta = 0 at omega on a piece a0 + c1 u (sigma omega
+    // > 0, sigma lin < 0): the landing, from the bounce form g = theta / u,
+    // against the long-double root of g by bisection, for bounces from
+    // p u = 1e-7 (the end of a cascade) to 0.09 (near the 0.1 / p the kernel
+    // allows), where the start from g's series is off by ~1e-4 relative and
+    // Newton needs more than one step.
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst = 0;
+    int landed = 0;
+    for (int n = 0; n < 4000; ++n) {
+        const double p = 0.5 * std::pow(40.0, unit(rng)), sigma = unit(rng) < 0.5 ? 1.0 : -1.0;
+        const double lin = -sigma * (0.01 + 0.3 * unit(rng));
+        const double x_target = std::pow(10.0, -7.0 + 5.95 * unit(rng));
+        const double omega = -p * lin * x_target / 2;  // the parabola's landing at u = x_target / p
+        const double c1 = 50.0 * (2 * unit(rng) - 1);
+        const Bounce<double> b{p, omega, lin, c1};
+        const double u_max = 0.1 / p;
+        const auto land = b.landing(u_max);
+        // theta / u in long double, the root at u = 0 taken out.
+        const Closed<Ld> g{Ld(p), 0, Ld(omega), Ld(lin), Ld(omega) + Ld(c1)};
+        auto over_u = [&](Ld u) { return g.at(u).theta / u; };
+        // The first sign change of theta / u on a geometric scan of (0, u_max).
+        Ld lo = Ld(x_target) / p * 1e-3L, hi = lo;
+        bool bracket = false;
+        while (hi < u_max && !bracket) {
+            lo = hi;
+            hi = std::min(Ld(u_max), hi * 1.05L);
+            bracket = (over_u(lo) < 0) != (over_u(hi) < 0);
+        }
+        if (!bracket) {
+            EXPECT_TRUE(std::isnan(land.u)) << "n " << n << ": no landing before u_max, yet one found";
+            continue;
+        }
+        ASSERT_FALSE(std::isnan(land.u)) << "n " << n << ": landing at p u ~ " << x_target << " not found";
+        ++landed;
+        const Ld ref = bisect(over_u, lo, hi);
+        const auto at_ref = g.at(ref);
+        const Closed<double> f = b.closed();
+        const double k1 = k1_of(p, double(ref));
+        // g's rounding, a few ulps of omega and its corrections, over |g'| ~ p^2 |lin| / 2.
+        const double s = std::fabs(double(at_ref.omega)) / double(ref);
+        const double tol_u = 4 * kEps * double(ref) + 8 * kEps * (std::fabs(omega) + std::fabs(c1) * double(ref)) / s;
+        const double e_u = std::fabs(land.u - double(ref)) / tol_u;
+        EXPECT_LT(e_u, 1.0) << "n " << n << ", p u " << x_target;
+        const double du = std::fabs(land.u - double(ref));
+        const double e_om = std::fabs(land.q.omega - double(at_ref.omega)) /
+                            (2 * f.omega_noise(double(ref), k1) + p * p * std::fabs(double(at_ref.curvature)) * du * 1.01);
+        EXPECT_LT(e_om, 1.0) << "n " << n << ", p u " << x_target;
+        worst = std::max({worst, e_u, e_om});
+    }
+    std::printf("landing(): %d bounces; largest error %.2f of the tolerance\n", landed, worst);
+    EXPECT_GT(landed, 3500);
+}
