@@ -174,14 +174,16 @@ int main(int argc, char** argv) {
         say("record: the exact solver is %.1f times faster than Dormand-Prince at rtol 1e-6 (target: 20)\n",
             dopri_1e6 / exact.seconds);
         // Like for like, two ways.  Dormand-Prince ends an impact cascade when
-        // the rebound is below its accuracy (10 atol alpha p); the exact solver
-        // resolves it to rounding level.  With Dormand-Prince's rest rule:
+        // the rebound is below its accuracy (rest_threshold: 10 atol alpha p);
+        // the exact solver resolves it to rounding level.  With Dormand-Prince's
+        // rest rule:
         SimulationOptions same_rest = with(SolverKind::exact, 0);
-        same_rest.rest_velocity = 10.0 * 1e-6;
+        same_rest.rest_velocity = rest_threshold(with(SolverKind::dopri5, 1e-6));
         const Timed exact_same_rest = timed(m, input, same_rest);
-        say("record: exact solver with Dormand-Prince's rest rule (rebound below 1e-5 alpha p rests): %.3e s per run, "
+        say("record: exact solver with Dormand-Prince's rest rule (rebound below %.0e alpha p rests): %.3e s per run, "
             "%d impacts; %.1f times faster than Dormand-Prince at rtol 1e-6\n",
-            exact_same_rest.seconds, exact_same_rest.result.impacts, dopri_1e6 / exact_same_rest.seconds);
+            same_rest.rest_velocity, exact_same_rest.seconds, exact_same_rest.result.impacts,
+            dopri_1e6 / exact_same_rest.seconds);
         // At equal accuracy: Dormand-Prince's best over rtol 1e-3..1e-12.
         say("record: at equal accuracy: Dormand-Prince's smallest error, %.1e alpha (rtol %.0e), costs %.3e s, "
             "%.0f times the exact solver's time, whose own error is %.1e alpha\n",

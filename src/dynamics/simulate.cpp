@@ -55,6 +55,11 @@ double locate(F f, double a, double b) {
 
 }  // namespace
 
+double rest_threshold(const SimulationOptions& options) {
+    return std::max(options.rest_velocity,
+                    options.solver.kind == SolverKind::exact ? 0.0 : 10.0 * options.solver.atol_alpha);
+}
+
 SimulationResult simulate(const Model& model, const GroundInput& input, const SimulationOptions& options) {
     if (record_kernel_applies(model, input, options))
         return simulate_record_kernel(model, static_cast<const SampledInput&>(input), options);
@@ -176,14 +181,11 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                 double th_i, om_i;
                 stepper->state_at(t_impact, th_i, om_i);
                 note_theta(t_impact, 0.0);
-                // The end of a cascade: a rebound slower than the rest velocity
-                // (or than the solver's own accuracy, 10 atol), or a second impact
-                // within 1e-6/p of the last (a bounce too small to resolve), leaves
-                // the block at rest; the input may lift it again at once.
+                // The end of a cascade: a rebound below the rest threshold, or a
+                // second impact within 1e-6/p of the last (a bounce too small to
+                // resolve), leaves the block at rest; the input may lift it again at once.
                 const bool micro = rules::record_impact(result, t_impact, options, p);
-                const double rest = std::max(options.rest_velocity,
-                                             options.solver.kind == SolverKind::exact ? 0.0 : 10.0 * options.solver.atol_alpha);
-                rules::apply_impact(run, result, model, t_impact, om_i, micro, rest);
+                rules::apply_impact(run, result, model, t_impact, om_i, micro, rest_threshold(options));
                 event = true;
             } else {
                 note_theta(tb, thb);

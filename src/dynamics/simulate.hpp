@@ -37,6 +37,11 @@ struct SimulationOptions {
     double initial_omega = 0.0;
 };
 
+// The rest rule a run applies after an impact, as a fraction of alpha p: a
+// rebound slower than rest_velocity, or, for the ODE solvers, than their own
+// accuracy (10 atol), leaves the block at rest.
+double rest_threshold(const SimulationOptions& options);
+
 struct Sample {
     double t, theta, omega;
 };
