@@ -15,8 +15,10 @@
 #include <random>
 
 #include "dynamics/closed_piece.hpp"
+#include "test_util.hpp"
 
 using namespace rocking::dynamics::closed_piece;
+using rocking::testing::bisect;
 
 namespace {
 
@@ -41,25 +43,6 @@ Piece draw(std::mt19937_64& rng) {
     return {p, 0.3 * unit(rng), unit(rng), 0.3 * unit(rng), 50.0 * unit(rng)};
 }
 
-// cosh pu - 1 bounded above, as the kernel does for rounding levels.
-double k1_of(double p, double u) {
-    const double y = (p * u) * (p * u);
-    return y * (0.5 + y * 0.05);
-}
-
-// The root of f on [lo, hi] (f(lo), f(hi) of opposite signs) by bisection
-// to the last bit of long double.
-template <class F>
-Ld bisect(F f, Ld lo, Ld hi) {
-    const bool rising = f(lo) < 0;
-    for (int i = 0; i < 200; ++i) {
-        const Ld mid = (lo + hi) / 2;
-        if (mid == lo || mid == hi) break;
-        ((f(mid) < 0) == rising ? lo : hi) = mid;
-    }
-    return (lo + hi) / 2;
-}
-
 }  // namespace
 
 TEST(ClosedPiece, NearIsTheClosedFormWithinRounding) {
@@ -79,7 +62,7 @@ TEST(ClosedPiece, NearIsTheClosedFormWithinRounding) {
             const double d = pd / piece.p;
             const auto q = f.near(f.at(u), u, d);
             const auto r = g.at(Ld(u) + Ld(d));
-            const double u1 = u + std::fabs(d), k1 = k1_of(piece.p, u1);
+            const double u1 = u + std::fabs(d), k1 = f.k1_bound(u1);
             const double e_theta = std::fabs(q.theta - double(r.theta)) / f.theta_noise(u1, k1);
             const double e_omega = std::fabs(q.omega - double(r.omega)) / f.omega_noise(u1, k1);
             const double e_curv = std::fabs(q.curvature - double(r.curvature)) / f.curvature_noise(u1, k1);
@@ -110,7 +93,7 @@ TEST(ClosedPiece, RootsToTheRoundingOfTheirFunction) {
         const Piece piece = draw(rng);
         const Closed<double> f = piece.in_double();
         const Closed<Ld> g = piece.in_long_double();
-        const double u1 = 0.5 / piece.p, k1 = k1_of(piece.p, u1);
+        const double u1 = 0.5 / piece.p, k1 = f.k1_bound(u1);
         const double sigma = unit(rng) < 0.5 ? 1.0 : -1.0;
         const double p2 = piece.p * piece.p, c1 = piece.c1;
         // The level: theta's value at a random time (a crossing there).
@@ -208,7 +191,7 @@ TEST(ClosedPiece, BounceLandsWhereTheClosedFormReturnsToTheGround) {
         const Ld ref = bisect(over_u, lo, hi);
         const auto at_ref = g.at(ref);
         const Closed<double> f = b.closed();
-        const double k1 = k1_of(p, double(ref));
+        const double k1 = f.k1_bound(double(ref));
         // g's rounding, a few ulps of omega and its corrections, over |g'| ~ p^2 |lin| / 2.
         const double s = std::fabs(double(at_ref.omega)) / double(ref);
         const double tol_u = 4 * kEps * double(ref) + 8 * kEps * (std::fabs(omega) + std::fabs(c1) * double(ref)) / s;

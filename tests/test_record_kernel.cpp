@@ -15,6 +15,7 @@
 #include "dynamics/exact_record.hpp"
 #include "dynamics/simulate.hpp"
 #include "records/record.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::dynamics;
@@ -260,18 +261,6 @@ struct ConstantGroundArc {
         const long double x = p * u;
         return omega0 * std::cosh(x) + p * (theta0 + a - alpha) * std::sinh(x);
     }
-    // The root of f on [lo, hi] (f(lo), f(hi) of opposite signs), by bisection to
-    // the last bit of long double.
-    template <class F>
-    static long double bisect(F f, long double lo, long double hi) {
-        const bool rising = f(lo) < 0;
-        for (int i = 0; i < 200 && lo < hi; ++i) {
-            const long double mid = (lo + hi) / 2;
-            if (mid == lo || mid == hi) break;
-            ((f(mid) < 0) == rising ? lo : hi) = mid;
-        }
-        return (lo + hi) / 2;
-    }
 };
 
 }  // namespace
@@ -293,10 +282,10 @@ TEST(RecordKernel, EventsHiddenInsideOneRecordPieceAreFound) {
             const double a = 3 * alpha, theta0 = 1e-6, omega0 = -2e-3;
             const ConstantGroundArc arc{p, alpha, a, theta0, omega0};
             ASSERT_GT(arc.theta(dt), 1e-5L);  // the piece's end is well above the ground
-            const long double u_turn = ConstantGroundArc::bisect([&](long double u) { return arc.omega(u); }, 0, dt);
+            const long double u_turn = rocking::testing::bisect([&](long double u) { return arc.omega(u); }, 0, dt);
             ASSERT_LT(arc.theta(u_turn), -1e-6L);  // the dip goes below it
             const long double u_impact =
-                ConstantGroundArc::bisect([&](long double u) { return arc.theta(u); }, 0, u_turn);
+                rocking::testing::bisect([&](long double u) { return arc.theta(u); }, 0, u_turn);
             SimulationOptions o = exact(kernel);
             o.initial_theta = theta0;
             o.initial_omega = omega0;
@@ -316,10 +305,10 @@ TEST(RecordKernel, EventsHiddenInsideOneRecordPieceAreFound) {
             const double a = -3.0, theta0 = alpha - 2e-5, omega0 = 0.03;
             const ConstantGroundArc arc{p, alpha, a, theta0, omega0};
             ASSERT_LT(arc.theta(dt), alpha - 1e-4L);
-            const long double u_turn = ConstantGroundArc::bisect([&](long double u) { return arc.omega(u); }, 0, dt);
+            const long double u_turn = rocking::testing::bisect([&](long double u) { return arc.omega(u); }, 0, dt);
             ASSERT_GT(arc.theta(u_turn), alpha + 1e-5L);
             const long double u_alpha =
-                ConstantGroundArc::bisect([&](long double u) { return arc.theta(u) - alpha; }, 0, u_turn);
+                rocking::testing::bisect([&](long double u) { return arc.theta(u) - alpha; }, 0, u_turn);
             SimulationOptions o = exact(kernel);
             o.initial_theta = theta0;
             o.initial_omega = omega0;

@@ -1,4 +1,5 @@
-// Helpers shared by the tests: scratch files and the message of an exception.
+// Helpers shared by the tests: scratch files, the message of an exception, and
+// bisection in long double (the reference root of the closed-form tests).
 #pragma once
 
 #include <filesystem>
@@ -24,6 +25,19 @@ inline std::string error_of(const std::function<void()>& f) {
         return e.what();
     }
     return "";
+}
+
+// The root of f on [lo, hi] (f(lo), f(hi) of opposite signs), by bisection to
+// the last bit of long double.
+template <class F>
+long double bisect(F f, long double lo, long double hi) {
+    const bool rising = f(lo) < 0;
+    for (int i = 0; i < 200 && lo < hi; ++i) {
+        const long double mid = (lo + hi) / 2;
+        if (mid == lo || mid == hi) break;
+        ((f(mid) < 0) == rising ? lo : hi) = mid;
+    }
+    return (lo + hi) / 2;
 }
 
 }  // namespace rocking::testing

@@ -107,13 +107,24 @@ struct Closed {
     struct Point {
         Real theta, omega, curvature;  // curvature: theta''/p^2
     };
+    Real c1() const { return W - omega0; }  // the record's slope
     Point at(Real u) const {
-        const Real x = p * u, y = x * x;
+        const Real y = (p * u) * (p * u);
         Real ch1, sh1;
         series(y, ch1, sh1);
-        const Real k1 = y * ch1, s0 = 1 + y * sh1;  // cosh x - 1, sinh x / x
+        return from_series(u, y, ch1, sh1);
+    }
+    // The point at u from the series already evaluated there (y = (p u)^2).
+    Point from_series(Real u, Real y, Real ch1, Real sh1) const {
+        const Real x = p * u, k1 = y * ch1, s0 = 1 + y * sh1;  // cosh x - 1, sinh x / x
         return {theta0 + omega0 * u + C * k1 + W * u * y * sh1, omega0 + p * C * x * s0 + W * k1,
                 C * (1 + k1) + W * u * s0};
+    }
+    // cosh pu - 1 bounded above by y/2 + y^2/20 (y = (p u)^2 <= 1): the k1
+    // of the rounding levels below, which need no more.
+    Real k1_bound(Real u) const {
+        const Real y = (p * u) * (p * u);
+        return y * (Real(0.5) + y * Real(0.05));
     }
     // The point at u + d from the point q at u, by Taylor's polynomials in d
     // with the derivatives above (theta to d^4, theta' to d^3, theta''/p^2 to
@@ -123,10 +134,15 @@ struct Closed {
     // rounding there, not below long double's: the kernel's twin needs them.)
     Point near(const Point& q, Real u, Real d) const {
         if (!(std::fabs(p * d) <= Real(1e-6))) return at(u + d);
-        const Real p2 = p * p, r = q.omega + (W - omega0);
+        const Real p2 = p * p, r = q.omega + c1();
         const Real d2 = p2 * q.curvature, d3 = p2 * r, d4 = p2 * d2;
         return {q.theta + d * (q.omega + d / 2 * (d2 + d / 3 * (d3 + d / 4 * d4))),
                 q.omega + d * (d2 + d / 2 * (d3 + d / 3 * d4)), q.curvature + d * (r + d / 2 * d2)};
+    }
+    // Where sigma theta's parabola at the point q (at u) reaches the ground:
+    // the first point of an impact's root finder, NaN when it does not.
+    Real parabola_root(Real sigma, Real u, const Point& q) const {
+        return u + quadratic_root(sigma * q.theta, sigma * q.omega, sigma * p * p * q.curvature);
     }
     // Rounding levels of theta, theta' and theta''/p^2 on [0, u1] (four
     // ulps of the largest term; k1 = cosh pu1 - 1).
@@ -167,7 +183,7 @@ struct Closed {
         if (fhi == 0.0) return {hi, at(hi)};
         if (flo == 0.0 || (flo < 0) == (fhi < 0)) return {lo, at(lo)};
         const Real flip = flo < 0 ? 1 : -1;  // orient so that f(a) < 0 < f(b)
-        const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, c1 = W - omega0;
+        const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, c1 = this->c1();
         Real a = lo, b = hi;
         Real x = std::isnan(start) ? lo + (hi - lo) * (flo / (flo - fhi)) : start;
         if (!(x >= a && x <= b)) x = 0.5 * (a + b);
@@ -255,8 +271,8 @@ struct Bounce {
     // Newton's step s from u leaves an error g'' e^2 / (2 g'),
     // e ~ s: the iteration stops when that bound (g'' bounded as above, e
     // taken as 1.25 |s|) is below eps/32 of the root, or at a step below
-    // 4 ulps.  The state at the landing is near() the last point evaluated,
-    // theta = u g, theta' = g + u g', theta''/p^2 = lin (1 + y ch1) + W u (1 + y sh1).
+    // 4 ulps.  The state at the landing is near() the last point evaluated
+    // (the closed form's, from the series already there).
     // u = NaN when the iteration does not settle within 8 steps or leaves (0, u_max).
     typename Closed<Real>::Found landing(Real u_max) const {
         const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, W = omega + c1;
@@ -278,8 +294,8 @@ struct Bounce {
             if ((M * e <= Real(0.2) * std::fabs(dg) && M * e * e <= eps / 32 * std::fabs(dg) * next) ||
                 std::fabs(next - u) <= 4 * eps * u) {
                 if (!(next > 0 && next < u_max)) return none;
-                const typename Closed<Real>::Point q{u * g, g + u * dg, lin * (1 + y * ch1) + W * u * (1 + y * sh1)};
-                return {next, closed().near(q, u, next - u)};
+                const Closed<Real> f = closed();
+                return {next, f.near(f.from_series(u, y, ch1, sh1), u, next - u)};
             }
             u = next;
         }

@@ -24,7 +24,6 @@ namespace {
 
 using closed_piece::Bounce;
 using closed_piece::Closed;
-using closed_piece::quadratic_root;
 using closed_piece::series;
 
 template <class Real>
@@ -215,9 +214,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             const typename Closed<Real>::Point end = f.at(u1);
             const Real th1 = end.theta, om1 = end.omega;
             ++result.steps;
-            // cosh pu1 - 1, bounded above by y/2 + y^2/20 (y = (p u1)^2 <= 1):
-            // for rounding levels, which need no more.
-            const Real y1 = (p * u1) * (p * u1), k1 = y1 * (Real(0.5) + y1 * Real(0.05));
+            const Real k1 = f.k1_bound(u1);  // for rounding levels
             // Where theta' and theta'' keep their signs, sigma theta is monotone
             // from s0 >= 0 to s1, and two kinds of piece need none of the
             // analysis below: those that end above noise and below the level
@@ -232,7 +229,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 rose = true;
             } else if (monotone && rose && s1 < 0.0) {
                 impact_at(f.level(sigma, 0, 0, u1, s0, s1, f.theta_noise(u1, k1),
-                                  quadratic_root(s0, sigma * omega, sigma * p * p * f.C)));
+                                  f.parabola_root(sigma, 0, {theta, omega, f.C})));
                 event = true;
             } else {
                 // Rounding levels of theta, theta' and theta''/p^2 on this piece.
@@ -280,8 +277,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                         hit = has_ext ? f.level(sigma, 0, u_ext, ub, sigma * th_ext, sigma * thb, th_noise,
                                                 beside_ext(1.0))
                                       : f.level(sigma, 0, ua, ub, sigma * tha, sigma * thb, th_noise,
-                                                ua + quadratic_root(sigma * tha, sigma * oma,
-                                                                    sigma * p * p * at_a.curvature));
+                                                f.parabola_root(sigma, ua, at_a));
                     if (sigma * thb >= options.overturn_angle)
                         fall = f.level(sigma, options.overturn_angle, ua, ub, sigma * tha - options.overturn_angle,
                                        sigma * thb - options.overturn_angle, th_noise + eps4 * options.overturn_angle);
