@@ -44,6 +44,23 @@ out=$(mktemp)
 "$rocking" simulate --one-sine --ap 0.45 --wp 6 --alpha 0.15 --p 2 --output "$out" --dt 0.1 >/dev/null
 check "simulate writes theta(t)"     "t,theta_over_alpha,omega_over_alpha_p" cat "$out"
 rm -f "$out"
+# simulate --record: a one-column record holding 0.2 g for 1 s (11 samples) drives
+# the block from rest as a step: theta/alpha = (a/alpha - 1)(cosh pt - 1) (eq. 3),
+# cosh 1 - 1 = 0.5430806348152437 at alpha = 0.1, p = 1; scaled to q = 3 (0.3 g),
+# twice that, 1.0861612696304874, past alpha.
+step=$(mktemp)
+for k in $(seq 11); do echo 0.2; done > "$step"
+check "simulate a step record"       "theta(t_fin)/alpha = 0.5430806348" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1
+check "simulate a scaled record"     "theta(t_fin)/alpha = 1.08616127" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 3
+check "scaled record collapses"      "COLLAPSE under final-rotation" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 3
+check "record's scale is stated"     "PGA 0.2 g, scaled to 0.3 g" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 3
+check "record json"                  '"theta_tfin_over_alpha": 0.54308063481524' "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --json
+check "--rd needs a case"            "--rd does not apply to --record" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --rd 0.9
+check "one input only"               "give exactly one input" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --case 2
+status "one input only exits 2"      2 "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --case 2
+check "missing record is named"      "no-such-file:0: cannot open the file" "$rocking" simulate --record no-such-file --alpha 0.1 --p 1
+status "missing record exits 1"      1 "$rocking" simulate --record no-such-file --alpha 0.1 --p 1
+rm -f "$step"
 # records: every file in the shared folder can be assessed (skipped without the folder).
 records="$(dirname "$0")/../../shared/records"
 if [ -d "$records" ]; then
@@ -51,6 +68,14 @@ if [ -d "$records" ]; then
         check "assess $(basename "$f")" "q from eq. 27" "$rocking" assess "$f" --alpha 0.15 --height 2
     done
     check "record info names to_11" "to_11" "$rocking" record info "$records/peer/RSN1158_KOCAELI_DZC180.AT2"
+    # The Norcia record under alpha = 0.2, p = 2 rad/s, Housner's restitution:
+    # the exact solver and GSL rk8pd at rtol 1e-12 agree on the peak rotation
+    # to 1e-11 alpha (bench/work_precision.cpp).
+    for solver in exact gsl-rk8pd; do
+        check "simulate Norcia ($solver)" "max |theta|/alpha during the input = 0.116311830" "$rocking" simulate \
+            --record "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.2 --p 2 --restitution housner \
+            --solver $solver --rtol 1e-12
+    done
     check "collapse json" '"found": true' "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15 --json
 else
     echo "skipped: record commands (no shared records folder at $records)"

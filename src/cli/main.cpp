@@ -48,7 +48,9 @@ const char* kUsage =
     "\n"
     "simulate: INPUT is --case I [--pulses N] or --train A:d,...  with --to T (s) or --x X, and the\n"
     "  amplitude as --pga G (in g), --q Q (PGA = Q alpha g) or --rd R (PGA = q_I(x) R alpha g);\n"
-    "  or --one-sine --ap A (in g) --wp W (rad/s).\n"
+    "  or --one-sine --ap A (in g) --wp W (rad/s);\n"
+    "  or --record FILE (as for record FILE, with --record-dt for --dt), piecewise linear between\n"
+    "  samples, as recorded or scaled to --pga G (in g) or --q Q (PGA = Q alpha g).\n"
     "  GEOMETRY is --alpha A with --p P (rad/s), --half-height h (m, the H of eq. 2) or --height H (m).\n"
     "  --model linearised|full (default linearised); --solver exact|dopri5|rkf78|bulirsch-stoer|gsl-rk8pd\n"
     "  (default exact for linearised, dopri5 for full); --rtol (default 1e-6);\n"
@@ -218,6 +220,18 @@ int cmd_response(int argc, char** argv) {
     return 0;
 }
 
+// A record file by content, or a plain-text one when --unit (and, for one
+// column, the sampling step under dt_flag) is given.
+records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag = "--dt") {
+    if (a.values.count("--unit") || a.values.count(dt_flag)) {
+        if (!a.values.count("--unit")) throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2)");
+        const std::string unit = a.values.at("--unit");
+        const double dt = a.values.count(dt_flag) ? number(dt_flag, a.values.at(dt_flag)) : 0.0;
+        return records::read_plain(path, unit, dt);
+    }
+    return records::read_any(path);
+}
+
 int cmd_simulate(int argc, char** argv) {
     using namespace rocking::dynamics;
     // --one-sine takes no value: handle it before the generic parser.
@@ -229,7 +243,7 @@ int cmd_simulate(int argc, char** argv) {
     const Args a = parse(static_cast<int>(args.size()), args.data(), 2,
                          {"--case", "--train", "--pulses", "--x", "--to", "--pga", "--q", "--rd", "--ap", "--wp",
                           "--alpha", "--p", "--half-height", "--height", "--model", "--solver", "--rtol", "--criterion",
-                          "--restitution", "--output", "--dt"});
+                          "--restitution", "--output", "--dt", "--record", "--unit", "--record-dt"});
     auto has = [&](const char* f) { return a.values.count(f) > 0; };
     auto num = [&](const char* f) { return number(f, a.values.at(f)); };
     if (!has("--alpha")) throw UsageError("--alpha is required");
@@ -266,8 +280,34 @@ int cmd_simulate(int argc, char** argv) {
         throw UsageError(std::string("--criterion: ") + e.what());
     }
     std::unique_ptr<GroundInput> input;
-    std::string amplitude_note;
-    if (one_sine) {
+    if (one_sine + has("--record") + (has("--case") || has("--train")) != 1)
+        throw UsageError("give exactly one input: --case or --train, --one-sine, or --record");
+    if (!has("--record") && (has("--unit") || has("--record-dt")))
+        throw UsageError("--unit and --record-dt go with --record");
+    if (has("--record")) {
+        for (const char* f : {"--rd", "--to", "--x", "--pulses", "--ap", "--wp"})
+            if (has(f)) throw UsageError(std::string(f) + " does not apply to --record");
+        if (has("--pga") && has("--q")) throw UsageError("give at most one of --pga and --q");
+        records::Record r = load_record(a.values.at("--record"), a, "--record-dt");
+        const double g0 = 9.81;  // as record info, collapse and assess
+        std::vector<double> g = r.in_g(g0);
+        const double peak = r.pga() / g0;
+        auto brief = [](double v) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.6g", v);
+            return std::string(text);
+        };
+        std::string name = r.name + " (" + std::to_string(g.size()) + " samples, dt = " + brief(r.dt) + " s, PGA " +
+                           brief(peak) + " g";
+        if (has("--pga") || has("--q")) {
+            const double pga = has("--pga") ? num("--pga") : num("--q") * alpha;
+            if (!(pga > 0)) throw UsageError("the PGA must be > 0");
+            if (!(peak > 0)) throw UsageError(a.values.at("--record") + ": the record is zero throughout and cannot be scaled");
+            for (double& v : g) v *= pga / peak;
+            name += ", scaled to " + brief(pga) + " g";
+        }
+        input = std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
+    } else if (one_sine) {
         if (!has("--ap") || !has("--wp")) throw UsageError("--one-sine needs --ap and --wp");
         try {
             input = std::make_unique<OneSinePulse>(num("--ap"), num("--wp"), model.uplift_threshold());
@@ -331,16 +371,6 @@ int cmd_simulate(int argc, char** argv) {
                     r.collapse(Criterion::overturning, alpha) ? "collapse" : "safe");
     }
     return 0;
-}
-
-records::Record load_record(const std::string& path, const Args& a) {
-    if (a.values.count("--unit") || a.values.count("--dt")) {
-        if (!a.values.count("--unit")) throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2)");
-        const std::string unit = a.values.at("--unit");
-        const double dt = a.values.count("--dt") ? number("--dt", a.values.at("--dt")) : 0.0;
-        return records::read_plain(path, unit, dt);
-    }
-    return records::read_any(path);
 }
 
 int cmd_record(int argc, char** argv) {
