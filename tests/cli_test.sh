@@ -55,6 +55,11 @@ check "simulate a scaled record"     "theta(t_fin)/alpha = 1.08616127" "$rocking
 check "scaled record collapses"      "COLLAPSE under final-rotation" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 3
 check "record's scale is stated"     "PGA 0.2 g, scaled to 0.3 g" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 3
 check "record json"                  '"theta_tfin_over_alpha": 0.54308063481524' "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --json
+# Scaled to q = 40 (4 g) the block falls within the input: 39 (cosh t - 1) = (pi/2)/alpha
+# at t = acosh(1 + 5 pi / 39) = 0.8698344155836817 s; theta(t_fin) is then not a number to print.
+check "fall time of a step"          "fell at t = 0.8698344156 s, before t_fin = 1 s" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 40
+check "fall time in json"            '"t_overturn": 0.86983441558368' "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 40 --json
+check "no theta(t_fin) after a fall" '"theta_tfin_over_alpha": null' "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 40 --json
 check "--rd needs a case"            "--rd does not apply to --record" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --rd 0.9
 check "one input only"               "give exactly one input" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --case 2
 status "one input only exits 2"      2 "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --case 2

@@ -349,9 +349,12 @@ int cmd_simulate(int argc, char** argv) {
                   << ", \"rtol\": " << harness::format_number(options.solver.rtol)
                   << ", \"criterion\": " << json_string(criterion_name(criterion)) << ", \"collapse\": " << b(collapse)
                   << ", \"t_fin\": " << harness::format_number(r.t_fin)
-                  << ", \"theta_tfin_over_alpha\": " << harness::format_number(r.theta_at_tfin / alpha)
+                  << ", \"theta_tfin_over_alpha\": "
+                  << (r.overturned_during_input ? "null" : harness::format_number(r.theta_at_tfin / alpha))
                   << ", \"max_theta_input_over_alpha\": " << harness::format_number(r.max_abs_theta_input / alpha)
                   << ", \"impacts\": " << r.impacts << ", \"overturned\": " << b(r.overturned)
+                  << ", \"overturned_during_input\": " << b(r.overturned_during_input)
+                  << ", \"t_overturn\": " << (std::isnan(r.t_overturn) ? "null" : harness::format_number(r.t_overturn))
                   << ", \"collapse_final_rotation\": " << b(r.collapse(Criterion::final_rotation, alpha))
                   << ", \"collapse_peak_rotation\": " << b(r.collapse(Criterion::peak_rotation, alpha))
                   << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
@@ -362,9 +365,19 @@ int cmd_simulate(int argc, char** argv) {
                                           : " (rtol " + harness::format_number(options.solver.rtol) + ")";
         std::printf("  model:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(), input->describe().c_str(),
                     solver_name(options.solver.kind).c_str(), tolerance.c_str());
-        std::printf("  theta(t_fin)/alpha = %.10g at t_fin = %g s; max |theta|/alpha during the input = %.10g\n",
-                    r.theta_at_tfin / alpha, r.t_fin, r.max_abs_theta_input / alpha);
-        std::printf("  impacts: %d; overturns (free rocking included): %s\n", r.impacts, r.overturned ? "yes" : "no");
+        // A block that fell during the input has no theta(t_fin) to print: it lies on the ground.
+        if (r.overturned_during_input)
+            std::printf("  fell at t = %.10g s, before t_fin = %g s: |theta| reached the fall angle, %.10g alpha\n",
+                        r.t_overturn, r.t_fin, options.overturn_angle / alpha);
+        else
+            std::printf("  theta(t_fin)/alpha = %.10g at t_fin = %g s; max |theta|/alpha during the input = %.10g\n",
+                        r.theta_at_tfin / alpha, r.t_fin, r.max_abs_theta_input / alpha);
+        const std::string when = !r.overturned ? ""
+                                 : std::isnan(r.t_overturn)
+                                     ? " (its energy after the input exceeds the barrier; the fall is not simulated)"
+                                     : " (at t = " + harness::format_number(r.t_overturn) + " s)";
+        std::printf("  impacts: %d; overturns (free rocking included): %s%s\n", r.impacts, r.overturned ? "yes" : "no",
+                    when.c_str());
         std::printf("  final-rotation: %s; peak-rotation: %s; overturning: %s\n",
                     r.collapse(Criterion::final_rotation, alpha) ? "collapse" : "safe",
                     r.collapse(Criterion::peak_rotation, alpha) ? "collapse" : "safe",

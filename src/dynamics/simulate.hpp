@@ -48,7 +48,7 @@ struct Sample {
 
 struct SimulationResult {
     double t_fin = 0;
-    double theta_at_tfin = 0, omega_at_tfin = 0;
+    double theta_at_tfin = 0, omega_at_tfin = 0;  // 0 when the block fell before t_fin (overturned_during_input)
     double max_abs_theta_input = 0;  // largest |theta| on [0, t_fin]
     double t_first_alpha = NAN;      // first time |theta| = alpha (any phase)
     bool uplifted = false;
