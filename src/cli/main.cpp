@@ -279,6 +279,8 @@ int cmd_simulate(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--criterion: ") + e.what());
     }
+    // The amplitude as --pga G (in g) or --q Q (PGA = Q alpha g).
+    auto pga_or_q = [&] { return has("--pga") ? num("--pga") : num("--q") * alpha; };
     std::unique_ptr<GroundInput> input;
     if (one_sine + has("--record") + (has("--case") || has("--train")) != 1)
         throw UsageError("give exactly one input: --case or --train, --one-sine, or --record");
@@ -289,9 +291,8 @@ int cmd_simulate(int argc, char** argv) {
             if (has(f)) throw UsageError(std::string(f) + " does not apply to --record");
         if (has("--pga") && has("--q")) throw UsageError("give at most one of --pga and --q");
         records::Record r = load_record(a.values.at("--record"), a, "--record-dt");
-        const double g0 = 9.81;  // as record info, collapse and assess
-        std::vector<double> g = r.in_g(g0);
-        const double peak = r.pga() / g0;
+        std::vector<double> g = r.in_g(kGravity);
+        const double peak = r.pga() / kGravity;
         auto brief = [](double v) {
             char text[32];
             std::snprintf(text, sizeof text, "%.6g", v);
@@ -300,7 +301,7 @@ int cmd_simulate(int argc, char** argv) {
         std::string name = r.name + " (" + std::to_string(g.size()) + " samples, dt = " + brief(r.dt) + " s, PGA " +
                            brief(peak) + " g";
         if (has("--pga") || has("--q")) {
-            const double pga = has("--pga") ? num("--pga") : num("--q") * alpha;
+            const double pga = pga_or_q();
             if (!(pga > 0)) throw UsageError("the PGA must be > 0");
             if (!(peak > 0)) throw UsageError(a.values.at("--record") + ": the record is zero throughout and cannot be scaled");
             for (double& v : g) v *= pga / peak;
@@ -322,10 +323,7 @@ int cmd_simulate(int argc, char** argv) {
         if (!(to > 0)) throw UsageError("--to/--x: must be > 0");
         const int amplitude = has("--pga") + has("--q") + has("--rd");
         if (amplitude != 1) throw UsageError("give exactly one of --pga, --q and --rd");
-        double pga;
-        if (has("--pga")) pga = num("--pga");
-        else if (has("--q")) pga = num("--q") * alpha;
-        else pga = num("--rd") * q_factor(train, model.block.p * to).q * alpha;
+        const double pga = has("--rd") ? num("--rd") * q_factor(train, model.block.p * to).q * alpha : pga_or_q();
         if (!(pga > 0)) throw UsageError("the PGA must be > 0");
         input = std::make_unique<PulseInput>(train, pga, to);
     }
@@ -403,7 +401,7 @@ int cmd_record(int argc, char** argv) {
     } else {
         std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,
                     r.duration());
-        std::printf("  PGA = %.4f m/s^2 (%.4f g), PGV = %.4f m/s, Amax = %.4f m/s\n", h.pga, h.pga / 9.81, h.pgv, h.amax);
+        std::printf("  PGA = %.4f m/s^2 (%.4f g), PGV = %.4f m/s, Amax = %.4f m/s\n", h.pga, h.pga / dynamics::kGravity, h.pgv, h.amax);
         static const char* what[] = {"largest-area pulse", "pulse holding the PGA", "sine of same PGA and area (eq. 29)",
                                      "constant of same PGA and area (eq. 30)", "pi PGV / PGA (eq. 31)",
                                      "Fourier peak, acceleration", "Fourier peak, velocity", "CWT max amplitude, acceleration",
@@ -442,7 +440,7 @@ int cmd_collapse(int argc, char** argv) {
     if (o.equation == Equation::full && o.solver.kind == SolverKind::exact)
         throw UsageError("the exact solver handles the linearised equation only");
     const records::Record r = load_record(path, a);
-    const SampledInput input(r.in_g(9.81), r.dt, r.name);
+    const SampledInput input(r.in_g(kGravity), r.dt, r.name);
     const records::CollapseResult c = records::smallest_collapse_p(input, alpha, o);
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
@@ -476,7 +474,7 @@ int cmd_assess(int argc, char** argv) {
     }
     const records::Record r = load_record(path, a);
     const records::HalfPeriods h = records::half_periods(r);
-    const double to5 = h.to[4], x = b.p * to5, q27 = q2_n6(x), q_record = h.pga / (alpha * 9.81);
+    const double to5 = h.to[4], x = b.p * to5, q27 = q2_n6(x), q_record = h.pga / (alpha * kGravity);
     const bool safe = q_record < q27;
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
@@ -487,7 +485,7 @@ int cmd_assess(int argc, char** argv) {
     } else {
         std::printf("%s: %s\n", r.name.c_str(), safe ? "PASSES (the record's q is below eq. 27's)" : "FAILS");
         std::printf("  block: alpha = %g, p = %.4f rad/s (eqs. 2, 4, half-height %.3f m)\n", alpha, b.p, b.R * std::cos(alpha));
-        std::printf("  record: PGA = %.4f g, to_5 = pi PGV/PGA = %.4f s; x = p to_5 = %.4f\n", h.pga / 9.81, to5, x);
+        std::printf("  record: PGA = %.4f g, to_5 = pi PGV/PGA = %.4f s; x = p to_5 = %.4f\n", h.pga / kGravity, to5, x);
         std::printf("  q from eq. 27 = %.4f; the record's q = PGA/(alpha g) = %.4f\n", q27, q_record);
     }
     return 0;
