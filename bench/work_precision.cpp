@@ -68,6 +68,14 @@ Timed timed(const Model& m, const GroundInput& in, const SimulationOptions& o) {
 // does not overturn, so the error measures the motion, not a yes/no outcome.
 double kAlpha = 0.2, kP = 2.0;
 
+// A block under a record: linearised, Housner's restitution.
+Model record_block(double p, double alpha) {
+    Model m;
+    m.block = Block::from_p(p, alpha);
+    m.restitution = housner_restitution(alpha);
+    return m;
+}
+
 SimulationOptions with(SolverKind k, double rtol) {
     SimulationOptions o;
     o.solver.kind = k;
@@ -137,9 +145,7 @@ int main(int argc, char** argv) {
     } else {
         const records::Record rec = records::read_esm(path);
         const SampledInput input(rec.in_g(), rec.dt, rec.name);
-        Model m;
-        m.block = Block::from_p(kP, kAlpha);
-        m.restitution = housner_restitution(kAlpha);
+        const Model m = record_block(kP, kAlpha);
         const Timed exact = timed(m, input, with(SolverKind::exact, 0));
         SimulationOptions general = with(SolverKind::exact, 0);
         general.solver.record_kernel = false;
@@ -208,9 +214,7 @@ int main(int argc, char** argv) {
             int at_target = 0, at_target_overturned = 0;
             for (double bp : {1.0, 1.5, 2.0, 3.0, 4.0})
                 for (double ba : {0.05, 0.1, 0.15, 0.2, 0.25}) {
-                    Model bm;
-                    bm.block = Block::from_p(bp, ba);
-                    bm.restitution = housner_restitution(ba);
+                    const Model bm = record_block(bp, ba);
                     const Timed e = timed(bm, input, with(SolverKind::exact, 0));
                     const Timed d = timed(bm, input, with(SolverKind::dopri5, 1e-6));
                     const double ratio = d.seconds / e.seconds;
