@@ -68,6 +68,15 @@ Timed timed(const Model& m, const GroundInput& in, const SimulationOptions& o) {
 // does not overturn, so the error measures the motion, not a yes/no outcome.
 double kAlpha = 0.2, kP = 2.0;
 
+// Smallest, median (upper middle) and largest of a non-empty list of ratios.
+struct Spread {
+    double min, median, max;
+};
+Spread spread(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return {v.front(), v[v.size() / 2], v.back()};
+}
+
 // A block under a record: linearised, Housner's restitution.
 Model record_block(double p, double alpha) {
     Model m;
@@ -228,11 +237,10 @@ int main(int argc, char** argv) {
                         at_target_overturned += e.result.overturned;
                     }
                 }
-            std::sort(block_ratio.begin(), block_ratio.end());
+            const Spread b = spread(block_ratio);
             say("record: 25 blocks (p 1-4 rad/s, alpha 0.05-0.25): ratio to dopri5 at rtol 1e-6 min %.1f, median %.1f, "
                 "max %.1f; %d at 20 or more, %d of which end by overturning (block_ratios.csv)\n",
-                block_ratio.front(), block_ratio[block_ratio.size() / 2], block_ratio.back(), at_target,
-                at_target_overturned);
+                b.min, b.median, b.max, at_target, at_target_overturned);
         }
         // Every record of the folder, same block: the ratio's spread.
         std::ofstream ratios(out + "/record_ratios.csv");
@@ -257,10 +265,10 @@ int main(int argc, char** argv) {
             }
         }
         if (!all.empty()) {
-            std::sort(all.begin(), all.end());
+            const Spread r = spread(all);
             say("records: exact solver against dopri5 at rtol 1e-6 on %zu records: ratio min %.1f, median %.1f, max %.1f "
                 "(record_ratios.csv)\n",
-                all.size(), all.front(), all[all.size() / 2], all.back());
+                all.size(), r.min, r.median, r.max);
         }
     }
     // The Table 1 pipeline: every record, the eleven half-periods and the
