@@ -95,12 +95,13 @@ TEST(RecordKernel, UpliftScanMatchesThePieceWalk) {
 
 TEST(RecordKernel, MatchesTheGeneralPath) {
     // Same closed form, same rules, two implementations: every outcome and
-    // count the same, theta within 1e-9 alpha, event times within 1e-7 s.
+    // count the same, theta within 1e-11 alpha, event times within 1e-7 s.
     // The general path locates events to 2^-49 of t (TOMS 748), the kernel to
     // theta's rounding (Newton); the motion's sensitivity then amplifies the
-    // difference.  Measured on this grid: theta ~1e-11 alpha, event times up
-    // to 1e-8 s inside impact cascades (rebounds of 1e-9 rad, whose times
-    // are ill-conditioned), 4e-9 s for the first alpha crossing and the fall.
+    // difference.  Measured on this grid: theta up to 9e-13 alpha, event
+    // times up to 3e-9 s inside impact cascades (rebounds of 1e-9 rad, whose
+    // times are ill-conditioned), 8e-10 s for the first alpha crossing and
+    // the fall.
     int rocked = 0, overturned = 0;
     for (double scale : {0.12, 0.25, 0.5})
         for (double alpha : {0.08, 0.15})
@@ -117,8 +118,8 @@ TEST(RecordKernel, MatchesTheGeneralPath) {
                     EXPECT_EQ(k.overturned_during_input, g.overturned_during_input) << what;
                     EXPECT_EQ(k.impacts, g.impacts) << what;
                     EXPECT_EQ(k.rests, g.rests) << what;
-                    EXPECT_NEAR(k.max_abs_theta_input / alpha, g.max_abs_theta_input / alpha, 1e-9) << what;
-                    EXPECT_NEAR(k.theta_at_tfin / alpha, g.theta_at_tfin / alpha, 1e-9) << what;
+                    EXPECT_NEAR(k.max_abs_theta_input / alpha, g.max_abs_theta_input / alpha, 1e-11) << what;
+                    EXPECT_NEAR(k.theta_at_tfin / alpha, g.theta_at_tfin / alpha, 1e-11) << what;
                     EXPECT_EQ(std::isnan(k.t_first_alpha), std::isnan(g.t_first_alpha)) << what;
                     if (!std::isnan(k.t_first_alpha)) {
                         EXPECT_NEAR(k.t_first_alpha, g.t_first_alpha, 1e-7) << what;
@@ -191,29 +192,30 @@ TEST(RecordKernel, ImpactCascadeUnderAConstantGroundFollowsItsClosedForm) {
     // long double.  Record steps from 0.001 s (every rebound of the first
     // half crosses sample times) to 0.25 s (the whole cascade in one piece).
     //
-    // The kernel writes the closed form as increments on the state (theta
-    // grows from 0 by omega u and corrections), so each impact time is
-    // solved to its own rounding: tolerance 2e-15 s on every time (times up
-    // to 0.24 s, whose ulp is 2.8e-17 s; measured up to 5e-16 s).  The
-    // general path evaluates C cosh pu + D sinh pu - lin, whose rounding is
-    // eps |lin| ~ eps alpha at every impact: divided by the impact's speed it
-    // is an error in time, eps alpha / omega_n, which the cascade adds up as
-    // the rebounds slow (measured up to 1e-8 s, 7 times that sum).  Its errors
-    // are held to 16 times the sum: a few ulps in each evaluation, and the
-    // speed each impact hands on carries the previous time's error.
+    // Both paths write the closed form as increments on the state (theta
+    // grows from 0 by omega u and corrections), so theta near an impact
+    // rounds relative to itself, not to alpha.  The kernel solves each impact
+    // time to its own rounding: tolerance 2e-15 s on every time (times up to
+    // 0.24 s, whose ulp is 2.8e-17 s; measured up to 5e-16 s).  The general
+    // path stops TOMS 748 at 2^-49 of t, and the speed each impact hands on
+    // carries the previous time's error: its errors are held to 4 times the
+    // sum of 2^-49 t_j over the impacts so far (measured up to 1.5 times,
+    // 7e-14 s).  (When the general path evaluated C cosh pu + D sinh pu - lin
+    // instead, which rounds at eps alpha, its errors were eps alpha / omega_n
+    // summed over the cascade: up to 1e-8 s.)
     const double alpha = 0.15, p = 2.0, a = 0.06, omega0 = 2e-3;
     const Model m = block(alpha, p, true);
     std::vector<long double> times;
-    std::vector<double> conditioning;  // sum over impacts so far of eps (|a| + alpha) / omega_n
+    std::vector<double> located;  // sum over impacts so far of 2^-49 t_n
     {
         long double t = 0, omega = omega0, previous = -1, sum = 0;
         int sigma = 1;
         for (;;) {
             const long double lin = a - sigma * static_cast<long double>(alpha);
             t += 2.0L / p * std::atanh(omega / (p * std::fabs(lin)));
-            sum += std::numeric_limits<double>::epsilon() * (std::fabs(a) + alpha) / omega;
             times.push_back(t);
-            conditioning.push_back(static_cast<double>(sum));
+            sum += std::ldexp(1.0L, -49) * t;
+            located.push_back(static_cast<double>(sum));
             if (previous >= 0 && t - previous < 1e-6L / p) break;  // the micro-bounce rule
             previous = t;
             omega *= m.restitution;
@@ -236,11 +238,11 @@ TEST(RecordKernel, ImpactCascadeUnderAConstantGroundFollowsItsClosedForm) {
             for (std::size_t i = 0; i < times.size(); ++i) {
                 const double error = std::fabs(r.impact_times[i] - static_cast<double>(times[i]));
                 worst = std::max(worst, error);
-                worst_share = std::max(worst_share, error / conditioning[i]);
+                worst_share = std::max(worst_share, error / located[i]);
                 if (kernel) EXPECT_LT(error, 2e-15) << what << ", impact " << i;
-                else EXPECT_LT(error, 16 * conditioning[i]) << what << ", impact " << i;
+                else EXPECT_LT(error, 4 * located[i]) << what << ", impact " << i;
             }
-            std::printf("%s: %zu impacts, largest impact-time error %.2e s (%.1f times the sum of eps alpha / omega_n)\n",
+            std::printf("%s: %zu impacts, largest impact-time error %.2e s (%.2f times the sum of 2^-49 t_n)\n",
                         what.c_str(), times.size(), worst, worst_share);
         }
 }
@@ -293,8 +295,10 @@ TEST(RecordKernel, EventsHiddenInsideOneRecordPieceAreFound) {
             const SimulationResult r = simulate(m, SampledInput(std::vector<double>(3, a), dt, "pushing ground"), o);
             ASSERT_GE(r.impacts, 1) << what;
             // Rounding of theta ~ eps 1e-6 rad, divided by theta' = 2e-3 rad/s:
-            // 1e-19 s; the general path's eps alpha / theta' is 1e-14 s.
-            EXPECT_NEAR(r.impact_times[0], static_cast<double>(u_impact), kernel ? 1e-17 : 1e-13) << what;
+            // 1e-19 s (both paths write the closed form as increments on the
+            // state; the general path's C cosh pu + D sinh pu - lin, which
+            // rounded at eps alpha, was held to 1e-13 s here).
+            EXPECT_NEAR(r.impact_times[0], static_cast<double>(u_impact), 1e-17) << what;
         }
         {
             // A peak: the block rises at 0.03 rad/s from alpha - 2e-5 on a ground
@@ -316,10 +320,10 @@ TEST(RecordKernel, EventsHiddenInsideOneRecordPieceAreFound) {
             const SimulationResult r = simulate(m, SampledInput(std::vector<double>(3, a), dt, "pulling ground"), o);
             // Rounding of theta ~ eps alpha, divided by theta' ~ 0.02 rad/s at
             // the crossing: ~1e-15 s.  The largest |theta| to its rounding: a
-            // few ulps of 0.1 for the kernel; eps |a - alpha| (7e-16 rad) for
-            // the general path's C cosh pu + D sinh pu - lin.
+            // few ulps of 0.1 (the general path's C cosh pu + D sinh pu - lin
+            // rounded at eps |a - alpha|, 7e-16 rad, and was held to 2e-15).
             EXPECT_NEAR(r.t_first_alpha, static_cast<double>(u_alpha), 1e-14) << what;
-            EXPECT_NEAR(r.max_abs_theta_input, static_cast<double>(arc.theta(u_turn)), kernel ? 4e-17 : 2e-15) << what;
+            EXPECT_NEAR(r.max_abs_theta_input, static_cast<double>(arc.theta(u_turn)), 4e-17) << what;
         }
     }
 }

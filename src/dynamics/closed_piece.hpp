@@ -88,8 +88,9 @@ enum class Seek { level, extremum, inflection };
 //   theta''(u) = p^2 (theta + a0 + c1 u - sigma alpha)   (eq. 3, corrected sign)
 //   theta(u)   = C cosh pu + D sinh pu - lin - c1 u,      lin = a0 - sigma alpha,
 //   C = theta0 + lin, D = (omega0 + c1) / p = W / p
-// (the same closed form as ExactStepper's, exact_stepper.cpp), written as
-// increments on the state, x = pu, y = x^2:
+// (the same closed form as ExactStepper's, exact_stepper.cpp, which
+// evaluates it through from_series below), written as increments on the
+// state, x = pu, y = x^2:
 //   theta(u)        = theta0 + omega0 u + C y ch1 + W u y sh1,
 //   theta'(u)       = omega0 + p C x (1 + y sh1) + W y ch1,
 //   theta''(u)/p^2  = C (1 + y ch1) + W u (1 + y sh1).

@@ -3,10 +3,10 @@
 // case the paper's records need (linearised equation, sampled input, no
 // theta(t) kept).  Same model, same rules (uplift, rest, impact cascade,
 // criteria, free rocking) and the same closed form as the general path
-// (ExactStepper + the driver), written as increments on the state so that
-// its rounding is relative to theta and theta' rather than to alpha; what it
-// saves is the general path's machinery: virtual steps, interpolant calls
-// and bracketing root-finders.  A piece whose ends prove that nothing
+// (ExactStepper + the driver), both written as increments on the state so
+// that the rounding is relative to theta and theta' rather than to alpha;
+// what it saves is the general path's machinery: virtual steps, interpolant
+// calls and bracketing root-finders.  A piece whose ends prove that nothing
 // happens inside (theta' and theta'' of one sign; or theta'' of one sign and
 // the one extremum of theta bounded, by the tangents at the ends, away from
 // the ground, from alpha and from the largest |theta| so far) costs a few
