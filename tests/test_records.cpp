@@ -65,6 +65,10 @@ TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
         {"peer_npts.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nDT= .01 SEC\n0.1 0.2\n", ":4: expected 'NPTS= n, DT= dt SEC'"},
         {"peer_count.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 3, DT= .01 SEC\n0.1 0.2\n", ":4: NPTS says 3 samples, the file has 2"},
         {"peer_sample.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 x\n", ":5: sample 'x' is not a number"},
+        {"peer_range.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 1e400\n",
+         ":5: sample '1e400' is out of range for a double"},
+        {"neither.txt", "0 0.1\n0.01 0.2\n0.02 0.3\n0.03 0.1\n", ":1: neither ESM ASCII"},
+        {"short.txt", "0.1\n", ":1: neither ESM ASCII"},
     };
     for (const Case& c : cases) {
         const std::string path = write_file(c.name, c.text);
@@ -79,10 +83,15 @@ TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
     EXPECT_EQ(r.accel.size(), 3u);
     EXPECT_NEAR(r.dt, 0.01, 1e-15);
     EXPECT_NEAR(r.accel[1], 0.02, 1e-15);
-    const std::string one = write_file("one.txt", "0.1\n0.2,\n");
-    EXPECT_NE(error_of([&] { read_plain(one, "g", 0.01); }).find(""), std::string::npos);
+    const std::string one = write_file("one.txt", "0.1\n0.2,\n");  // a trailing comma (CSV) is a separator
+    EXPECT_EQ(error_of([&] { read_plain(one, "g", 0.01); }), "");
+    const Record r1 = read_plain(one, "g", 0.01);
+    ASSERT_EQ(r1.accel.size(), 2u);
+    EXPECT_DOUBLE_EQ(r1.accel[1], 0.2 * 9.81);
     const std::string bad = write_file("bad.txt", "0.1\nzz\n");
     EXPECT_NE(error_of([&] { read_plain(bad, "g", 0.01); }).find(":2: 'zz' is not a number"), std::string::npos);
+    const std::string huge = write_file("huge.txt", "0.1\n-1e400\n");
+    EXPECT_NE(error_of([&] { read_plain(huge, "g", 0.01); }).find(":2: '-1e400' is out of range"), std::string::npos);
 }
 
 TEST(Measures, CosineHasEveryHalfPeriodAtItsHalfPeriod) {

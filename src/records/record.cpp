@@ -37,6 +37,16 @@ bool parse_number(const std::string& token, double& value) {
     return end == token.c_str() + token.size() && errno != ERANGE && std::isfinite(value);
 }
 
+// What is wrong with a token parse_number() refused: a number a double
+// cannot hold (1e400, or "inf" spelled out) is out of range, anything else
+// is not a number.
+std::string refused(const std::string& token) {
+    char* end = nullptr;
+    const double v = std::strtod(token.c_str(), &end);
+    const bool whole = !token.empty() && end == token.c_str() + token.size();
+    return "'" + token + (whole && !std::isnan(v) ? "' is out of range for a double" : "' is not a number");
+}
+
 std::ifstream open(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw RecordError(path, 0, "cannot open the file");
@@ -76,7 +86,7 @@ Record read_esm(const std::string& path) {
         }
         if (t.empty()) continue;
         double v;
-        if (!parse_number(t, v)) throw RecordError(path, number, "sample '" + t + "' is not a number");
+        if (!parse_number(t, v)) throw RecordError(path, number, "sample " + refused(t));
         r.accel.push_back(v);
     }
     if (r.header.empty() && r.accel.empty()) throw RecordError(path, 0, "empty file");
@@ -155,7 +165,7 @@ Record read_peer(const std::string& path) {
         std::string token;
         while (ss >> token) {
             double v;
-            if (!parse_number(token, v)) throw RecordError(path, number, "sample '" + token + "' is not a number");
+            if (!parse_number(token, v)) throw RecordError(path, number, "sample " + refused(token));
             r.accel.push_back(v * 9.81);  // g -> m/s^2 (NGA files use g = 9.81 m/s^2)
         }
     }
@@ -198,7 +208,7 @@ Record read_plain(const std::string& path, const std::string& unit, double dt) {
         std::vector<double> values;  // each token parsed once: [time,] acceleration
         for (const auto& tok : tokens) {
             double v;
-            if (!parse_number(tok, v)) throw RecordError(path, number, "'" + tok + "' is not a number");
+            if (!parse_number(tok, v)) throw RecordError(path, number, refused(tok));
             values.push_back(v);
         }
         if (dt == 0) {
@@ -222,9 +232,16 @@ Record read_plain(const std::string& path, const std::string& unit, double dt) {
 
 Record read_any(const std::string& path) {
     std::ifstream in = open(path);
-    std::string first;
-    std::getline(in, first);
+    std::string first, line, third;
+    if (!std::getline(in, first)) return read_peer(path);  // empty: read_peer says so
     if (first.find(':') != std::string::npos) return read_esm(path);
+    for (int k = 2; k <= 3 && std::getline(in, line); ++k)
+        if (k == 3) third = line;
+    std::transform(third.begin(), third.end(), third.begin(), ::toupper);
+    if (third.find("UNITS OF G") == std::string::npos)
+        throw RecordError(path, 1,
+                          "neither ESM ASCII (its header lines are 'KEY: value') nor PEER AT2 ('UNITS OF G' on "
+                          "line 3); plain one- or two-column text is read with its unit (rocking: --unit)");
     return read_peer(path);
 }
 
