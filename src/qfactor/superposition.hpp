@@ -48,9 +48,13 @@ struct ResponseState {
 };
 
 // (S1) and its derivative at tau = t/to for a given q.  After t_fin the
-// input is zero (free rocking, still linearised and without impact).  The
-// response of an unstable equation is conditioned by e^{x tau}: its absolute
-// error is about 1e-16 q e^{x tau}.
+// input is zero (free rocking, still linearised and without impact).  Each
+// is a sum of terms dF_j f(x (tau - tau_j)), accurate to a few eps of the
+// sum of their absolute values (its condition): for phi, with cosh u - 1
+// taken without cancellation, of order 1 where x is small (q ~ 1/x^2 against
+// cosh u - 1 ~ x^2) and growing like e^{x tau}, the instability's, where x
+// is large (test: ResponsePhiIsAccurateToTheConditionOfItsSum); for ddphi,
+// about q e^{x tau}.
 ResponseState response(const PulseTrain& train, double x, double q, double tau);
 
 // The lowest phi and phi' from the end of the first pulse to t_fin, and the
