@@ -47,6 +47,12 @@ std::string refused(const std::string& token) {
     return "'" + token + (whole && !std::isnan(v) ? "' is out of range for a double" : "' is not a number");
 }
 
+// PEER AT2's third header line names its unit: "... UNITS OF G".
+bool peer_units_line(std::string line) {
+    std::transform(line.begin(), line.end(), line.begin(), ::toupper);
+    return line.find("UNITS OF G") != std::string::npos;
+}
+
 std::ifstream open(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw RecordError(path, 0, "cannot open the file");
@@ -135,12 +141,8 @@ Record read_peer(const std::string& path) {
         ++number;
         if (number <= 3) {
             r.header["LINE" + std::to_string(number)] = trim(line);
-            if (number == 3) {
-                std::string upper = line;
-                std::transform(upper.begin(), upper.end(), upper.begin(), ::toupper);
-                if (upper.find("UNITS OF G") == std::string::npos)
-                    throw RecordError(path, 3, "expected 'UNITS OF G' on the third header line");
-            }
+            if (number == 3 && !peer_units_line(line))
+                throw RecordError(path, 3, "expected 'UNITS OF G' on the third header line");
             continue;
         }
         if (number == 4) {
@@ -232,13 +234,12 @@ Record read_plain(const std::string& path, const std::string& unit, double dt) {
 
 Record read_any(const std::string& path) {
     std::ifstream in = open(path);
-    std::string first, line, third;
+    std::string first, second, third;
     if (!std::getline(in, first)) return read_peer(path);  // empty: read_peer says so
     if (first.find(':') != std::string::npos) return read_esm(path);
-    for (int k = 2; k <= 3 && std::getline(in, line); ++k)
-        if (k == 3) third = line;
-    std::transform(third.begin(), third.end(), third.begin(), ::toupper);
-    if (third.find("UNITS OF G") == std::string::npos)
+    std::getline(in, second);
+    std::getline(in, third);
+    if (!peer_units_line(third))
         throw RecordError(path, 1,
                           "neither ESM ASCII (its header lines are 'KEY: value') nor PEER AT2 ('UNITS OF G' on "
                           "line 3); plain one- or two-column text is read with its unit (rocking: --unit)");
