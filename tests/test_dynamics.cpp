@@ -12,6 +12,7 @@
 #include "dynamics/simulate.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "qfactor/superposition.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::dynamics;
@@ -44,28 +45,13 @@ SampledInput synthetic_record(double dt, double seconds, double scale) {
     return SampledInput(a, dt, "synthetic");
 }
 
-// (S1) in long double from the input exactly as PulseInput builds it (pulse
-// k from start(k) to in seconds, amplitude times the PGA): on corner + from
-// rest at t = 0, before any impact, with F = a/(alpha g) - 1,
-//   theta(t)/alpha = sum_{t_j <= t} dF_j (cosh p(t - t_j) - 1),  cosh y - 1 = 2 sinh^2(y/2),
-// and the sum's condition, sum |dF_j| (cosh p(t - t_j) - 1): a relative
-// change eps in each term moves the sum by at most eps times it.
-struct S1Value {
-    long double phi, condition;
-};
-S1Value s1_long_double(const PulseTrain& train, double pga, double to, double alpha, double p, double t) {
-    S1Value v{0, 0};
-    long double previous = 0;
-    for (std::size_t k = 0; k < train.size(); ++k) {
-        const double tk = train.start(k) * to;
-        if (tk > t) break;
-        const long double F = static_cast<long double>(pga * train.pulses()[k].amplitude) / alpha - 1;
-        const long double h = std::sinh(static_cast<long double>(p) * (static_cast<long double>(t) - tk) / 2);
-        v.phi += (F - previous) * 2 * h * h;
-        v.condition += std::fabs(F - previous) * 2 * h * h;
-        previous = F;
-    }
-    return v;
+// (S1) in long double for a pulse input of peak pga (in g) on a block alpha, p.
+rocking::testing::S1Sum s1_long_double(const PulseTrain& train, double pga, double to, double alpha, double p,
+                                       double t) {
+    return rocking::testing::s1_sum(
+        train,
+        [&](std::size_t k) { return static_cast<long double>(pga * train.pulses()[k].amplitude) / alpha - 1; }, to,
+        p, t);
 }
 
 }  // namespace
@@ -123,12 +109,12 @@ TEST(Dynamics, ExactSolverIsExactToTheSumsConditionFromXOf1e4To10) {
                 const std::string what = "case " + std::to_string(c) + " x " + std::to_string(x) + " Rd " +
                                          std::to_string(rd);
                 for (const Sample& smp : r.samples) {
-                    const S1Value truth = s1_long_double(train, pga, to, alpha, p, smp.t);
+                    const rocking::testing::S1Sum truth = s1_long_double(train, pga, to, alpha, p, smp.t);
                     EXPECT_NEAR(smp.theta / alpha, static_cast<double>(truth.phi),
                                 4 * eps * std::fmax(1.0, static_cast<double>(truth.condition)))
                         << what << " t/to " << smp.t / to;
                 }
-                const S1Value fin = s1_long_double(train, pga, to, alpha, p, input.t_end());
+                const rocking::testing::S1Sum fin = s1_long_double(train, pga, to, alpha, p, input.t_end());
                 EXPECT_NEAR(r.theta_at_tfin / alpha, static_cast<double>(fin.phi),
                             4 * eps * std::fmax(1.0, static_cast<double>(fin.condition)))
                     << what;
@@ -257,7 +243,7 @@ TEST(Dynamics, StableAtTheExtremes) {
             SimulationOptions o = with(SolverKind::exact);
             o.free_rocking = false;
             const SimulationResult rl = simulate(lin, input, o);
-            const S1Value truth = s1_long_double(pulse_case(2), pga, to, alpha, b.p, input.t_end());
+            const rocking::testing::S1Sum truth = s1_long_double(pulse_case(2), pga, to, alpha, b.p, input.t_end());
             EXPECT_NEAR(rl.theta_at_tfin / alpha, static_cast<double>(truth.phi),
                         4 * std::numeric_limits<double>::epsilon() * static_cast<double>(truth.condition))
                 << alpha << " " << H;

@@ -7,6 +7,7 @@
 #include "pulse/pulse_train.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "qfactor/superposition.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 
@@ -60,8 +61,7 @@ TEST(Engine, ResponseReachesAlphaAtTFin) {
 }
 
 TEST(Engine, ResponsePhiIsAccurateToTheConditionOfItsSum) {
-    // (S1) summed in long double, phi = sum dF_j (cosh x(tau - tau_j) - 1)
-    // with cosh u - 1 = 2 sinh^2(u/2); its condition is the same sum of
+    // (S1) summed in long double (test_util.hpp); its condition is the sum of
     // |terms|: of order 1 where x is small (q ~ 1/x^2 against cosh - 1 ~ x^2),
     // growing like e^{x tau} where it is large.  response() keeps phi within
     // 4 eps of it (measured up to 1.9 eps; 1e-16 q e^{x tau}, the bound that
@@ -73,16 +73,11 @@ TEST(Engine, ResponsePhiIsAccurateToTheConditionOfItsSum) {
             const double q = q_case(c, x), T = train.t_fin();
             for (int i = 1; i <= 64; ++i) {
                 const double tau = T * i / 64;
-                long double phi = 0, condition = 0, previous = 0;
-                for (std::size_t k = 0; k < train.size() && train.start(k) <= tau; ++k) {
-                    const long double F = static_cast<long double>(q) * train.pulses()[k].amplitude - 1;
-                    const long double h = std::sinh(static_cast<long double>(x) * (tau - train.start(k)) / 2);
-                    phi += (F - previous) * 2 * h * h;
-                    condition += std::fabs(F - previous) * 2 * h * h;
-                    previous = F;
-                }
-                EXPECT_NEAR(response(train, x, q, tau).phi, static_cast<double>(phi),
-                            4 * eps * std::fmax(1.0, static_cast<double>(condition)))
+                const rocking::testing::S1Sum s1 = rocking::testing::s1_sum(
+                    train, [&](std::size_t k) { return static_cast<long double>(q) * train.pulses()[k].amplitude - 1; },
+                    1.0, x, tau);
+                EXPECT_NEAR(response(train, x, q, tau).phi, static_cast<double>(s1.phi),
+                            4 * eps * std::fmax(1.0, static_cast<double>(s1.condition)))
                     << "case " << c << " x " << x << " tau " << tau;
             }
         }

@@ -1,11 +1,15 @@
-// Helpers shared by the tests: scratch files, the message of an exception, and
-// bisection in long double (the reference root of the closed-form tests).
+// Helpers shared by the tests: scratch files, the message of an exception,
+// bisection in long double (the reference root of the closed-form tests) and
+// (S1) summed in long double (the reference response to a pulse train).
 #pragma once
 
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <cmath>
 #include <string>
+
+#include "pulse/pulse_train.hpp"
 
 namespace rocking::testing {
 
@@ -38,6 +42,31 @@ long double bisect(F f, long double lo, long double hi) {
         ((f(mid) < 0) == rising ? lo : hi) = mid;
     }
     return (lo + hi) / 2;
+}
+
+// (S1) in long double: the linearised block rocking on corner + from rest
+// at t = 0, before any impact, under pulse k of the train from start(k) to
+// (rounded in double, as PulseInput rounds it) at level F(k) = a/(alpha g) - 1,
+//   phi(t) = theta/alpha = sum_{t_j <= t} dF_j (cosh p(t - t_j) - 1),  cosh y - 1 = 2 sinh^2(y/2),
+// and the sum's condition, sum |dF_j| (cosh p(t - t_j) - 1): a relative
+// change eps in each term moves phi by at most eps times it.  In the
+// superposition engine's units (tau = t/to): to = 1, p = x, F(k) = q A_k - 1.
+struct S1Sum {
+    long double phi = 0, condition = 0;
+};
+template <class Level>
+S1Sum s1_sum(const PulseTrain& train, Level F, double to, double p, double t) {
+    S1Sum v;
+    long double previous = 0;
+    for (std::size_t k = 0; k < train.size() && train.start(k) * to <= t; ++k) {
+        const long double level = F(k);
+        const long double u = static_cast<long double>(p) * (static_cast<long double>(t) - train.start(k) * to);
+        const long double h = std::sinh(u / 2);
+        v.phi += (level - previous) * 2 * h * h;
+        v.condition += std::fabs(level - previous) * 2 * h * h;
+        previous = level;
+    }
+    return v;
 }
 
 }  // namespace rocking::testing
