@@ -1,8 +1,8 @@
 #include "dynamics/ground_input.hpp"
 
+#include "numerics/roots.hpp"
+
 #include <algorithm>
-#include <boost/math/tools/toms748_solve.hpp>
-#include <cstdint>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -109,11 +109,7 @@ double GroundInput::first_above(double t, double t_end, double thr) const {
                 const double tk = t + (end - t) * k / n;
                 if (std::fabs(piece.at(tk)) > thr) {
                     auto f = [&](double s) { return std::fabs(piece.at(s)) - thr; };
-                    std::uintmax_t iterations = 200;
-                    const auto r = boost::math::tools::toms748_solve(f, prev, tk, f(prev), f(tk),
-                                                                     boost::math::tools::eps_tolerance<double>(50),
-                                                                     iterations);
-                    return 0.5 * (r.first + r.second);
+                    return numerics::root_of(f, prev, tk, f(prev), f(tk), 50);
                 }
                 prev = tk;
             }

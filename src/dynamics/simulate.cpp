@@ -2,10 +2,9 @@
 
 #include "dynamics/exact_record.hpp"
 #include "dynamics/run_rules.hpp"
+#include "numerics/roots.hpp"
 
 #include <algorithm>
-#include <boost/math/tools/toms748_solve.hpp>
-#include <cstdint>
 #include <functional>
 #include <stdexcept>
 
@@ -47,10 +46,7 @@ double locate(F f, double a, double b) {
     const double fa = f(a), fb = f(b);
     if (fb == 0.0) return b;
     if (fa == 0.0 || (fa < 0) == (fb < 0)) return a;
-    std::uintmax_t iterations = 200;
-    const auto r = boost::math::tools::toms748_solve(f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(50),
-                                                     iterations);
-    return 0.5 * (r.first + r.second);
+    return numerics::root_of(f, a, b, fa, fb, 50);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// A root of f bracketed on [a, b], to full double precision (TOMS 748,
+// A root of f bracketed on [a, b] (TOMS 748,
 // Boost.Math).  f(a) and f(b) must have opposite signs.
 #pragma once
 
@@ -7,11 +7,21 @@
 
 namespace rocking::numerics {
 
+// From f(a) = fa and f(b) = fb already evaluated, stopping when the bracket
+// is within 2^(1 - bits) of the root (the dynamics engine's event
+// location and uplift crossings use 50 bits).
+template <class F>
+double root_of(F f, double a, double b, double fa, double fb, int bits) {
+    std::uintmax_t iterations = 200;
+    const auto r =
+        boost::math::tools::toms748_solve(f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(bits), iterations);
+    return 0.5 * (r.first + r.second);
+}
+
+// To full double precision.
 template <class F>
 double root_of(F f, double a, double b) {
-    std::uintmax_t iterations = 200;
-    const auto r = boost::math::tools::toms748_solve(f, a, b, boost::math::tools::eps_tolerance<double>(52), iterations);
-    return 0.5 * (r.first + r.second);
+    return root_of(f, a, b, f(a), f(b), 52);
 }
 
 }  // namespace rocking::numerics
