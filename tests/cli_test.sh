@@ -26,6 +26,9 @@ check "impossible train explained"   "cannot bring theta(t_fin) to alpha" "$rock
 status "bad x exits 2"               2 "$rocking" q --case 2 --x abc
 status "unknown option exits 2"      2 "$rocking" q --case 2 --x 1 --frobnicate 3
 status "no command exits 2"          2 "$rocking"
+status "help exits 0"                0 "$rocking" help
+status "a command's --help exits 0"  0 "$rocking" simulate --help
+check "a command's --help is the usage" "usage: rocking q" "$rocking" simulate --case 2 -h
 status "impossible train exits 1"    1 "$rocking" q --train 1:1,-5:1 --x 1
 status "good call exits 0"           0 "$rocking" q --case 4 --x 0.3 --json
 # simulate: case 2 at Rd = 0.9 keeps theta(t_fin)/alpha = 0.845691936518 (x = 0.5; the jump sum).

@@ -495,6 +495,14 @@ int cmd_assess(int argc, char** argv) {
 
 int main(int argc, char** argv) {
     const std::string command = argc > 1 ? argv[1] : "";
+    // "rocking simulate --help" asks for the usage, not for an option named
+    // --help (no option takes a value spelled like this).
+    bool help = command == "help";
+    for (int i = 1; i < argc; ++i) help = help || std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h";
+    if (help) {
+        std::cout << kUsage;
+        return 0;
+    }
     try {
         if (command == "q") return cmd_q(argc, argv);
         if (command == "response") return cmd_response(argc, argv);
@@ -502,10 +510,6 @@ int main(int argc, char** argv) {
         if (command == "record") return cmd_record(argc, argv);
         if (command == "collapse") return cmd_collapse(argc, argv);
         if (command == "assess") return cmd_assess(argc, argv);
-        if (command == "help" || command == "--help" || command == "-h") {
-            std::cout << kUsage;
-            return 0;
-        }
         throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
     } catch (const UsageError& e) {
         std::cerr << "rocking " << command << ": " << e.what() << "\n" << kUsage;

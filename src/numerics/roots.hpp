@@ -8,8 +8,10 @@
 namespace rocking::numerics {
 
 // From f(a) = fa and f(b) = fb already evaluated, stopping when the bracket
-// is within 2^(1 - bits) of the root (the dynamics engine's event
-// location and uplift crossings use 50 bits).
+// is within 2^(1 - bits) of the root, relative, and returning its midpoint
+// (the dynamics engine's event location and uplift crossings use 50 bits:
+// within 2^-50 of the root).  Boost floors the bracket at 4 eps = 2^-50:
+// bits above 51 gain nothing.
 template <class F>
 double root_of(F f, double a, double b, double fa, double fb, int bits) {
     std::uintmax_t iterations = 200;
@@ -18,7 +20,7 @@ double root_of(F f, double a, double b, double fa, double fb, int bits) {
     return 0.5 * (r.first + r.second);
 }
 
-// To full double precision.
+// To Boost's floor: a bracket of 4 eps, the midpoint within 2 eps of the root.
 template <class F>
 double root_of(F f, double a, double b) {
     return root_of(f, a, b, f(a), f(b), 52);
