@@ -69,17 +69,12 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         return {a[j] + c1 * std::fma(-Real(j), dt, s), c1, std::max(Real(0), std::fma(Real(j + 1), dt, -s))};
     };
     auto rest_of_piece = [&]() { return rest_of_piece_at(k, t); };
-    // A block just lifted from rest at t, where uplift_time made the input
-    // exceed the threshold as SampledInput::accel evaluates it, from the
-    // rounded grid: the exact grid above can put it up to ~ c1 ulp(t) lower,
-    // below the threshold, and the block would start pressed into the ground,
-    // return to it within rounding and rest to the piece's end, losing the
-    // motion there.  t moves on until this interpolation exceeds it too.
-    auto lift_on_own_input = [&]() {
-        t = move_until(static_cast<double>(t), static_cast<double>(t_fin),
-                       [&](double s) { return sigma * rest_of_piece_at(input.piece_index(s), s).a0 > alpha; });
-        k = input.piece_index(static_cast<double>(t));
-    };
+    // The input as this interpolation gives it, for the uplift from rest
+    // (uplift_time): SampledInput::accel, on the rounded grid, can put it
+    // ~ c1 ulp(t) higher, above the threshold where this is below, and the
+    // block would start pressed into the ground, return to it within rounding
+    // and rest to the piece's end, losing the motion there.
+    auto accel_at = [&](double s) { return rest_of_piece_at(input.piece_index(s), s).a0; };
 
     // The level that sigma theta, rising from s, must stay below for nothing
     // to happen: the first alpha while it is to come, the fall angle.
@@ -124,8 +119,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         }
     };
 
-    while (!done && rules::begin_pass(run, result, model, input, options, t_fin, note_theta, [](Real) {})) {
-        if (theta == 0.0 && omega == 0.0 && t < t_fin) lift_on_own_input();
+    while (!done && rules::begin_pass(run, result, model, input, accel_at, options, t_fin, note_theta, [](Real) {})) {
         const Real t_stop = t < t_fin ? t_fin : run.t_limit;
         bool rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
         bool event = false;

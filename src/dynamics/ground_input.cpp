@@ -154,11 +154,6 @@ double SampledInput::first_above(double t, double t_end, double thr) const {
     }
 }
 
-double uplift_time(const GroundInput& input, double t, double t_end, double thr) {
-    return move_until(input.first_above(t, t_end, thr), t_end,
-                      [&](double s) { return std::fabs(input.accel(s)) > thr; });
-}
-
 OneSinePulse::OneSinePulse(double ap_g, double wp, double threshold_g) : ap_(ap_g), wp_(wp) {
     if (!(std::isfinite(wp_) && wp_ > 0)) throw std::invalid_argument("one-sine pulse: w_p must be > 0");
     if (!(std::isfinite(ap_) && ap_ > threshold_g))

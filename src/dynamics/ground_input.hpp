@@ -45,20 +45,27 @@ public:
     virtual double first_above(double t, double t_end, double thr) const;
 };
 
-// The uplift time from rest: first_above(), moved forward by ulps until
-// |a| > thr there, so that the block never leaves the ground with an
-// acceleration pushing it back (>= t_end: no uplift before t_end).
-double uplift_time(const GroundInput& input, double t, double t_end, double thr);
-
 // t moved forward until exceeds(t) holds, at most 64 tries, stopping at
 // t_end: one ulp, then steps doubling from 1e-15 max(1, |t|).  What makes a
 // crossing located on one evaluation of the input hold for another, whose
-// rounding differs (uplift_time, and the record kernel's own interpolation).
+// rounding differs (uplift_time).
 template <class Exceeds>
 double move_until(double t, double t_end, Exceeds exceeds) {
     for (int k = 0; k < 64 && t < t_end && !exceeds(t); ++k)
         t = std::max(std::nextafter(t, INFINITY), t + 1e-15 * std::fmax(1.0, std::fabs(t)) * std::ldexp(1.0, std::min(k, 40)));
     return t;
+}
+
+// The uplift time from rest: first_above(), moved forward by ulps until
+// |at(t)| > thr, so that the block never leaves the ground with an
+// acceleration pushing it back (>= t_end: no uplift before t_end).  at(t) is
+// the input as the integrator that goes on from there evaluates it
+// (input.accel(t) for the steppers; the record kernel interpolates on the
+// exact grid k dt, whose rounding differs from accel()'s by ~ c1 ulp(t),
+// enough to start a block pressed into the ground).
+template <class At>
+double uplift_time(const GroundInput& input, double t, double t_end, double thr, At at) {
+    return move_until(input.first_above(t, t_end, thr), t_end, [&](double s) { return std::fabs(at(s)) > thr; });
 }
 
 // A pulse train (amplitudes in PGA, durations in to) scaled to real units.

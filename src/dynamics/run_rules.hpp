@@ -49,12 +49,13 @@ bool stop_after_input(const Model& model, const SimulationOptions& options, RunS
 
 // The top of each pass of a run's loop: takes theta(t_fin) the first time
 // t reaches t_fin (note_theta(t, theta) keeps the largest |theta|); lifts a
-// resting block when the input first exceeds the uplift threshold (rest_until
-// (t) lets the caller keep its theta(t) record of the rest), or ends the run
-// when it does not before t_fin; ends the run after the input once
-// stop_after_input says so.  False: the run is over.
-template <class Real, class NoteTheta, class RestUntil>
-bool begin_pass(RunState<Real>& s, SimulationResult& result, const Model& model, const GroundInput& input,
+// resting block when the input, as the caller evaluates it (at(t), see
+// uplift_time), first exceeds the uplift threshold (rest_until(t) lets the
+// caller keep its theta(t) record of the rest), or ends the run when it does
+// not before t_fin; ends the run after the input once stop_after_input says
+// so.  False: the run is over.
+template <class Real, class At, class NoteTheta, class RestUntil>
+bool begin_pass(RunState<Real>& s, SimulationResult& result, const Model& model, const GroundInput& input, At at,
                 const SimulationOptions& options, Real t_fin, NoteTheta note_theta, RestUntil rest_until) {
     if (!s.recorded && s.t >= t_fin) {
         result.theta_at_tfin = static_cast<double>(s.theta);
@@ -64,7 +65,7 @@ bool begin_pass(RunState<Real>& s, SimulationResult& result, const Model& model,
     }
     if (s.resting) {
         const Real tu = s.t < t_fin ? Real(uplift_time(input, static_cast<double>(s.t), static_cast<double>(t_fin),
-                                                       model.uplift_threshold()))
+                                                       model.uplift_threshold(), at))
                                     : Real(INFINITY);
         if (tu >= t_fin) {
             rest_until(std::max(t_fin, s.t_limit));
@@ -77,7 +78,7 @@ bool begin_pass(RunState<Real>& s, SimulationResult& result, const Model& model,
         rest_until(tu);
         s.t = tu;
         s.theta = s.omega = 0.0;
-        s.sigma = input.accel(static_cast<double>(tu)) > 0 ? 1 : -1;
+        s.sigma = at(static_cast<double>(tu)) > 0 ? 1 : -1;
         s.resting = false;
         result.uplifted = true;
     }

@@ -91,7 +91,8 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     };
 
     bool done = false;
-    while (!done && rules::begin_pass(run, result, model, input, options, t_fin, note_theta, rest_until)) {
+    while (!done && rules::begin_pass(run, result, model, input, [&](double s) { return input.accel(s); }, options, t_fin,
+                                               note_theta, rest_until)) {
         const double t = run.t, theta = run.theta, omega = run.omega;
         const int sigma = run.sigma;
         double t_stop = run.t_limit;
