@@ -331,11 +331,12 @@ TEST(RecordKernel, EventsHiddenInsideOneRecordPieceAreFound) {
 TEST(RecordKernel, LiftsOffWhereItsOwnInterpolationExceedsTheThreshold) {
     // Four samples of IT.NRC HGN 20161026_191806 (in g, samples 1969-1972 on
     // its 5 ms grid) after silence: the input crosses alpha = 0.15 inside
-    // piece 1970, where 1970 dt rounds below the exact grid.  uplift_time
-    // puts the uplift where SampledInput::accel (rounded grid) exceeds alpha;
-    // the kernel's exact-grid interpolation put the input 1.9e-15 g below it
-    // there, the block started pressed into the ground, returned to it within
-    // rounding and rested to the piece's end: 1.6 ms of motion lost, theta at
+    // piece 1970, where 1970 dt rounds below the exact grid.  The kernel
+    // used to lift the block where SampledInput::accel (rounded grid)
+    // exceeds alpha, where its own exact-grid interpolation (which it now
+    // hands to uplift_time) put the input 1.9e-15 g below alpha: the block
+    // started pressed into the ground, returned to it within rounding and
+    // rested to the piece's end: 1.6 ms of motion lost, theta at
     // 9.86 s 15% low, and on the record a trajectory that collapsed where the
     // true one survives.  Truth: from rest at the crossing of the exact-grid
     // interpolation, theta = c1 (sinh pu - pu) / p on piece 1970, then the
