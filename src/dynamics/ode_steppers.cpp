@@ -4,6 +4,23 @@
 // Solvers without dense output locate events by re-stepping from the start of
 // the last step with a shorter step (explicit Runge-Kutta steps are exact
 // functions of the step size).
+//
+// A record's acceleration is piecewise linear: a kink at every sample, where
+// theta''' jumps.  A step across a kink has a local error of order h^3 that
+// only an error estimate evaluated inside the step can see.  Fehlberg 7(8)'s
+// cannot: its estimate, (41/840) h (k1 + k11 - k12 - k13), uses only stages
+// at the ends of the step (c = 0, 1, 0, 1), so it is blind to any term of the
+// equation that depends on t alone, the input; and Bulirsch-Stoer's
+// extrapolation assumes the smooth error expansion a kink breaks.  Stepping
+// across the kinks, neither converged on a record (Norcia, p = 2, alpha = 0.2:
+// rkf78's error 3e-4 alpha at rtol 1e-6 and 1.5e-6 alpha at 1e-12; on a
+// synthetic record at rtol 1e-10 it missed an overturning).  So these two, and
+// rk8pd (the cross-check, which converged, but slowly: 9e-11 alpha at 1e-12
+// in 770,000 evaluations), end their steps on the kinks (next_kink), where
+// each step's input is linear and the estimates hold.  Dormand-Prince steps
+// across them, as MATLAB's ode45 does in the paper's integration: its
+// estimate uses interior stages and converges there (what the speed
+// comparison of bench/ measures).
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
@@ -11,6 +28,7 @@
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "dynamics/stepper.hpp"
@@ -39,6 +57,16 @@ struct RockingSystem {
         return std::min(1e-3 / model->block.p, stop - t);
     }
 
+    // Where a step that must not straddle a kink of the input ends: the
+    // input's next break (a record's next sample: its piecewise-linear
+    // acceleration has a kink at every sample) or the segment's end.  A
+    // break that t sits on up to rounding is behind it.
+    double next_kink(double t) const {
+        double b = input->next_break(t);
+        if (std::isfinite(b) && b - t <= 2 * std::numeric_limits<double>::epsilon() * b) b = input->next_break(b);
+        return std::min(b, t_stop);
+    }
+
     double accel_g(double t) const {
         if (t < t_stop) return input->accel(t);
         return input->piece_at(std::nextafter(t_stop, -INFINITY)).at(t);
@@ -54,8 +82,9 @@ struct RockingSystem {
 template <class Dense>
 class DenseStepper : public Stepper {
 public:
-    DenseStepper(const Model& model, const GroundInput& input, const SolverOptions& options, Dense dense)
-        : options_(options), dense_(std::move(dense)), sys_{&model, &input, &rhs_} {}
+    DenseStepper(const Model& model, const GroundInput& input, const SolverOptions& options, Dense dense,
+                 bool ends_at_kinks)
+        : options_(options), dense_(std::move(dense)), sys_{&model, &input, &rhs_}, ends_at_kinks_(ends_at_kinks) {}
     void reset(double t, double theta, double omega, int sigma, double t_stop) override {
         const double h0 = sys_.start(sigma, t, t_stop);
         t0_ = t1_ = t;
@@ -64,6 +93,16 @@ public:
     }
     bool advance() override {
         if (t1_ >= t_stop_) return false;
+        if (ends_at_kinks_) {
+            // A step proposed across the next kink is shortened to end on it
+            // (initialize() is Odeint's only way to set the step; it costs
+            // one evaluation).
+            const double t = dense_.current_time(), kink = sys_.next_kink(t);
+            if (t + dense_.current_time_step() > kink) {
+                const State x = dense_.current_state();
+                dense_.initialize(x, t, kink - t);
+            }
+        }
         const auto interval = dense_.do_step(sys_);
         ++steps_;
         t0_ = interval.first;
@@ -81,6 +120,7 @@ private:
     SolverOptions options_;
     Dense dense_;
     RockingSystem sys_{};
+    bool ends_at_kinks_;
     double t_stop_ = 0;
 };
 
@@ -104,13 +144,16 @@ public:
         x0_ = x_;
         t0_ = t1_;
         double t = t1_;
+        const double kink = sys_.next_kink(t);
         for (int tries = 0;; ++tries) {
             if (tries > 500) throw std::runtime_error("rkf78: step size underflow at t = " + std::to_string(t));
-            double h = std::min({h_, h_max, t_stop_ - t});
-            const bool last = (h == t_stop_ - t);
+            const double proposal = std::min(h_, h_max);
+            double h = std::min(proposal, kink - t);
+            const bool last = (h == kink - t);
             if (controlled_.try_step(sys_, x_, t, h) == odeint::success) {
-                t1_ = last ? t_stop_ : t;
-                h_ = h;
+                t1_ = last ? kink : t;
+                // A step shortened to end on the kink says nothing against the proposal.
+                h_ = last ? std::max(h, proposal) : h;
                 break;
             }
             h_ = h;
@@ -174,7 +217,7 @@ public:
         t0_ = t1_;
         double t = t1_;
         h_ = std::min(h_, h_max);
-        const int status = gsl_odeiv2_evolve_apply(evolve_, control_, step_, &gsl_sys_, &t, t_stop_, &h_, y_);
+        const int status = gsl_odeiv2_evolve_apply(evolve_, control_, step_, &gsl_sys_, &t, sys_.next_kink(t), &h_, y_);
         if (status != GSL_SUCCESS) throw std::runtime_error("gsl rk8pd failed at t = " + std::to_string(t));
         t1_ = t;
         ++steps_;
@@ -214,11 +257,11 @@ std::unique_ptr<Stepper> make_stepper(const Model& model, const GroundInput& inp
             return make_exact_stepper(model, input, options);
         case SolverKind::dopri5: {
             auto dense = odeint::make_dense_output(atol, options.rtol, h_max, odeint::runge_kutta_dopri5<State>());
-            return std::make_unique<DenseStepper<decltype(dense)>>(model, input, options, std::move(dense));
+            return std::make_unique<DenseStepper<decltype(dense)>>(model, input, options, std::move(dense), false);
         }
         case SolverKind::bulirsch_stoer: {
             odeint::bulirsch_stoer_dense_out<State> dense(atol, options.rtol, 1.0, 1.0, h_max);
-            return std::make_unique<DenseStepper<decltype(dense)>>(model, input, options, std::move(dense));
+            return std::make_unique<DenseStepper<decltype(dense)>>(model, input, options, std::move(dense), true);
         }
         case SolverKind::rkf78:
             return std::make_unique<Rkf78Stepper>(model, input, options);
