@@ -170,6 +170,22 @@ TEST(Dynamics, EachOdeSolverMeetsItsToleranceOnARecord) {
         }
 }
 
+TEST(Dynamics, OdeSolversRefuseAToleranceBelow100Eps) {
+    // Below 100 eps rounding decides the steps: Bulirsch-Stoer gave up at
+    // 1e-17, Dormand-Prince and Fehlberg ran for minutes at 1e-30.  A clear
+    // error instead; the exact solver has no tolerance and takes any.
+    const PulseInput input(pulse_case(2), q2(0.5) * 0.9 * 0.1, 0.25);
+    for (SolverKind k : kOde) {
+        EXPECT_THROW(simulate(linear_model(), input, with(k, 1e-17)), std::invalid_argument) << solver_name(k);
+        EXPECT_THROW(simulate(linear_model(), input, with(k, 1.0)), std::invalid_argument) << solver_name(k);
+        SimulationOptions nan_atol = with(k, 1e-6);
+        nan_atol.solver.atol_alpha = NAN;
+        EXPECT_THROW(simulate(linear_model(), input, nan_atol), std::invalid_argument) << solver_name(k);
+        EXPECT_NO_THROW(simulate(linear_model(), input, with(k, kSmallestTolerance))) << solver_name(k);
+    }
+    EXPECT_NO_THROW(simulate(linear_model(), input, with(SolverKind::exact, 0)));
+}
+
 TEST(Dynamics, ConvergenceOrderOfTheRungeKuttaMethods) {
     // Fixed steps on one pulse of the linearised equation, where
     // theta/alpha = (q - 1)(cosh pt - 1): the error falls as h^order.

@@ -53,7 +53,8 @@ const char* kUsage =
     "  samples, as recorded or scaled to --pga G (in g) or --q Q (PGA = Q alpha g).\n"
     "  GEOMETRY is --alpha A with --p P (rad/s), --half-height h (m, the H of eq. 2) or --height H (m).\n"
     "  --model linearised|full (default linearised); --solver exact|dopri5|rkf78|bulirsch-stoer|gsl-rk8pd\n"
-    "  (default exact for linearised, dopri5 for full); --rtol (default 1e-6);\n"
+    "  (default exact for linearised, dopri5 for full); --rtol in [2.2e-14, 1) (default 1e-6; also the\n"
+    "  absolute tolerance, in units of alpha);\n"
     "  --criterion final-rotation|peak-rotation|overturning (default final-rotation, the paper's);\n"
     "  --restitution on angular velocity at impact (default 1) or housner (1 - 1.5 sin^2 alpha);\n"
     "  --output FILE writes t,theta/alpha,theta'/(alpha p) every --dt seconds (default 0.01).\n"
@@ -90,10 +91,11 @@ double restitution_option(const std::string& text) {
     return e;
 }
 
-// --rtol: a relative tolerance in (0, 1), used as the absolute one in units of alpha too.
+// --rtol: a relative tolerance in [100 eps, 1), used as the absolute one in units of alpha too.
 double rtol_option(const std::string& text) {
     const double r = number("--rtol", text);
-    if (!(r > 0 && r < 1)) throw UsageError("--rtol: must be in (0, 1) (got " + text + ")");
+    if (!(r >= dynamics::kSmallestTolerance && r < 1))
+        throw UsageError("--rtol: must be in [2.2e-14, 1), 100 eps and above (got " + text + ")");
     return r;
 }
 
@@ -358,9 +360,10 @@ int cmd_simulate(int argc, char** argv) {
                   << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
     } else {
         std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
-        const std::string tolerance = options.solver.kind == SolverKind::exact
-                                          ? std::string(" (closed form between events)")
-                                          : " (rtol " + harness::format_number(options.solver.rtol) + ")";
+        char rtol[32];
+        std::snprintf(rtol, sizeof rtol, " (rtol %g)", options.solver.rtol);
+        const std::string tolerance =
+            options.solver.kind == SolverKind::exact ? std::string(" (closed form between events)") : std::string(rtol);
         std::printf("  model:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(), input->describe().c_str(),
                     solver_name(options.solver.kind).c_str(), tolerance.c_str());
         // A block that fell during the input has no theta(t_fin) to print: it lies on the ground.

@@ -28,6 +28,7 @@
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -250,6 +251,14 @@ std::unique_ptr<Stepper> make_exact_stepper(const Model&, const GroundInput&, co
 
 std::unique_ptr<Stepper> make_stepper(const Model& model, const GroundInput& input, const SolverOptions& options) {
     const double atol = options.atol_alpha * model.block.alpha, h_max = options.max_step_p / model.block.p;
+    if (options.kind != SolverKind::exact)
+        for (double tol : {options.rtol, options.atol_alpha})
+            if (!(tol >= kSmallestTolerance && tol < 1)) {
+                char text[160];
+                std::snprintf(text, sizeof text, "%s: tolerance %.3g outside [2.2e-14, 1) (below 100 eps rounding decides the steps)",
+                              solver_name(options.kind).c_str(), tol);
+                throw std::invalid_argument(text);
+            }
     switch (options.kind) {
         case SolverKind::exact:
             if (model.equation != Equation::linearised)

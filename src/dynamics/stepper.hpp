@@ -4,6 +4,7 @@
 // (simulate.hpp) does the rest: impacts, rest and uplift, criteria.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -13,6 +14,12 @@
 namespace rocking::dynamics {
 
 enum class SolverKind { exact, dopri5, rkf78, bulirsch_stoer, gsl_rk8pd };
+
+// The ODE solvers' tolerances (rtol, atol_alpha) must lie in [100 eps, 1):
+// 100 eps = 2.2e-14 is MATLAB's floor for ode45's RelTol.  Below it rounding
+// decides the steps: at 1e-17 Bulirsch-Stoer gives up ("a new step size was
+// not found"), at 1e-30 Dormand-Prince and Fehlberg run for minutes.
+constexpr double kSmallestTolerance = 100 * std::numeric_limits<double>::epsilon();
 
 struct SolverOptions {
     SolverKind kind = SolverKind::exact;
@@ -52,7 +59,8 @@ protected:
     long rhs_ = 0, steps_ = 0;
 };
 
-// Throws std::invalid_argument when the exact solver is asked for the full equation.
+// Throws std::invalid_argument when the exact solver is asked for the full
+// equation, or an ODE solver for a tolerance outside [kSmallestTolerance, 1).
 std::unique_ptr<Stepper> make_stepper(const Model& model, const GroundInput& input, const SolverOptions& options);
 
 }  // namespace rocking::dynamics
