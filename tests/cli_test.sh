@@ -41,7 +41,7 @@ check "simulate geometry required"   "give exactly one of --p, --half-height and
 check "simulate bad solver"          "unknown solver 'rk4'" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver rk4
 check "simulate restitution range"   "--restitution: must be in [0, 1] or housner (got 1.5)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --restitution 1.5
 check "collapse rtol range (before reading the file)" "--rtol: must be in [2.2e-14, 1), 100 eps and above (got 2)" "$rocking" collapse no-such-file --alpha 0.15 --rtol 2
-# Below 100 eps rounding decides the steps: Bulirsch-Stoer gave up at 1e-17, Dormand-Prince ran for minutes at 1e-30.
+# Below 100 eps rounding decides the steps: Bulirsch-Stoer gave up at 1e-17, Dormand-Prince ran over a minute at 1e-30.
 check "rtol below 100 eps refused"   "--rtol: must be in [2.2e-14, 1), 100 eps and above (got 1e-30)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-30
 status "rtol below 100 eps exits 2"  2 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-30
 status "rtol at 100 eps runs"        0 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver bulirsch-stoer --rtol 2.3e-14

@@ -172,7 +172,7 @@ TEST(Dynamics, EachOdeSolverMeetsItsToleranceOnARecord) {
 
 TEST(Dynamics, OdeSolversRefuseAToleranceBelow100Eps) {
     // Below 100 eps rounding decides the steps: Bulirsch-Stoer gave up at
-    // 1e-17, Dormand-Prince and Fehlberg ran for minutes at 1e-30.  A clear
+    // 1e-17, Dormand-Prince and Fehlberg ran over a minute at 1e-30.  A clear
     // error instead; the exact solver has no tolerance and takes any.
     const PulseInput input(pulse_case(2), q2(0.5) * 0.9 * 0.1, 0.25);
     for (SolverKind k : kOde) {

@@ -16,9 +16,10 @@ namespace rocking::dynamics {
 enum class SolverKind { exact, dopri5, rkf78, bulirsch_stoer, gsl_rk8pd };
 
 // The ODE solvers' tolerances (rtol, atol_alpha) must lie in [100 eps, 1):
-// 100 eps = 2.2e-14 is MATLAB's floor for ode45's RelTol.  Below it rounding
-// decides the steps: at 1e-17 Bulirsch-Stoer gives up ("a new step size was
-// not found"), at 1e-30 Dormand-Prince and Fehlberg run for minutes.
+// 100 eps = 2.2e-14 is MATLAB's floor for ode45's RelTol (which it raises
+// there with a warning; here it is an error).  Below it rounding decides the
+// steps: at 1e-17 Bulirsch-Stoer gave up ("a new step size was not found"),
+// at 1e-30 Dormand-Prince and Fehlberg had not finished one pulse in a minute.
 constexpr double kSmallestTolerance = 100 * std::numeric_limits<double>::epsilon();
 
 struct SolverOptions {
