@@ -148,34 +148,31 @@ int bless(const Options& o) {
     fs::remove_all(backup);
     fs::copy(target, backup, fs::copy_options::recursive);
     for (const std::string& file : spec.files()) fs::copy_file(dir + "/" + file, target + "/" + file, fs::copy_options::overwrite_existing);
-    // The new values must pass the scene's independent check, when it has one.
+    // The new values must pass the scene's independent checks: its second
+    // implementation (independent.py) and its second method at a much
+    // tighter tolerance (--reference), each one the scene has.
+    auto refuse = [&](const std::string& why) {
+        fs::remove_all(target);
+        fs::rename(backup, target);
+        std::cerr << "bless refused: " << why << "; expected/" << scene << " is unchanged\n";
+        return 1;
+    };
     const std::string check = target + "/independent.py";
-    if (fs::exists(check)) {
+    const bool has_script = fs::exists(check), has_reference = !reference_of(scene).empty();
+    if (has_script) {
         const std::string cmd = "/usr/bin/python3 " + quote(check) + " " + quote(target);
         std::cout << "independent check: " << cmd << "\n";
-        if (std::system(cmd.c_str()) != 0) {
-            fs::remove_all(target);
-            fs::rename(backup, target);
-            std::cerr << "bless refused: the new values fail the independent check; expected/" << scene
-                      << " is unchanged\n";
-            return 1;
-        }
-    } else if (!reference_of(scene).empty()) {
-        // A second method at a much tighter tolerance must agree with the new values.
+        if (std::system(cmd.c_str()) != 0) return refuse("the new values fail the independent check");
+    }
+    if (has_reference) {
         const std::string cmd = quote(self_path()) + " --reference --no-plot --out " + quote(o.out) + " --expected " +
                                 quote(o.expected) + " " + scene;
         std::cout << "independent check: " << cmd << "\n";
-        if (std::system(cmd.c_str()) != 0) {
-            fs::remove_all(target);
-            fs::rename(backup, target);
-            std::cerr << "bless refused: the reference method disagrees with the new values; expected/" << scene
-                      << " is unchanged\n";
-            return 1;
-        }
-    } else {
+        if (std::system(cmd.c_str()) != 0) return refuse("the reference method disagrees with the new values");
+    }
+    if (!has_script && !has_reference)
         std::cout << "no independent check for " << scene
                   << ": record in PROVENANCE.md how the new values were checked\n";
-    }
     fs::remove_all(backup);
     std::cout << "blessed expected/" << scene << "; review with: git diff -- expected/" << scene << "\n";
     return 0;
