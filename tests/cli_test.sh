@@ -48,6 +48,12 @@ status "rtol at 100 eps runs"        0 "$rocking" simulate --case 2 --x 0.5 --rd
 check "rtol printed plainly"         "solver: dopri5 (rtol 1e-06)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5
 status "collapse bad restitution exits 2" 2 "$rocking" collapse no-such-file --alpha 0.15 --restitution x
 status "simulate bad criterion exits 2" 2 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --criterion soon
+# A block past the top when the pulse ends (theta(t_fin) = 2.4 alpha, moving out)
+# falls in the free rocking that follows, under either equation.
+for model in linearised full; do
+    check "past the top falls ($model)" "overturning: collapse" "$rocking" simulate --one-sine --ap 0.45 --wp 6 \
+        --alpha 0.1 --p 2 --model $model --criterion overturning
+done
 out=$(mktemp)
 "$rocking" simulate --one-sine --ap 0.45 --wp 6 --alpha 0.15 --p 2 --output "$out" --dt 0.1 >/dev/null
 check "simulate writes theta(t)"     "t,theta_over_alpha,omega_over_alpha_p" cat "$out"

@@ -298,6 +298,83 @@ TEST(Dynamics, FreeRockingQuarterPeriod) {
         }
 }
 
+TEST(Dynamics, ABlockPastTheTopWhenTheInputEndsFalls) {
+    // With the ground at rest, sigma theta > alpha is the far side of the
+    // unstable equilibrium: gravity turns the block outwards, and below the
+    // energy barrier it cannot come back over it, so it falls whatever its
+    // velocity.  (The energy rule alone, "below the barrier it can never
+    // overturn", holds on the near side only; applied here it stopped the
+    // run and reported no overturning.)  The linearised fall from d0 =
+    // sigma theta0 - alpha, w0 = sigma theta0' is d(t) = A e^(pt) + B e^(-pt),
+    // A = (d0 + w0/p)/2, B = (d0 - w0/p)/2, reaching the fall angle when
+    // e^(pt) = (D + sqrt(D^2 - 4AB)) / 2A, D = pi/2 - alpha (the later root:
+    // a block moving inwards turns first).
+    const double alpha = 0.1, p = 2.0;
+    const SampledInput none({0.0, 0.0}, 1e-9, "no input");
+    struct Start {
+        double theta_over_alpha, omega_over_alpha_p;
+    };
+    // At rest, moving out, and moving in below the barrier (energy
+    // (w0^2 - (p d0)^2)/2 < 0), far from the top and near it.
+    for (const Start s : {Start{1.5, 0.0}, Start{1.5, 0.2}, Start{1.5, -0.3}, Start{1.05, -0.04}})
+        for (double sign : {1.0, -1.0}) {
+            const long double d0 = (s.theta_over_alpha - 1) * alpha, w0 = s.omega_over_alpha_p * alpha * p;
+            const long double A = (d0 + w0 / p) / 2, B = (d0 - w0 / p) / 2, D = M_PI / 2 - alpha;
+            const double expected = static_cast<double>(std::log((D + std::sqrt(D * D - 4 * A * B)) / (2 * A)) / p);
+            for (SolverKind k : {SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78})
+                for (bool kernel : {true, false}) {
+                    if (!kernel && k != SolverKind::exact) continue;
+                    SimulationOptions o = with(k, 1e-12);
+                    o.solver.record_kernel = kernel;
+                    o.initial_theta = sign * s.theta_over_alpha * alpha;
+                    o.initial_omega = sign * s.omega_over_alpha_p * alpha * p;
+                    const SimulationResult r = simulate(linear_model(alpha, p), none, o);
+                    const std::string what = solver_name(k) + (kernel ? "" : " (general path)") + " theta0/alpha " +
+                                             std::to_string(sign * s.theta_over_alpha);
+                    EXPECT_TRUE(r.overturned) << what;
+                    EXPECT_FALSE(r.overturned_during_input) << what;
+                    EXPECT_TRUE(r.collapse(Criterion::overturning, alpha)) << what;
+                    EXPECT_EQ(r.impacts, 0) << what;
+                    EXPECT_NEAR(r.t_overturn, expected, k == SolverKind::exact ? 1e-13 : 1e-9) << what;
+                }
+        }
+    // The control, which the energy rule already followed: above the barrier
+    // and moving in, the block crosses back over alpha (e^(2pt1) = -B/A) with
+    // speed w1 = sqrt(w0^2 - (p d0)^2), reaches the ground after t2 (sinh pt2
+    // = alpha p / w1), leaves it with the same speed (restitution 1), reaches
+    // -alpha after t2 again (time reversal) with speed w1, and falls after t3
+    // (sinh pt3 = D p / w1).
+    {
+        const long double d0 = 0.05L * alpha, w0 = -0.2L * alpha * p;
+        const long double A = (d0 + w0 / p) / 2, B = (d0 - w0 / p) / 2, D = M_PI / 2 - alpha;
+        const long double w1 = std::sqrt(w0 * w0 - p * p * d0 * d0);
+        const double expected = static_cast<double>(
+            (std::log(-B / A) / 2 + 2 * std::asinh(alpha * p / w1) + std::asinh(D * p / w1)) / p);
+        for (bool kernel : {true, false}) {
+            SimulationOptions o = with(SolverKind::exact);
+            o.solver.record_kernel = kernel;
+            o.initial_theta = 1.05 * alpha;
+            o.initial_omega = -0.2 * alpha * p;
+            const SimulationResult back = simulate(linear_model(alpha, p), none, o);
+            EXPECT_TRUE(back.overturned) << kernel;
+            EXPECT_EQ(back.impacts, 1) << kernel;
+            EXPECT_NEAR(back.t_overturn, expected, 1e-13) << kernel;
+        }
+    }
+    // The full equation (no closed form): dopri5 and rkf78 agree on the fall.
+    Model full = linear_model(alpha, p);
+    full.equation = Equation::full;
+    for (const Start s : {Start{1.5, 0.0}, Start{1.5, -0.3}}) {
+        SimulationOptions a = with(SolverKind::rkf78, 1e-12), b = with(SolverKind::dopri5, 1e-10);
+        a.initial_theta = b.initial_theta = s.theta_over_alpha * alpha;
+        a.initial_omega = b.initial_omega = s.omega_over_alpha_p * alpha * p;
+        const SimulationResult ra = simulate(full, none, a), rb = simulate(full, none, b);
+        EXPECT_TRUE(ra.overturned) << s.omega_over_alpha_p;
+        EXPECT_TRUE(rb.overturned) << s.omega_over_alpha_p;
+        EXPECT_NEAR(ra.t_overturn, rb.t_overturn, 1e-8) << s.omega_over_alpha_p;
+    }
+}
+
 TEST(Dynamics, StableAtTheExtremes) {
     // x from 1e-4 to 10: ExactSolverIsExactToTheSumsConditionFromXOf1e4To10.
     // Rd -> 1: grazing collapse, just below and just above.

@@ -375,7 +375,7 @@ int cmd_simulate(int argc, char** argv) {
                         r.theta_at_tfin / alpha, r.t_fin, r.max_abs_theta_input / alpha);
         const std::string when = !r.overturned ? ""
                                  : std::isnan(r.t_overturn)
-                                     ? " (its energy after the input exceeds the barrier; the fall is not simulated)"
+                                     ? " (the free rocking followed, 200/p, ended before the fall; decided from its energy and side of the top)"
                                      : " (at t = " + harness::format_number(r.t_overturn) + " s)";
         std::printf("  impacts: %d; overturns (free rocking included): %s%s\n", r.impacts, r.overturned ? "yes" : "no",
                     when.c_str());

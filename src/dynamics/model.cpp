@@ -59,6 +59,10 @@ double Model::energy(double theta, double omega, int sigma) const {
 
 double Model::barrier() const { return equation == Equation::linearised ? 0.0 : block.p * block.p; }
 
+bool Model::may_overturn(double theta, double omega, int sigma) const {
+    return sigma * theta > block.alpha || energy(theta, omega, sigma) >= barrier();
+}
+
 std::string Model::describe() const {
     std::ostringstream os;
     os << (equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1") << ", alpha = " << block.alpha

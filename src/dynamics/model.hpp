@@ -42,10 +42,15 @@ struct Model {
     // theta'' on corner sigma under a ground acceleration a/g.
     double acceleration(double theta, int sigma, double a_g) const;
     // Energy per unit inertia with the ground at rest, and its value at the
-    // unstable equilibrium theta = sigma alpha: a block whose energy is below
-    // the barrier can never overturn once the ground is at rest.
+    // unstable equilibrium theta = sigma alpha (the top).
     double energy(double theta, double omega, int sigma) const;
     double barrier() const;
+    // With the ground at rest, whether the block on corner sigma can still
+    // overturn: on the near side of the top (sigma theta <= alpha) only with
+    // its energy at or above the barrier (impacts only take energy away); on
+    // the far side always, and below the barrier for certain, since it
+    // cannot come back over the top.
+    bool may_overturn(double theta, double omega, int sigma) const;
     std::string describe() const;
 };
 

@@ -34,14 +34,15 @@ struct RunState {
           t_limit(t_fin + options.free_record_time) {}
 };
 
-// After the input the ground is at rest: a block below the energy barrier
-// can never overturn (impacts only take energy away), so the run stops as
-// soon as the record asked for is complete (t >= t_limit); a block above it
-// is followed until it falls (t_limit raised to t_fin + 200 / p).
+// After the input the ground is at rest: a block that can no longer
+// overturn (Model::may_overturn: below the energy barrier on the near side
+// of the top) stops as soon as the record asked for is complete (t >=
+// t_limit); any other is followed until it falls (t_limit raised to t_fin +
+// 200 / p).
 template <class Real>
 bool stop_after_input(const Model& model, const SimulationOptions& options, RunState<Real>& s, Real t_fin) {
     if (!options.free_rocking || s.resting) return true;
-    if (model.energy(static_cast<double>(s.theta), static_cast<double>(s.omega), s.sigma) < model.barrier())
+    if (!model.may_overturn(static_cast<double>(s.theta), static_cast<double>(s.omega), s.sigma))
         return s.t >= s.t_limit;
     s.t_limit = std::max(s.t_limit, t_fin + Real(200.0) / Real(model.block.p));
     return s.t >= s.t_limit;
@@ -118,12 +119,13 @@ void apply_impact(RunState<Real>& s, SimulationResult& result, const Model& mode
 }
 
 // Overturning decided by energy when the run stopped in free rocking
-// without simulating the fall.
+// without simulating the fall: a block that may still overturn after 200 / p
+// of free rocking is taken to (Model::may_overturn).
 template <class Real>
 void decide_by_energy(const RunState<Real>& s, SimulationResult& result, const Model& model,
                       const SimulationOptions& options, Real t_fin) {
     if (options.free_rocking && !result.overturned && !s.resting && s.recorded && s.t >= t_fin &&
-        model.energy(static_cast<double>(s.theta), static_cast<double>(s.omega), s.sigma) >= model.barrier())
+        model.may_overturn(static_cast<double>(s.theta), static_cast<double>(s.omega), s.sigma))
         result.overturned = true;
 }
 
