@@ -19,6 +19,10 @@ check "eq. 27 crosses q = 2"         $'q = 2\n'   "$rocking" q --case 2 --pulses
 check "json output"                  '"q": 4.38821872331181' "$rocking" q --case 2 --x 0.5 --json
 check "custom train equals case 2"   "q = 4.388218723"   "$rocking" q --train 1:1,-0.5:1 --x 0.5
 check "response ends at alpha"       $'\n2,1,'   "$rocking" response --case 2 --x 0.5 --steps 4
+# Where the one-corner closed form does not hold, response says so beside its numbers.
+check "response below onset warns"   "the input does not lift the block" "$rocking" response --case 2 --x 0.5 --q 0.5
+check "response past an impact warns" "the block hits the ground before t_fin" "$rocking" response --case 2 --x 0.5 --q 1.5
+check "response json validity"       '"rocking_starts": false, "impact_free": false' "$rocking" response --case 2 --x 0.5 --q 0.5 --json
 check "bad x is named"               "--x: 'abc' is not a number" "$rocking" q --case 2 --x abc
 check "negative x is refused"        "--x: must be > 0"  "$rocking" q --case 2 --x -1
 check "bad case is named"            "--case: must be 1, 2, 3, 4 or 5" "$rocking" q --case 7 --x 1

@@ -168,6 +168,28 @@ std::string json_string(const std::string& s) {
 
 const char* kModel = "linearised eq. 3, one corner, no impact, collapse theta(t_fin) = alpha";
 
+// Where the closed forms hold at this q (Excursion), as q and response print
+// it, each line after prefix: they hold only while the block rocks on one
+// corner, from the first pulse lifting it to t_fin.
+void print_validity(const Excursion& e, const char* prefix) {
+    std::printf("%srocking starts: %s; impact-free up to t_fin: %s; motion reverses before t_fin: %s\n", prefix,
+                e.onset ? "yes" : "no (q A_0 <= 1)", e.stays_positive() ? "yes" : "no", e.min_dphi < 0 ? "yes" : "no");
+    if (!e.onset)
+        std::printf("%swarning: the input does not lift the block (q A_0 <= 1), so the closed form does not apply: "
+                    "its theta < 0 would press the block into the ground\n",
+                    prefix);
+    else if (!e.stays_positive())
+        std::printf("%swarning: theta goes down to %.3g alpha (at t/to = %.4g): the block hits the ground before t_fin, "
+                    "and the closed form does not apply from there (rocking simulate follows the impacts)\n",
+                    prefix, e.min_phi, e.tau_at_min);
+}
+
+std::string json_validity(const Excursion& e) {
+    return std::string(", \"rocking_starts\": ") + (e.onset ? "true" : "false") +
+           ", \"impact_free\": " + (e.stays_positive() ? "true" : "false") +
+           ", \"motion_reverses\": " + (e.min_dphi < 0 ? "true" : "false");
+}
+
 int cmd_q(int argc, char** argv) {
     const Args a = parse(argc, argv, 2, {"--case", "--train", "--x", "--pulses"});
     std::string equation;
@@ -180,19 +202,13 @@ int cmd_q(int argc, char** argv) {
                   << ", \"x\": " << harness::format_number(x) << ", \"q\": " << harness::format_number(r.q)
                   << ", \"condition\": " << harness::format_number(r.condition)
                   << ", \"equation\": " << json_string(equation) << ", \"model\": " << json_string(kModel)
-                  << ", \"rocking_starts\": " << (e.onset ? "true" : "false")
-                  << ", \"impact_free\": " << (e.stays_positive() ? "true" : "false")
-                  << ", \"motion_reverses\": " << (e.min_dphi < 0 ? "true" : "false") << "}\n";
+                  << json_validity(e) << "}\n";
     } else {
         std::printf("q = %.10g\n", r.q);
         std::printf("  input %s (%zu pulses, t_fin = %g to), x = p*to = %g, %s\n", train.name().c_str(), train.size(),
                     train.t_fin(), x, equation.c_str());
         std::printf("  model: %s\n", kModel);
-        std::printf("  rocking starts: %s; impact-free up to t_fin: %s; motion reverses before t_fin: %s\n",
-                    e.onset ? "yes" : "no (q A_0 <= 1)", e.stays_positive() ? "yes" : "no",
-                    e.min_dphi < 0 ? "yes" : "no");
-        if (!e.stays_positive())
-            std::printf("  warning: theta reaches %.3g alpha before t_fin: the closed form does not apply\n", e.min_phi);
+        print_validity(e, "  ");
     }
     return 0;
 }
@@ -206,10 +222,16 @@ int cmd_response(int argc, char** argv) {
     if (!(q > 0)) throw UsageError("--q: must be > 0");
     const int steps = a.values.count("--steps") ? integer("--steps", a.values.at("--steps")) : 20;
     if (steps < 1 || steps > 1000000) throw UsageError("--steps: must be between 1 and 1000000");
-    if (a.json) std::cout << "{\"input\": " << json_string(train.name()) << ", \"x\": " << harness::format_number(x)
-                          << ", \"q\": " << harness::format_number(q) << ", \"model\": " << json_string(kModel)
-                          << ", \"samples\": [";
-    else std::printf("# %s, x = %g, q = %.10g; %s\n# t/to,theta/alpha,theta'/(alpha p)\n", train.name().c_str(), x, q, kModel);
+    const Excursion e = excursion(train, x, q);
+    if (a.json) {
+        std::cout << "{\"input\": " << json_string(train.name()) << ", \"x\": " << harness::format_number(x)
+                  << ", \"q\": " << harness::format_number(q) << ", \"model\": " << json_string(kModel)
+                  << json_validity(e) << ", \"samples\": [";
+    } else {
+        std::printf("# %s, x = %g, q = %.10g; %s\n", train.name().c_str(), x, q, kModel);
+        print_validity(e, "# ");
+        std::printf("# t/to,theta/alpha,theta'/(alpha p)\n");
+    }
     for (int k = 0; k <= steps; ++k) {
         const double tau = train.t_fin() * k / steps;
         const ResponseState s = response(train, x, q, tau);
