@@ -99,6 +99,8 @@ if [ -d "$records" ]; then
             --record "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.2 --p 2 --restitution housner \
             --solver $solver --rtol 1e-12
     done
+    check "collapse below uplift says so" "the record never lifts the block at all (PGA 0.359399 g <= alpha = 0.5)" \
+        "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.5
     check "collapse json" '"found": true' "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15 --json
 else
     echo "skipped: record commands (no shared records folder at $records)"

@@ -475,7 +475,18 @@ int cmd_collapse(int argc, char** argv) {
     } else {
         if (c.found) std::printf("p = %.6f rad/s: the smallest pulsation at which %s overturns the block (alpha = %g); "
                                  "safe at %.6f\n", c.p, r.name.c_str(), alpha, c.p_safe);
-        else std::printf("no collapse for p up to %g rad/s\n", o.p_max);
+        else {
+            // Below the uplift threshold no p can move the block: say so, or the
+            // scan's "up to 30 rad/s" reads as if a larger p might.
+            const double pga_g = r.pga() / kGravity;
+            const bool full = o.equation == Equation::full;
+            const double thr = full ? std::tan(alpha) : alpha;
+            if (pga_g <= thr)
+                std::printf("no collapse for p up to %g rad/s: the record never lifts the block at all (PGA %.6g g <= "
+                            "%s = %.6g)\n",
+                            o.p_max, pga_g, full ? "tan alpha" : "alpha", thr);
+            else std::printf("no collapse for p up to %g rad/s\n", o.p_max);
+        }
         std::printf("  %s; %d simulations\n", o.describe().c_str(), c.simulations);
     }
     return 0;
