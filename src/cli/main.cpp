@@ -478,13 +478,14 @@ int cmd_collapse(int argc, char** argv) {
         else {
             // Below the uplift threshold no p can move the block: say so, or the
             // scan's "up to 30 rad/s" reads as if a larger p might.
-            const double pga_g = r.pga() / kGravity;
-            const bool full = o.equation == Equation::full;
-            const double thr = full ? std::tan(alpha) : alpha;
+            Model m;  // any p: the threshold depends on alpha and the equation only
+            m.equation = o.equation;
+            m.block = Block::from_p(1.0, alpha);
+            const double pga_g = r.pga() / kGravity, thr = m.uplift_threshold();
             if (pga_g <= thr)
                 std::printf("no collapse for p up to %g rad/s: the record never lifts the block at all (PGA %.6g g <= "
                             "%s = %.6g)\n",
-                            o.p_max, pga_g, full ? "tan alpha" : "alpha", thr);
+                            o.p_max, pga_g, o.equation == Equation::full ? "tan alpha" : "alpha", thr);
             else std::printf("no collapse for p up to %g rad/s\n", o.p_max);
         }
         std::printf("  %s; %d simulations\n", o.describe().c_str(), c.simulations);
