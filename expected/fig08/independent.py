@@ -31,7 +31,7 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
-from independent_check import read_expected  # noqa: E402
+from independent_check import Checker, read_expected  # noqa: E402
 
 P = 1.0  # the scene's p (rad/s); w_p = (w/p) p
 FALL = math.pi / 2  # the fall angle (SimulationOptions::overturn_angle)
@@ -122,7 +122,8 @@ def decide(column, ratio, wp):
 def main():
     directory = sys.argv[1] if len(sys.argv) > 1 else here
     header, rows = read_expected(directory, "fig08.csv")
-    failures = checked = skipped = 0
+    ck = Checker(directory)
+    checked = skipped = 0
     for column in VARIANTS:
         c = header.index(column)
         for row in rows:
@@ -133,16 +134,13 @@ def main():
                 continue
             checked += 1
             if not (above and not below):
-                failures += 1
-                print(f"  DISAGREES: fig08.csv {column} w/p {wp}: threshold {a}: falls at +1e-4: {above}, "
-                      f"at -1e-4: {below} (expected True, False)")
+                ck.fail(f"fig08.csv {column} w/p {wp}: threshold {a}: falls at +1e-4: {above}, "
+                        f"at -1e-4: {below} (expected True, False)")
     print(f"  fig08.csv makris_*: {checked} thresholds checked as boundaries of the overturning set within "
           f"1e-4, {skipped} with a rebound too slow for this check left to the reference solver")
-    if failures or checked == 0:
-        print(f"independent check: {failures} disagreement(s) in {directory}")
-        sys.exit(1)
-    print(f"independent check: {directory} agrees")
-
+    if checked == 0:
+        ck.fail("no threshold could be checked")
+    ck.finish()
 
 if __name__ == "__main__":
     main()
