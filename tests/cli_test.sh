@@ -30,6 +30,9 @@ check "impossible train explained"   "cannot bring theta(t_fin) to alpha" "$rock
 status "bad x exits 2"               2 "$rocking" q --case 2 --x abc
 status "unknown option exits 2"      2 "$rocking" q --case 2 --x 1 --frobnicate 3
 status "no command exits 2"          2 "$rocking"
+check "no command shows the usage"   $'rocking: no command given\nusage: rocking q' "$rocking"
+# A usage error is one line and a pointer, not the whole usage after it.
+check "usage error points to --help" $'--x: \'abc\' is not a number\nrun \'rocking --help\' for the usage' "$rocking" q --case 2 --x abc
 status "help exits 0"                0 "$rocking" help
 status "a command's --help exits 0"  0 "$rocking" simulate --help
 check "a command's --help is the usage" "usage: rocking q" "$rocking" simulate --case 2 -h
@@ -38,6 +41,9 @@ status "good call exits 0"           0 "$rocking" q --case 4 --x 0.3 --json
 # simulate: case 2 at Rd = 0.9 keeps theta(t_fin)/alpha = 0.845691936518 (x = 0.5; the jump sum).
 check "simulate below collapse"      "theta(t_fin)/alpha = 0.8456919365" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2
 check "simulate criterion named"     "no collapse under final-rotation" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2
+# Case 1 at x = 10 has q = 1.0001: Rd = 0.99 keeps the PGA below alpha g, and the output says why theta stays 0.
+check "simulate says the input never lifts" "the input never lifts the block: its peak, 0.099009 g, is at or below the uplift threshold alpha = 0.1 g" "$rocking" simulate --case 1 --x 10 --rd 0.99 --alpha 0.1 --p 2
+check "simulate json: never lifts"   '"input_lifts_block": false' "$rocking" simulate --case 1 --x 10 --rd 0.99 --alpha 0.1 --p 2 --json
 check "simulate json"                '"collapse_overturning": true' "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --json
 check "simulate at collapse"         "COLLAPSE under final-rotation" "$rocking" simulate --case 2 --x 0.5 --rd 1.0001 --alpha 0.15 --p 2
 check "full model needs an ODE solver" "exact solver handles the linearised equation only" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --model full --solver exact

@@ -364,6 +364,8 @@ int cmd_simulate(int argc, char** argv) {
         table.write(a.values.at("--output"));
     }
     const bool collapse = r.collapse(criterion, alpha);
+    // The block starts at rest and rocks only once |a| > the threshold (eq. 3: alpha g; eq. 1: g tan alpha).
+    const bool lifts = input->peak() > model.uplift_threshold();
     if (a.json) {
         auto b = [](bool v) { return v ? "true" : "false"; };
         std::cout << "{\"model\": " << json_string(model.describe()) << ", \"input\": " << json_string(input->describe())
@@ -374,6 +376,7 @@ int cmd_simulate(int argc, char** argv) {
                   << ", \"theta_tfin_over_alpha\": "
                   << (r.overturned_during_input ? "null" : harness::format_number(r.theta_at_tfin / alpha))
                   << ", \"max_theta_input_over_alpha\": " << harness::format_number(r.max_abs_theta_input / alpha)
+                  << ", \"input_lifts_block\": " << b(lifts)
                   << ", \"impacts\": " << r.impacts << ", \"overturned\": " << b(r.overturned)
                   << ", \"overturned_during_input\": " << b(r.overturned_during_input)
                   << ", \"t_overturn\": " << (std::isnan(r.t_overturn) ? "null" : harness::format_number(r.t_overturn))
@@ -399,6 +402,11 @@ int cmd_simulate(int argc, char** argv) {
                                  : std::isnan(r.t_overturn)
                                      ? " (the free rocking followed, 200/p, ended before the fall; decided from its energy and side of the top)"
                                      : " (at t = " + harness::format_number(r.t_overturn) + " s)";
+        // Without this line a zero theta reads like a result of the dynamics;
+        // it is the input that stays at or below the uplift threshold.
+        if (!lifts)
+            std::printf("  the input never lifts the block: its peak, %.6g g, is at or below the uplift threshold %s = %.6g g\n",
+                        input->peak(), model.equation == Equation::full ? "tan alpha" : "alpha", model.uplift_threshold());
         std::printf("  impacts: %d; overturns (free rocking included): %s%s\n", r.impacts, r.overturned ? "yes" : "no",
                     when.c_str());
         std::printf("  final-rotation: %s; peak-rotation: %s; overturning: %s\n",
@@ -549,7 +557,10 @@ int main(int argc, char** argv) {
         if (command == "assess") return cmd_assess(argc, argv);
         throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
     } catch (const UsageError& e) {
-        std::cerr << "rocking " << command << ": " << e.what() << "\n" << kUsage;
+        // The whole usage would bury the one line that says what is wrong.
+        std::cerr << "rocking" << (command.empty() ? "" : " " + command) << ": " << e.what() << "\n";
+        if (command.empty()) std::cerr << kUsage;
+        else std::cerr << "run 'rocking --help' for the usage\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "rocking " << command << ": " << e.what() << "\n";
