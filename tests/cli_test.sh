@@ -67,6 +67,9 @@ done
 out=$(mktemp)
 "$rocking" simulate --one-sine --ap 0.45 --wp 6 --alpha 0.15 --p 2 --output "$out" --dt 0.1 >/dev/null
 check "simulate writes theta(t)"     "t,theta_over_alpha,omega_over_alpha_p" cat "$out"
+"$rocking" simulate --one-sine --ap 0.45 --wp 6 --alpha 0.15 --p 2 --solver rkf78 --rtol 1e-9 --criterion overturning \
+    --output "$out" --dt 0.1 >/dev/null
+check "theta(t) file states solver and tolerance" $'# solver: rkf78 (rtol 1e-09)\n# criterion: overturning' cat "$out"
 rm -f "$out"
 # simulate --record: a one-column record holding 0.2 g for 1 s (11 samples) drives
 # the block from rest as a step: theta/alpha = (a/alpha - 1)(cosh pt - 1) (eq. 3),

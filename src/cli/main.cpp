@@ -354,11 +354,16 @@ int cmd_simulate(int argc, char** argv) {
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
     const SimulationResult r = simulate(model, *input, options);
+    char rtol[32];
+    std::snprintf(rtol, sizeof rtol, " (rtol %g)", options.solver.rtol);
+    const std::string tolerance =
+        options.solver.kind == SolverKind::exact ? std::string(" (closed form between events)") : std::string(rtol);
     if (has("--output")) {
         harness::Table table({"t", "theta_over_alpha", "omega_over_alpha_p"});
         table.note("model", model.describe());
         table.note("input", input->describe());
-        table.note("solver", solver_name(options.solver.kind));
+        table.note("solver", solver_name(options.solver.kind) + tolerance);
+        table.note("criterion", criterion_name(criterion));
         for (const Sample& s : r.samples)
             table.row().add(s.t).add(s.theta / alpha).add(s.omega / (alpha * model.block.p));
         table.write(a.values.at("--output"));
@@ -385,10 +390,6 @@ int cmd_simulate(int argc, char** argv) {
                   << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
     } else {
         std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
-        char rtol[32];
-        std::snprintf(rtol, sizeof rtol, " (rtol %g)", options.solver.rtol);
-        const std::string tolerance =
-            options.solver.kind == SolverKind::exact ? std::string(" (closed form between events)") : std::string(rtol);
         std::printf("  model:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(), input->describe().c_str(),
                     solver_name(options.solver.kind).c_str(), tolerance.c_str());
         // A block that fell during the input has no theta(t_fin) to print: it lies on the ground.
