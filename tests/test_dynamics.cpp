@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <random>
 #include <string>
 
 #include "dynamics/simulate.hpp"
@@ -373,6 +375,163 @@ TEST(Dynamics, ABlockPastTheTopWhenTheInputEndsFalls) {
         EXPECT_TRUE(rb.overturned) << s.omega_over_alpha_p;
         EXPECT_NEAR(ra.t_overturn, rb.t_overturn, 1e-8) << s.omega_over_alpha_p;
     }
+}
+
+TEST(Dynamics, AnExcursionOutAndBackWithinOneStepIsFollowed) {
+    // The block leaves the ground at theta' = w0 > 0 on a record piece where
+    // the input, a0 + c1 u, rises through alpha: theta'' = p^2 (theta + a0 +
+    // c1 u - alpha) turns from negative to positive, so theta rises, falls
+    // back to the ground and, on the equation it started on, would turn up
+    // again: theta' has the same sign at both ends of the piece.  The general
+    // path took one extremum per step at most: it missed the impact (c1 =
+    // 0.1: theta ends above 0) or put it at the step's start and rested the
+    // block there (c1 = 0.06: theta ends below 0), and the ODE solvers whose
+    // steps end on the record's samples did so later in the cascade that
+    // follows.  Found by a random comparison of the solvers on synthetic
+    // records.  The truth: the impacts of the cascade up to the piece's end,
+    // each the first root of the closed form on its corner from the last,
+    //   theta(u) = lin (cosh pu - 1) + D sinh pu - c1 u,
+    //   lin = a(t_i) - sigma alpha, D = (w + c1) / p,
+    // (theta = 0, theta' = w at the impact t_i; restitution 1: w is theta'
+    // before it), in long double by bisection.
+    const double alpha = 0.1, p = 1.0, dt = 0.4, a0 = 0.09, w0 = 1e-4;
+    auto cascade = [&](int sign, long double c1) {
+        std::vector<long double> times;
+        long double t = 0, w = sign * w0;
+        int sigma = sign;
+        for (;;) {
+            const long double lin = sign * a0 + sign * c1 * t - sigma * alpha, D = (w + sign * c1) / p;
+            auto theta = [&](long double u) {
+                return lin * (std::cosh(p * u) - 1) + D * std::sinh(p * u) - sign * c1 * u;
+            };
+            // Bracket the first return to 0 by steps of 1% (the excursion is
+            // one arc: theta'' changes sign once at most), then bisect.
+            long double lo = 1e-12L, hi = lo;
+            while (sigma * theta(hi) > 0 && t + hi < dt) lo = hi, hi *= 1.01L;
+            if (t + hi >= dt) return times;
+            for (int i = 0; i < 200; ++i) {
+                const long double mid = (lo + hi) / 2;
+                (sigma * theta(mid) > 0 ? lo : hi) = mid;
+            }
+            const long double u = (lo + hi) / 2;
+            w = p * (lin * std::sinh(p * u) + D * std::cosh(p * u)) - sign * c1;
+            t += u;
+            times.push_back(t);
+            sigma = -sigma;
+        }
+    };
+    for (double c1 : {0.1, 0.06})
+        for (int sign : {1, -1}) {
+            const SampledInput piece({sign * a0, sign * (a0 + c1 * dt)}, dt, "rising through alpha");
+            const std::vector<long double> truth = cascade(sign, c1);
+            ASSERT_GE(truth.size(), 2u);
+            for (SolverKind k : {SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78, SolverKind::bulirsch_stoer,
+                                 SolverKind::gsl_rk8pd})
+                for (bool kernel : {true, false}) {
+                    if (!kernel && k != SolverKind::exact) continue;
+                    SimulationOptions o = with(k, 1e-10);
+                    o.solver.record_kernel = kernel;
+                    o.free_rocking = false;
+                    o.initial_omega = sign * w0;
+                    const SimulationResult r = simulate(linear_model(alpha, p), piece, o);
+                    const std::string what = solver_name(k) + (kernel ? "" : " (general path)") + " c1 " +
+                                             std::to_string(c1) + " sign " + std::to_string(sign);
+                    EXPECT_EQ(r.impact_times.size(), truth.size()) << what;
+                    EXPECT_EQ(r.rests, 0) << what;
+                    // The exact solvers to rounding: theta's (~1e-19 rad) over theta'
+                    // at the impacts (down to ~1e-6 rad/s), accumulated along the
+                    // cascade (measured 7e-14 s at most).  The ODE solvers to their
+                    // atol, 1e-11 rad, over theta' (measured: dopri5 3.9e-7 s,
+                    // Bulirsch-Stoer 2.5e-8 s; rkf78 and rk8pd, which step on the
+                    // record's samples, 7e-14 s).
+                    const double tol = k == SolverKind::exact ? 5e-13 : 1e-6;
+                    for (std::size_t i = 0; i < std::min(truth.size(), r.impact_times.size()); ++i)
+                        EXPECT_NEAR(r.impact_times[i], static_cast<double>(truth[i]), tol) << what << " impact " << i;
+                }
+        }
+}
+
+TEST(Dynamics, OnRandomInputsEverySolverAgreesWhereTheMotionIsWellConditioned) {
+    // 400 random blocks (alpha 0.02-0.32, p 0.5-5.5 rad/s, Housner's
+    // restitution or one in [0.5, 1]) under random inputs: 70 % synthetic
+    // records near the uplift threshold (a chattering block, impact cascades,
+    // theta'' changing sign inside pieces), 30 % random pulse trains of 1-6
+    // pulses.  Where the motion is well conditioned -- the exact solver's
+    // peak, theta(t_fin), outcome and every impact time move by less than
+    // 1e-9 (alpha, s) when the input is scaled by 1 + 1e-13 -- the record
+    // kernel, the general exact path and three ODE solvers at rtol 1e-12
+    // must agree: the exact ones to 1e-9 alpha (rounding 1e-16 times the
+    // amplification the probe allows, 1e4; measured 9e-12), the ODE ones to
+    // 1e-7 alpha (their 1e-12 times 1e4; measured: rkf78 1.1e-10, rk8pd
+    // 2e-11, Bulirsch-Stoer 4.7e-9).  Dormand-Prince is left out: stepping
+    // across the samples it converges slowly on records (README).  Elsewhere
+    // (the probe moves the answer) no solver's answer is the truth: rocking
+    // is unstable between impacts.  Comparing the solvers at random this way
+    // found two bugs of the general path that hid an excursion inside one
+    // step (AnExcursionOutAndBackWithinOneStepIsFollowed); the uniform draws
+    // come from the raw mt19937_64 stream, the same on every platform.
+    std::mt19937_64 rng(20261121);
+    auto U = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+    int well = 0;
+    for (int it = 0; it < 400; ++it) {
+        const double alpha = 0.02 + 0.3 * U(), p = 0.5 + 5 * U();
+        const Model m = linear_model(alpha, p, it % 2 == 0 ? housner_restitution(alpha) : 0.5 + 0.5 * U());
+        std::unique_ptr<GroundInput> input, nudged;
+        std::string what = "case " + std::to_string(it);
+        if (U() < 0.7) {
+            const int n = 200 + static_cast<int>(1500 * U());
+            const double dt = 0.005 + 0.02 * U(), f = 1 + 10 * U();
+            std::vector<double> a(n);
+            double phase = 0;
+            for (int k = 0; k < n; ++k) {
+                phase += (U() - 0.5) * 0.6;
+                a[k] = (0.8 + 0.6 * U()) * alpha * std::sin(f * k * dt + phase) * std::exp(-k / (0.4 * n));
+            }
+            std::vector<double> b = a;
+            for (double& v : b) v *= 1 + 1e-13;
+            input = std::make_unique<SampledInput>(a, dt, "random record");
+            nudged = std::make_unique<SampledInput>(b, dt, "random record, nudged");
+            what += " (record, dt " + std::to_string(dt) + ")";
+        } else {
+            std::vector<Pulse> pulses;
+            const int n = 1 + static_cast<int>(5 * U());
+            for (int k = 0; k < n; ++k) pulses.push_back({k == 0 ? 0.2 + 0.8 * U() : 2 * U() - 1, 0.2 + 2 * U()});
+            const double pga = alpha * (1 + 1.2 * U()), to = (0.05 + 3 * U()) / p;
+            input = std::make_unique<PulseInput>(PulseTrain(pulses), pga, to);
+            nudged = std::make_unique<PulseInput>(PulseTrain(pulses), pga * (1 + 1e-13), to);
+            what += " (pulse train)";
+        }
+        what += ", alpha " + std::to_string(alpha) + ", p " + std::to_string(p);
+        auto agree = [&](const SimulationResult& x, const SimulationResult& y, double tol) {
+            return x.overturned == y.overturned && x.overturned_during_input == y.overturned_during_input &&
+                   std::fabs(x.theta_at_tfin - y.theta_at_tfin) <= tol * alpha &&
+                   std::fabs(x.max_abs_theta_input - y.max_abs_theta_input) <= tol * alpha;
+        };
+        const SimulationResult ref = simulate(m, *input, with(SolverKind::exact)),
+                               probe = simulate(m, *nudged, with(SolverKind::exact));
+        bool conditioned = agree(ref, probe, 1e-9) && ref.impact_times.size() == probe.impact_times.size();
+        for (std::size_t i = 0; conditioned && i < ref.impact_times.size(); ++i)
+            conditioned = std::fabs(ref.impact_times[i] - probe.impact_times[i]) <= 1e-9;
+        if (!conditioned) continue;
+        ++well;
+        SimulationOptions general = with(SolverKind::exact);
+        general.solver.record_kernel = false;
+        const std::pair<SimulationOptions, double> others[] = {{general, 1e-9},
+                                                               {with(SolverKind::rkf78, 1e-12), 1e-7},
+                                                               {with(SolverKind::gsl_rk8pd, 1e-12), 1e-7},
+                                                               {with(SolverKind::bulirsch_stoer, 1e-12), 1e-7}};
+        for (const auto& [o, tol] : others) {
+            const SimulationResult r = simulate(m, *input, o);
+            EXPECT_TRUE(agree(ref, r, tol))
+                << what << ", " << solver_name(o.solver.kind) << (o.solver.record_kernel ? "" : " (general path)")
+                << ": peak " << r.max_abs_theta_input / alpha << " alpha against " << ref.max_abs_theta_input / alpha
+                << ", theta(t_fin) " << r.theta_at_tfin / alpha << " against " << ref.theta_at_tfin / alpha
+                << ", overturned " << r.overturned << " against " << ref.overturned << ", impacts " << r.impacts
+                << " against " << ref.impacts;
+        }
+    }
+    // Not a vacuous test: most cases are well conditioned (measured 323 of 400).
+    EXPECT_GT(well, 250);
 }
 
 TEST(Dynamics, StableAtTheExtremes) {

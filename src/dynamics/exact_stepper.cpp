@@ -91,8 +91,8 @@ public:
 
     // Whole record pieces, a 2x2 update each on the raw samples, while no
     // event can be inside: at both ends of each piece sigma theta > 0, theta'
-    // keeps its sign, sigma theta stays on one side of alpha and below the
-    // fall angle.  The last piece (the one that may hold an event, or the
+    // and theta'' keep their signs, sigma theta stays on one side of alpha
+    // and below the fall angle.  The last piece (the one that may hold an event, or the
     // last before t_stop) is left as the step, with its closed form.
     void run_quiet_pieces() {
         const std::vector<double>& a = sampled_->samples();
@@ -102,14 +102,21 @@ public:
         // k1 = cosh p dt - 1, sh = p sinh p dt, q_dt = (sinh p dt - p dt) / p.
         const double y = cached_y_, k1 = y * cached_ch1_, sh = p * p * dt * (1 + y * cached_sh1_),
                      q_dt = dt * y * cached_sh1_;
-        auto quiet = [&](double th0, double om0, double th1, double om1) {
+        // e0, e1: theta''/p^2 at the ends.  Of one sign, with theta' of one
+        // sign, theta' is monotone (theta''/p^2 = C cosh pu + D sinh pu has
+        // one root at most) and theta has no extremum inside; theta' of one
+        // sign alone allows two, and the block could leave the ground and
+        // come back, or cross alpha and come back, unseen.
+        auto quiet = [&](double th0, double om0, double e0, double th1, double om1, double e1) {
             const double s0 = sigma_ * th0, s1 = sigma_ * th1;
-            return s1 > 0 && ((om0 < 0) == (om1 < 0)) && om0 != 0 && om1 != 0 && ((s0 < alpha) == (s1 < alpha)) &&
-                   s1 < overturn_;
+            return s1 > 0 && ((om0 < 0) == (om1 < 0)) && om0 != 0 && om1 != 0 && e0 * e1 > 0 &&
+                   ((s0 < alpha) == (s1 < alpha)) && s1 < overturn_;
         };
         double th_prev = 0, om_prev = 0;
         state_at(t0_, th_prev, om_prev);
-        if (!quiet(th_prev, om_prev, theta_, omega_)) return;
+        // The step just taken, a whole piece: its input is a(t0) + c1 u,
+        // and C = theta(t0) + a(t0) - sigma alpha (B = 0 on a record).
+        if (!quiet(th_prev, om_prev, C_, theta_, omega_, theta_ + (C_ - th0_) + piece_.c1 * (t1_ - t0_))) return;
         std::size_t k = static_cast<std::size_t>(std::llround(t1_ / dt));  // the piece starting at t1_
         const double sa = sigma_ * alpha;
         double th_start = theta_, om_start = omega_;
@@ -119,7 +126,7 @@ public:
             const double C = theta_ + c0, W = omega_ + c1;
             const double th = theta_ + omega_ * dt + C * k1 + W * q_dt;
             const double om = omega_ + C * sh + W * k1;
-            if (!quiet(theta_, omega_, th, om)) break;  // leave this piece to advance_piece()
+            if (!quiet(theta_, omega_, C, th, om, th + a[k + 1] - sa)) break;  // leave this piece to advance_piece()
             th_start = theta_;
             om_start = omega_;
             theta_ = th;

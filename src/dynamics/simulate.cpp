@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 
 namespace rocking::dynamics {
@@ -110,28 +111,21 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
         // before it has risen above that noise is no impact: it stays at rest.
         const double noise = 1e-12 * alpha;
         bool rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
-        while (!event && stepper->advance()) {
-            // The step may have started after the last one seen (a batched run);
-            // at the segment's start the state is known exactly (an interpolant
-            // may put theta' = 0 a rounding error off and fake an extremum).
-            if (stepper->t_begin() != ta) {
-                ta = stepper->t_begin();
-                stepper->state_at(ta, tha, oma);
-            }
-            const double tb = stepper->t_end();
-            double thb, omb;
-            stepper->state_at(tb, thb, omb);
-            auto th_at = [&](double s) {
-                double th, om;
-                stepper->state_at(s, th, om);
-                return th;
-            };
-            auto om_at = [&](double s) {
-                double th, om;
-                stepper->state_at(s, th, om);
-                return om;
-            };
-            // Extremum of theta inside the step (theta' changes sign).
+        auto th_at = [&](double s) {
+            double th, om;
+            stepper->state_at(s, th, om);
+            return th;
+        };
+        auto om_at = [&](double s) {
+            double th, om;
+            stepper->state_at(s, th, om);
+            return om;
+        };
+        // The events of [ta, tb], a part of a step holding at most one
+        // extremum of theta, from the states at its ends; true when one ends
+        // the segment (impact, rest, fall), which it applies to run.
+        auto analyse_part = [&](double ta, double tha, double oma, double tb, double thb, double omb) {
+            // Extremum of theta inside the part (theta' changes sign, once).
             double t_ext = NAN, th_ext = NAN;
             if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) {
                 t_ext = locate(om_at, ta, tb);
@@ -166,14 +160,14 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                 result.overturned_during_input = t_fall <= t_fin;
                 note_theta(t_fall, sigma * options.overturn_angle);
                 done = true;
-                event = true;
+                return true;
             } else if (t_impact <= t_cut && t_impact < INFINITY && !rose) {
                 // Still within rounding of the ground: at rest to the end of the
                 // step (progress is guaranteed), then the uplift rule again.
                 run.t = tb;
                 run.theta = run.omega = 0.0;
                 run.resting = true;
-                event = true;
+                return true;
             } else if (t_impact <= t_cut && t_impact < INFINITY) {
                 double th_i, om_i;
                 stepper->state_at(t_impact, th_i, om_i);
@@ -183,9 +177,80 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                 // resolve), leaves the block at rest; the input may lift it again at once.
                 const bool micro = rules::record_impact(result, t_impact, options, p);
                 rules::apply_impact(run, result, model, t_impact, om_i, micro, rest_threshold(options));
-                event = true;
-            } else {
-                note_theta(tb, thb);
+                return true;
+            }
+            note_theta(tb, thb);
+            return false;
+        };
+        while (!event && stepper->advance()) {
+            // The step may have started after the last one seen (a batched run);
+            // at the segment's start the state is known exactly (an interpolant
+            // may put theta' = 0 a rounding error off and fake an extremum).
+            if (stepper->t_begin() != ta) {
+                ta = stepper->t_begin();
+                stepper->state_at(ta, tha, oma);
+            }
+            const double tb = stepper->t_end();
+            double thb, omb;
+            stepper->state_at(tb, thb, omb);
+            // The step's parts, each holding at most one extremum of theta,
+            // which the analysis below assumes.  A part first ends at the
+            // input's next kink (a record's sample; Dormand-Prince steps across
+            // them); on a part where the input is linear, theta'' (a
+            // combination of cosh and sinh on eq. 3) changes sign once at most,
+            // so theta' vanishes at most twice, and only when theta'' changes
+            // sign while theta' keeps its sign at the ends: the part is then
+            // split where theta'' = 0 if theta' has the other sign there.
+            // Missing this put a block at rest where it flew out and back
+            // within one step (an impact at the step's start, then a micro-bounce).
+            double pa = ta, pha = tha, poa = oma;
+            while (!event && pa < tb) {
+                InputPiece piece = input.piece_at(pa);
+                if (piece.t1 - pa <= 2 * std::numeric_limits<double>::epsilon() * std::fabs(piece.t1))
+                    piece = input.piece_at(piece.t1);  // a break that pa sits on up to rounding is behind it
+                double pb = piece.t1 > pa && piece.t1 < tb ? piece.t1 : tb;
+                double phb = thb, pob = omb;
+                if (pb < tb) stepper->state_at(pb, phb, pob);
+                if ((poa < 0) == (pob < 0) && poa != 0.0 && pob != 0.0) {
+                    // theta'' on this part, from the input's piece holding it.
+                    auto curvature_at = [&](double s) {
+                        double th, om;
+                        stepper->state_at(s, th, om);
+                        return model.acceleration(th, sigma, piece.at(s));
+                    };
+                    const double ea = model.acceleration(pha, sigma, piece.at(pa)),
+                                 eb = model.acceleration(phb, sigma, piece.at(pb));
+                    // theta' and theta'' of one sign: sigma theta is monotone, and
+                    // nothing happens inside when it ends above the ground's noise,
+                    // below the fall and on the side of alpha it started.
+                    const double sa = sigma * pha, sb = sigma * phb;
+                    if (ea * eb > 0.0 && sa >= 0.0 && sb > noise && sb < options.overturn_angle &&
+                        !(std::isnan(result.t_first_alpha) && sa < alpha && sb >= alpha)) {
+                        sample_until(pb, [&](double s, double& th, double& om) { stepper->state_at(s, th, om); });
+                        note_theta(pb, phb);
+                        rose = true;
+                        pa = pb;
+                        pha = phb;
+                        poa = pob;
+                        continue;
+                    }
+                    if ((ea < 0) != (eb < 0) && ea != 0.0 && eb != 0.0) {
+                        const double ti = locate(curvature_at, pa, pb);
+                        double thi, omi;
+                        stepper->state_at(ti, thi, omi);
+                        if (ti > pa && ti < pb && (omi < 0) != (poa < 0) && omi != 0.0) {
+                            pb = ti;
+                            phb = thi;
+                            pob = omi;
+                        }
+                    }
+                }
+                event = analyse_part(pa, pha, poa, pb, phb, pob);
+                pa = pb;
+                pha = phb;
+                poa = pob;
+            }
+            if (!event) {
                 ta = tb;
                 tha = thb;
                 oma = omb;

@@ -26,7 +26,11 @@ struct SolverOptions {
     SolverKind kind = SolverKind::exact;
     double rtol = 1e-6;        // relative tolerance (ODE solvers)
     double atol_alpha = 1e-6;  // absolute tolerance on theta, in units of alpha (theta' in alpha p)
-    double max_step_p = 0.5;   // largest step times p: keeps at most one extremum of theta per step
+    // Largest step times p: keeps the closed form's series within 1e-21
+    // (closed_piece.hpp) and the events of a step few.  It does not keep a
+    // step to one extremum of theta: where theta'' changes sign inside a step,
+    // theta' can vanish twice, and the driver splits the step there (simulate.cpp).
+    double max_step_p = 0.5;
     // The exact solver on a record runs the record kernel (exact_record.hpp)
     // unless this is off: the general path, kept for cross-checks.
     bool record_kernel = true;
