@@ -211,6 +211,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                 double pb = piece.t1 > pa && piece.t1 < tb ? piece.t1 : tb;
                 double phb = thb, pob = omb;
                 if (pb < tb) stepper->state_at(pb, phb, pob);
+                bool quiet = false;
                 if ((poa < 0) == (pob < 0) && poa != 0.0 && pob != 0.0) {
                     // theta'' on this part, from the input's piece holding it.
                     auto curvature_at = [&](double s) {
@@ -224,16 +225,8 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                     // nothing happens inside when it ends above the ground's noise,
                     // below the fall and on the side of alpha it started.
                     const double sa = sigma * pha, sb = sigma * phb;
-                    if (ea * eb > 0.0 && sa >= 0.0 && sb > noise && sb < options.overturn_angle &&
-                        !(std::isnan(result.t_first_alpha) && sa < alpha && sb >= alpha)) {
-                        sample_until(pb, [&](double s, double& th, double& om) { stepper->state_at(s, th, om); });
-                        note_theta(pb, phb);
-                        rose = true;
-                        pa = pb;
-                        pha = phb;
-                        poa = pob;
-                        continue;
-                    }
+                    quiet = ea * eb > 0.0 && sa >= 0.0 && sb > noise && sb < options.overturn_angle &&
+                            !(std::isnan(result.t_first_alpha) && sa < alpha && sb >= alpha);
                     if ((ea < 0) != (eb < 0) && ea != 0.0 && eb != 0.0) {
                         const double ti = locate(curvature_at, pa, pb);
                         double thi, omi;
@@ -245,7 +238,13 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                         }
                     }
                 }
-                event = analyse_part(pa, pha, poa, pb, phb, pob);
+                if (quiet) {
+                    sample_until(pb, [&](double s, double& th, double& om) { stepper->state_at(s, th, om); });
+                    note_theta(pb, phb);
+                    rose = true;
+                } else {
+                    event = analyse_part(pa, pha, poa, pb, phb, pob);
+                }
                 pa = pb;
                 pha = phb;
                 poa = pob;
