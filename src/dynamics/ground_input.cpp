@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -26,6 +27,13 @@ std::string PulseInput::describe() const {
     std::ostringstream os;
     os << train_.name() << ", PGA = " << pga_ << " g, to = " << to_ << " s";
     return os.str();
+}
+
+InputPiece GroundInput::piece_from(double t) const {
+    const InputPiece piece = piece_at(t);
+    if (std::isfinite(piece.t1) && piece.t1 - t <= 2 * std::numeric_limits<double>::epsilon() * piece.t1)
+        return piece_at(piece.t1);
+    return piece;
 }
 
 InputPiece PulseInput::piece_at(double t) const {

@@ -35,6 +35,10 @@ public:
     virtual std::vector<double> discontinuities() const = 0;
     // The end of the piece containing t (t_end or inf beyond).
     double next_break(double t) const { return piece_at(t).t1; }
+    // The piece that goes on from t: piece_at(t), or the next one when t
+    // sits on its end up to rounding (2 ulps), so that a step or a part
+    // starting there is not cut to nothing.
+    InputPiece piece_from(double t) const;
     double accel(double t) const { return piece_at(t).at(t); }
     // Largest |a|/g: the PGA in units of g.
     virtual double peak() const = 0;

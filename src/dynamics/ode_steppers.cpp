@@ -29,7 +29,6 @@
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <stdexcept>
 
 #include "dynamics/stepper.hpp"
@@ -62,11 +61,7 @@ struct RockingSystem {
     // input's next break (a record's next sample: its piecewise-linear
     // acceleration has a kink at every sample) or the segment's end.  A
     // break that t sits on up to rounding is behind it.
-    double next_kink(double t) const {
-        double b = input->next_break(t);
-        if (std::isfinite(b) && b - t <= 2 * std::numeric_limits<double>::epsilon() * b) b = input->next_break(b);
-        return std::min(b, t_stop);
-    }
+    double next_kink(double t) const { return std::min(input->piece_from(t).t1, t_stop); }
 
     double accel_g(double t) const {
         if (t < t_stop) return input->accel(t);

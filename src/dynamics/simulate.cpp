@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <functional>
-#include <limits>
 #include <stdexcept>
 
 namespace rocking::dynamics {
@@ -205,9 +204,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
             // within one step (an impact at the step's start, then a micro-bounce).
             double pa = ta, pha = tha, poa = oma;
             while (!event && pa < tb) {
-                InputPiece piece = input.piece_at(pa);
-                if (piece.t1 - pa <= 2 * std::numeric_limits<double>::epsilon() * std::fabs(piece.t1))
-                    piece = input.piece_at(piece.t1);  // a break that pa sits on up to rounding is behind it
+                const InputPiece piece = input.piece_from(pa);
                 double pb = piece.t1 > pa && piece.t1 < tb ? piece.t1 : tb;
                 double phb = thb, pob = omb;
                 if (pb < tb) stepper->state_at(pb, phb, pob);
