@@ -231,13 +231,16 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 const Real om_noise = f.omega_noise(u1, k1);
 
                 // Where theta'' changes sign with theta' keeping its sign at both
-                // ends, theta' may vanish twice: split where theta'' = 0.
+                // ends, or starting from 0 (the uplift from rest), theta' may
+                // vanish twice (or once more): split where theta'' = 0.
                 Real u_split = u1;
                 typename Closed<Real>::Point at_split = end;
                 const Real e0 = f.C, e1 = end.curvature;
-                if ((e0 < 0) != (e1 < 0) && e0 != 0.0 && e1 != 0.0 && (omega < 0) == (om1 < 0)) {
+                const bool from_rest = omega == 0.0;
+                if ((e0 < 0) != (e1 < 0) && e0 != 0.0 && e1 != 0.0 && (from_rest || (omega < 0) == (om1 < 0))) {
                     const typename Closed<Real>::Found infl = f.inflection(0, u1, e0, e1, e_noise);
-                    if (infl.u > 0.0 && infl.u < u1 && (infl.q.omega < 0) != (omega < 0)) {
+                    if (infl.u > 0.0 && infl.u < u1 && infl.q.omega != 0.0 &&
+                        (from_rest || (infl.q.omega < 0) != (omega < 0))) {
                         u_split = infl.u;
                         at_split = infl.q;
                     }

@@ -198,10 +198,12 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
             // them); on a part where the input is linear, theta'' (a
             // combination of cosh and sinh on eq. 3) changes sign once at most,
             // so theta' vanishes at most twice, and only when theta'' changes
-            // sign while theta' keeps its sign at the ends: the part is then
-            // split where theta'' = 0 if theta' has the other sign there.
+            // sign while theta' keeps its sign at the ends, or starts from 0
+            // (the uplift from rest): the part is then split where theta'' = 0
+            // if theta' has the other sign there, or any sign after an uplift.
             // Missing this put a block at rest where it flew out and back
-            // within one step (an impact at the step's start, then a micro-bounce).
+            // within one step (an impact at the step's start, then a
+            // micro-bounce, or a rest that the uplift's own step ended).
             double pa = ta, pha = tha, poa = oma;
             while (!event && pa < tb) {
                 const InputPiece piece = input.piece_from(pa);
@@ -209,7 +211,8 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                 double phb = thb, pob = omb;
                 if (pb < tb) stepper->state_at(pb, phb, pob);
                 bool quiet = false;
-                if ((poa < 0) == (pob < 0) && poa != 0.0 && pob != 0.0) {
+                const bool from_rest = poa == 0.0;
+                if (from_rest || ((poa < 0) == (pob < 0) && poa != 0.0 && pob != 0.0)) {
                     // theta'' on this part, from the input's piece holding it.
                     auto curvature_at = [&](double s) {
                         double th, om;
@@ -228,7 +231,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                         const double ti = locate(curvature_at, pa, pb);
                         double thi, omi;
                         stepper->state_at(ti, thi, omi);
-                        if (ti > pa && ti < pb && (omi < 0) != (poa < 0) && omi != 0.0) {
+                        if (ti > pa && ti < pb && (from_rest || (omi < 0) != (poa < 0)) && omi != 0.0) {
                             pb = ti;
                             phb = thi;
                             pob = omi;
