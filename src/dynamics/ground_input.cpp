@@ -15,6 +15,16 @@ double InputPiece::at(double t) const {
     return c0 + c1 * u + (s != 0.0 ? s * std::sin(w * u + phase) : 0.0);
 }
 
+double InputPiece::rate(double t) const { return c1 + (s != 0.0 ? s * w * std::cos(w * (t - t0) + phase) : 0.0); }
+
+double InputPiece::next_sine_zero(double t) const {
+    if (s == 0.0) return t1;
+    // The phase at t rounds by ~eps (w t + |phase|): a zero that close to t is t's own.
+    const double phi = w * (t - t0) + phase, slack = 8 * std::numeric_limits<double>::epsilon() * (std::fabs(phi) + 1);
+    const double z = t0 + ((std::floor((phi + slack) / M_PI) + 1) * M_PI - phase) / w;
+    return z > t && z < t1 ? z : t1;
+}
+
 PulseInput::PulseInput(PulseTrain train, double pga_g, double to_seconds)
     : train_(std::move(train)), pga_(pga_g), to_(to_seconds) {
     if (!(std::isfinite(pga_) && pga_ > 0)) throw std::invalid_argument("pulse input: PGA must be > 0");

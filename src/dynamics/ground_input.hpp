@@ -20,6 +20,11 @@ struct InputPiece {
     double c0 = 0, c1 = 0; // polynomial part, in g and g/s
     double s = 0, w = 0, phase = 0;  // sinusoidal part, in g, rad/s, rad
     double at(double t) const;       // a/g at t in [t0, t1]
+    double rate(double t) const;     // (a/g)' at t: c1 + s w cos(w (t - t0) + phase)
+    // The first time after t (by more than rounding) where the sinusoidal
+    // part crosses 0, w (t - t0) + phase = k pi; t1 when none comes before
+    // it or there is no sinusoidal part.
+    double next_sine_zero(double t) const;
 };
 
 class GroundInput {

@@ -48,6 +48,13 @@ double Model::acceleration(double theta, int sigma, double a_g) const {
     return p2 * (a_g * std::cos(u) - std::sin(u));
 }
 
+double Model::jerk(double theta, double omega, int sigma, double a_g, double a_rate) const {
+    const double p2 = block.p * block.p;
+    if (equation == Equation::linearised) return p2 * (omega + a_rate);
+    const double u = sigma * block.alpha - theta;
+    return p2 * ((a_rate + omega) * std::cos(u) + a_g * omega * std::sin(u));
+}
+
 double Model::energy(double theta, double omega, int sigma) const {
     const double p2 = block.p * block.p;
     if (equation == Equation::linearised) {

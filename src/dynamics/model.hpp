@@ -41,6 +41,10 @@ struct Model {
     double uplift_threshold() const;
     // theta'' on corner sigma under a ground acceleration a/g.
     double acceleration(double theta, int sigma, double a_g) const;
+    // The rate of theta'' under a ground acceleration a/g changing at a_rate (1/s):
+    //   linearised: p^2 (theta' + a')
+    //   full:       p^2 [(a' + theta') cos(sigma alpha - theta) + a theta' sin(sigma alpha - theta)]
+    double jerk(double theta, double omega, int sigma, double a_g, double a_rate) const;
     // Energy per unit inertia with the ground at rest, and its value at the
     // unstable equilibrium theta = sigma alpha (the top).
     double energy(double theta, double omega, int sigma) const;

@@ -195,39 +195,75 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
             // The step's parts, each holding at most one extremum of theta,
             // which the analysis below assumes.  A part first ends at the
             // input's next kink (a record's sample; Dormand-Prince steps across
-            // them); on a part where the input is linear, theta'' (a
-            // combination of cosh and sinh on eq. 3) changes sign once at most,
-            // so theta' vanishes at most twice, and only when theta'' changes
-            // sign while theta' keeps its sign at the ends, or starts from 0
-            // (the uplift from rest): the part is then split where theta'' = 0
-            // if theta' has the other sign there, or any sign after an uplift.
-            // Missing this put a block at rest where it flew out and back
-            // within one step (an impact at the step's start, then a
-            // micro-bounce, or a rest that the uplift's own step ended).
+            // them) and, on a sinusoidal piece, where the sine crosses 0.  On
+            // a part where the input is linear, theta'' (a combination of cosh
+            // and sinh on eq. 3) changes sign once at most; on a sinusoidal one
+            // it can change sign twice, and the part is first cut between the
+            // two (below).  theta' then vanishes at most twice, and only when
+            // theta'' changes sign while theta' keeps its sign at the ends, or
+            // starts from 0 (the uplift from rest): the part is then split
+            // where theta'' = 0 if theta' has the other sign there, or any sign
+            // after an uplift.  Missing this put a block at rest where it flew
+            // out and back within one step (an impact at the step's start, then
+            // a micro-bounce, or a rest that the uplift's own step ended), or
+            // let it pass through the ground unseen.
             double pa = ta, pha = tha, poa = oma;
             while (!event && pa < tb) {
                 const InputPiece piece = input.piece_from(pa);
-                double pb = piece.t1 > pa && piece.t1 < tb ? piece.t1 : tb;
+                double pb = std::min(piece.t1 > pa && piece.t1 < tb ? piece.t1 : tb, piece.next_sine_zero(pa));
                 double phb = thb, pob = omb;
                 if (pb < tb) stepper->state_at(pb, phb, pob);
                 bool quiet = false;
                 const bool from_rest = poa == 0.0;
-                if (from_rest || ((poa < 0) == (pob < 0) && poa != 0.0 && pob != 0.0)) {
+                auto keeps_sign = [&] { return from_rest || ((poa < 0) == (pob < 0) && poa != 0.0 && pob != 0.0); };
+                if (piece.s != 0.0 || keeps_sign()) {
                     // theta'' on this part, from the input's piece holding it.
                     auto curvature_at = [&](double s) {
                         double th, om;
                         stepper->state_at(s, th, om);
                         return model.acceleration(th, sigma, piece.at(s));
                     };
-                    const double ea = model.acceleration(pha, sigma, piece.at(pa)),
-                                 eb = model.acceleration(phb, sigma, piece.at(pb));
+                    const double ea = model.acceleration(pha, sigma, piece.at(pa));
+                    double eb = model.acceleration(phb, sigma, piece.at(pb));
+                    // On a sinusoidal piece, eq. 3 gives theta'' = p^2 (H + K sin(w u
+                    // + ph)), H = C cosh pu + D sinh pu, K = s w^2 / (p^2 + w^2), so
+                    // (theta'')'' - p^2 theta'' = -(p^2 + w^2) p^2 K sin(w u + ph), of
+                    // one sign on the part.  Where it is <= 0, theta'' has no
+                    // negative interior minimum (there it would be > 0); where >= 0,
+                    // no positive interior maximum.  Ends of opposite signs then hold
+                    // one root, ends of one sign none or two: two when theta'' turns
+                    // back inside (theta''' towards 0 at the start, away from it at
+                    // the end) and reaches the other sign at the turn.  The part is
+                    // then cut at the turn, each side holding one root.  (On the full
+                    // equation the same check runs, without that proof.)
+                    if (piece.s != 0.0 && ea * eb > 0.0) {
+                        auto jerk_at = [&](double s) {
+                            double th, om;
+                            stepper->state_at(s, th, om);
+                            return model.jerk(th, om, sigma, piece.at(s), piece.rate(s));
+                        };
+                        const double ja = model.jerk(pha, poa, sigma, piece.at(pa), piece.rate(pa)),
+                                     jb = model.jerk(phb, pob, sigma, piece.at(pb), piece.rate(pb));
+                        if (ja * ea < 0.0 && jb * eb > 0.0) {
+                            const double tx = locate(jerk_at, pa, pb);
+                            double thx, omx;
+                            stepper->state_at(tx, thx, omx);
+                            const double ex = model.acceleration(thx, sigma, piece.at(tx));
+                            if (tx > pa && tx < pb && ex * ea < 0.0) {
+                                pb = tx;
+                                phb = thx;
+                                pob = omx;
+                                eb = ex;
+                            }
+                        }
+                    }
                     // theta' and theta'' of one sign: sigma theta is monotone, and
                     // nothing happens inside when it ends above the ground's noise,
                     // below the fall and on the side of alpha it started.
                     const double sa = sigma * pha, sb = sigma * phb;
-                    quiet = ea * eb > 0.0 && sa >= 0.0 && sb > noise && sb < options.overturn_angle &&
+                    quiet = keeps_sign() && ea * eb > 0.0 && sa >= 0.0 && sb > noise && sb < options.overturn_angle &&
                             !(std::isnan(result.t_first_alpha) && sa < alpha && sb >= alpha);
-                    if ((ea < 0) != (eb < 0) && ea != 0.0 && eb != 0.0) {
+                    if (keeps_sign() && (ea < 0) != (eb < 0) && ea != 0.0 && eb != 0.0) {
                         const double ti = locate(curvature_at, pa, pb);
                         double thi, omi;
                         stepper->state_at(ti, thi, omi);
