@@ -108,6 +108,11 @@ if [ -d "$records" ]; then
             --record "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.2 --p 2 --restitution housner \
             --solver $solver --rtol 1e-12
     done
+    # Restitution 1, alpha just below the PGA (0.300451 g): lifted by 1e-9
+    # alpha, the block rocks at that amplitude to the record's end; the run
+    # used to stop at 1e6 impacts ("impact cascade did not end", exit 1).
+    check "a hairline rocking to the end" "impacts: 1062" "$rocking" simulate \
+        --record "$records/esm/IT.NRC..HGE.D.20161026.171036.C.ACC.ASC" --alpha 0.3 --p 0.7
     check "collapse below uplift says so" "the record never lifts the block at all (PGA 0.359399 g <= alpha = 0.5)" \
         "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.5
     check "collapse json" '"found": true' "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15 --json

@@ -86,19 +86,20 @@ bool begin_pass(RunState<Real>& s, SimulationResult& result, const Model& model,
     return !(s.t >= t_fin && stop_after_input(model, options, s, t_fin));
 }
 
-// Counts an impact at t_impact and keeps its time; throws past
-// options.max_impacts (a cascade that does not end).  True when it comes
-// within 1e-6 / p of the previous impact: a bounce too small to resolve,
-// which ends the cascade.
+// Counts an impact at t_impact and keeps its time (the first
+// options.max_impact_times); throws past options.max_impacts.  True when it
+// comes within 1e-6 / p of the previous impact: a bounce too small to
+// resolve, which ends the cascade.
 template <class Real>
 bool record_impact(SimulationResult& result, Real t_impact, const SimulationOptions& options, Real p) {
+    const bool micro = result.impacts > 0 && t_impact - result.t_last_impact < 1e-6 / p;
     if (result.impacts == 0) result.t_first_impact = static_cast<double>(t_impact);
-    result.impact_times.push_back(static_cast<double>(t_impact));
+    result.t_last_impact = static_cast<double>(t_impact);
+    if (result.impact_times.size() < options.max_impact_times) result.impact_times.push_back(result.t_last_impact);
     if (++result.impacts > options.max_impacts)
-        throw std::runtime_error("impact cascade did not end after " + std::to_string(options.max_impacts) +
-                                 " impacts (t = " + std::to_string(static_cast<double>(t_impact)) + " s)");
-    return result.impact_times.size() >= 2 &&
-           t_impact - result.impact_times[result.impact_times.size() - 2] < 1e-6 / p;
+        throw std::runtime_error("more than " + std::to_string(options.max_impacts) + " impacts by t = " +
+                                 std::to_string(static_cast<double>(t_impact)) + " s: a cascade that does not end");
+    return micro;
 }
 
 // The impact itself: theta = 0, the angular velocity om_i before it times
