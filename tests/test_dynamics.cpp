@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "dynamics/simulate.hpp"
@@ -37,6 +38,33 @@ SimulationOptions with(SolverKind kind, double rtol = 1e-10) {
 }
 
 const SolverKind kOde[] = {SolverKind::dopri5, SolverKind::rkf78, SolverKind::bulirsch_stoer, SolverKind::gsl_rk8pd};
+
+// Whether two runs agree to tol (in alpha): outcome, peak and theta(t_fin).
+bool runs_agree(const SimulationResult& x, const SimulationResult& y, double alpha, double tol) {
+    return x.overturned == y.overturned && x.overturned_during_input == y.overturned_during_input &&
+           std::fabs(x.theta_at_tfin - y.theta_at_tfin) <= tol * alpha &&
+           std::fabs(x.max_abs_theta_input - y.max_abs_theta_input) <= tol * alpha;
+}
+
+// Whether a run is well conditioned: its probe (the same input scaled by
+// 1 + 1e-13) gives the same answers to 1e-9 alpha and every impact within 1e-9 s.
+bool well_conditioned(const SimulationResult& ref, const SimulationResult& probe, double alpha) {
+    if (!runs_agree(ref, probe, alpha, 1e-9) || ref.impacts != probe.impacts ||
+        ref.impact_times.size() != probe.impact_times.size())
+        return false;
+    for (std::size_t i = 0; i < ref.impact_times.size(); ++i)
+        if (std::fabs(ref.impact_times[i] - probe.impact_times[i]) > 1e-9) return false;
+    return true;
+}
+
+// A run against the reference, for a failure's message.
+std::string against(const SimulationResult& r, const SimulationResult& ref, double alpha) {
+    std::ostringstream os;
+    os << "peak " << r.max_abs_theta_input / alpha << " alpha against " << ref.max_abs_theta_input / alpha
+       << ", theta(t_fin) " << r.theta_at_tfin / alpha << " against " << ref.theta_at_tfin / alpha << ", overturned "
+       << r.overturned << " against " << ref.overturned << ", impacts " << r.impacts << " against " << ref.impacts;
+    return os.str();
+}
 
 // A deterministic broadband "record": a sum of decaying sines, sampled at dt.
 SampledInput synthetic_record(double dt, double seconds, double scale) {
@@ -651,25 +679,13 @@ TEST(Dynamics, OnRandomOneSinePulsesJustAboveTheThresholdTheSolversAgree) {
         const std::string what = "case " + std::to_string(it) + ", alpha " + std::to_string(alpha) + ", p " +
                                  std::to_string(p) + ", a_p/alpha " + std::to_string(ap / alpha) + ", w_p/p " +
                                  std::to_string(wp / p);
-        auto agree = [&](const SimulationResult& x, const SimulationResult& y, double tol) {
-            return x.overturned == y.overturned && x.overturned_during_input == y.overturned_during_input &&
-                   x.impacts == y.impacts && std::fabs(x.theta_at_tfin - y.theta_at_tfin) <= tol * alpha &&
-                   std::fabs(x.max_abs_theta_input - y.max_abs_theta_input) <= tol * alpha;
-        };
-        const SimulationResult ref = simulate(m, input, with(SolverKind::exact)),
-                               probe = simulate(m, nudged, with(SolverKind::exact));
-        bool conditioned = agree(ref, probe, 1e-9);
-        for (std::size_t i = 0; conditioned && i < ref.impact_times.size(); ++i)
-            conditioned = std::fabs(ref.impact_times[i] - probe.impact_times[i]) <= 1e-9;
-        if (!conditioned) continue;
+        const SimulationResult ref = simulate(m, input, with(SolverKind::exact));
+        if (!well_conditioned(ref, simulate(m, nudged, with(SolverKind::exact)), alpha)) continue;
         ++well;
         for (SolverKind k : {SolverKind::rkf78, SolverKind::gsl_rk8pd, SolverKind::bulirsch_stoer}) {
             const SimulationResult r = simulate(m, input, with(k, 1e-12));
-            EXPECT_TRUE(agree(ref, r, 1e-7))
-                << what << ", " << solver_name(k) << ": peak " << r.max_abs_theta_input / alpha << " alpha against "
-                << ref.max_abs_theta_input / alpha << ", theta(t_fin) " << r.theta_at_tfin / alpha << " against "
-                << ref.theta_at_tfin / alpha << ", overturned " << r.overturned << " against " << ref.overturned
-                << ", impacts " << r.impacts << " against " << ref.impacts;
+            EXPECT_TRUE(runs_agree(ref, r, alpha, 1e-7) && r.impacts == ref.impacts)
+                << what << ", " << solver_name(k) << ": " << against(r, ref, alpha);
         }
     }
     // Not a vacuous test: most cases are well conditioned (measured 951 of 1000).
@@ -727,17 +743,8 @@ TEST(Dynamics, OnRandomInputsEverySolverAgreesWhereTheMotionIsWellConditioned) {
             what += " (pulse train)";
         }
         what += ", alpha " + std::to_string(alpha) + ", p " + std::to_string(p);
-        auto agree = [&](const SimulationResult& x, const SimulationResult& y, double tol) {
-            return x.overturned == y.overturned && x.overturned_during_input == y.overturned_during_input &&
-                   std::fabs(x.theta_at_tfin - y.theta_at_tfin) <= tol * alpha &&
-                   std::fabs(x.max_abs_theta_input - y.max_abs_theta_input) <= tol * alpha;
-        };
-        const SimulationResult ref = simulate(m, *input, with(SolverKind::exact)),
-                               probe = simulate(m, *nudged, with(SolverKind::exact));
-        bool conditioned = agree(ref, probe, 1e-9) && ref.impact_times.size() == probe.impact_times.size();
-        for (std::size_t i = 0; conditioned && i < ref.impact_times.size(); ++i)
-            conditioned = std::fabs(ref.impact_times[i] - probe.impact_times[i]) <= 1e-9;
-        if (!conditioned) continue;
+        const SimulationResult ref = simulate(m, *input, with(SolverKind::exact));
+        if (!well_conditioned(ref, simulate(m, *nudged, with(SolverKind::exact)), alpha)) continue;
         ++well;
         SimulationOptions general = with(SolverKind::exact);
         general.solver.record_kernel = false;
@@ -747,12 +754,9 @@ TEST(Dynamics, OnRandomInputsEverySolverAgreesWhereTheMotionIsWellConditioned) {
                                                                {with(SolverKind::bulirsch_stoer, 1e-12), 1e-7}};
         for (const auto& [o, tol] : others) {
             const SimulationResult r = simulate(m, *input, o);
-            EXPECT_TRUE(agree(ref, r, tol))
+            EXPECT_TRUE(runs_agree(ref, r, alpha, tol))
                 << what << ", " << solver_name(o.solver.kind) << (o.solver.record_kernel ? "" : " (general path)")
-                << ": peak " << r.max_abs_theta_input / alpha << " alpha against " << ref.max_abs_theta_input / alpha
-                << ", theta(t_fin) " << r.theta_at_tfin / alpha << " against " << ref.theta_at_tfin / alpha
-                << ", overturned " << r.overturned << " against " << ref.overturned << ", impacts " << r.impacts
-                << " against " << ref.impacts;
+                << ": " << against(r, ref, alpha);
         }
     }
     // Not a vacuous test: most cases are well conditioned (measured 323 of 400).
