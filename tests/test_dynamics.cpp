@@ -902,6 +902,15 @@ TEST(Dynamics, WithRestitutionOneAHairlineRockingGoesOnToTheRecordsEnd) {
         EXPECT_NEAR(r.t_last_impact, T, static_cast<double>(up + down)) << what;
         EXPECT_NEAR(r.max_abs_theta_input, peak, (kernel ? 1e-12 : 1e-8) * peak) << what;
         EXPECT_FALSE(r.overturned) << what;
+        // The guard still stops a run past max_impacts, and says which.
+        o.max_impacts = 1000;
+        try {
+            simulate(linear_model(alpha, p, 1.0), input, o);
+            ADD_FAILURE() << what << ": no stop at 1000 impacts";
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find("more than 1000 impacts by t = 0.000267"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("max_impacts"), std::string::npos) << e.what();
+        }
     }
 }
 

@@ -107,7 +107,8 @@ void run_fig05(SceneContext& ctx) {
                 const PulseInput input(train, q * kAlpha * rd, x / kP);
                 const SimulationResult r = simulate(model, input, options_for(ctx.reference()));
                 // impacts during the input only (the free rocking after it has its own)
-                if (r.impact_times.size() < static_cast<std::size_t>(r.impacts) && r.impact_times.back() <= r.t_fin)
+                if (r.impact_times.size() < static_cast<std::size_t>(r.impacts) &&
+                    (r.impact_times.empty() || r.impact_times.back() <= r.t_fin))
                     throw std::runtime_error("fig05: more impacts during the input than SimulationResult keeps");
                 const auto impacts_input = std::count_if(r.impact_times.begin(), r.impact_times.end(),
                                                          [&](double t) { return t <= r.t_fin; });

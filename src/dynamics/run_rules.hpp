@@ -98,7 +98,8 @@ bool record_impact(SimulationResult& result, Real t_impact, const SimulationOpti
     if (result.impact_times.size() < options.max_impact_times) result.impact_times.push_back(result.t_last_impact);
     if (++result.impacts > options.max_impacts)
         throw std::runtime_error("more than " + std::to_string(options.max_impacts) + " impacts by t = " +
-                                 std::to_string(static_cast<double>(t_impact)) + " s: a cascade that does not end");
+                                 std::to_string(static_cast<double>(t_impact)) +
+                                 " s: the run is stopped (SimulationOptions::max_impacts, a guard on run time)");
     return micro;
 }
 
