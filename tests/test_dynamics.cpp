@@ -66,6 +66,21 @@ std::string against(const SimulationResult& r, const SimulationResult& ref, doub
     return os.str();
 }
 
+// The first u after lo where f, positive from lo, stops being positive: bracketed
+// by steps of 1 % of u (f's arcs here are single excursions, slower than that),
+// then bisected, in long double; until when no bracket ends before until.
+template <class F>
+long double first_fall(F f, long double lo, long double until) {
+    long double hi = lo;
+    while (f(hi) > 0 && hi < until) lo = hi, hi *= 1.01L;
+    if (hi >= until) return until;
+    for (int i = 0; i < 200; ++i) {
+        const long double mid = (lo + hi) / 2;
+        (f(mid) > 0 ? lo : hi) = mid;
+    }
+    return (lo + hi) / 2;
+}
+
 // A deterministic broadband "record": a sum of decaying sines, sampled at dt.
 SampledInput synthetic_record(double dt, double seconds, double scale) {
     std::vector<double> a;
@@ -432,16 +447,10 @@ TEST(Dynamics, AnExcursionOutAndBackWithinOneStepIsFollowed) {
             auto theta = [&](long double u) {
                 return lin * (std::cosh(p * u) - 1) + D * std::sinh(p * u) - sign * c1 * u;
             };
-            // Bracket the first return to 0 by steps of 1% (the excursion is
-            // one arc: theta'' changes sign once at most), then bisect.
-            long double lo = 1e-12L, hi = lo;
-            while (sigma * theta(hi) > 0 && t + hi < dt) lo = hi, hi *= 1.01L;
-            if (t + hi >= dt) return times;
-            for (int i = 0; i < 200; ++i) {
-                const long double mid = (lo + hi) / 2;
-                (sigma * theta(mid) > 0 ? lo : hi) = mid;
-            }
-            const long double u = (lo + hi) / 2;
+            // The first return to 0 (the excursion is one arc: theta''
+            // changes sign once at most).
+            const long double u = first_fall([&](long double v) { return sigma * theta(v); }, 1e-12L, dt - t);
+            if (u >= dt - t) return times;
             w = p * (lin * std::sinh(p * u) + D * std::cosh(p * u)) - sign * c1;
             t += u;
             times.push_back(t);
@@ -496,14 +505,8 @@ TEST(Dynamics, AnUpliftThatFallsBackWithinItsFirstStepIsFollowed) {
     auto first_arc = [](auto theta, auto omega, long double until, long double& t_peak) {
         // theta rises first (theta'' > 0 at 0): the peak is where theta' turns
         // negative, the impact where theta turns negative after it.
-        long double lo = 1e-9L, hi = lo;
-        while (omega(hi) > 0 && hi < until) lo = hi, hi *= 1.01L;
-        for (int i = 0; i < 200; ++i) (omega((lo + hi) / 2) > 0 ? lo : hi) = (lo + hi) / 2;
-        t_peak = (lo + hi) / 2;
-        lo = hi = t_peak;
-        while (theta(hi) > 0 && hi < until) lo = hi, hi *= 1.01L;
-        for (int i = 0; i < 200; ++i) (theta((lo + hi) / 2) > 0 ? lo : hi) = (lo + hi) / 2;
-        return (lo + hi) / 2;
+        t_peak = first_fall(omega, 1e-9L, until);
+        return first_fall(theta, t_peak, until);
     };
     struct Case {
         std::string name;
@@ -612,15 +615,13 @@ TEST(Dynamics, ThetaDoubleDotTurningTwiceInsideOneSineStepIsFollowed) {
             auto theta = [&](long double u) {
                 return C * std::cosh(p * u) + D * std::sinh(p * u) + sigma * alpha + B * std::sin(w * (ti + u) + psi);
             };
-            // Bracket the return to the ground by steps of 1 % of the time
-            // since the impact (the arcs here are single excursions), then
-            // bisect; from 1e-9 s (1e-5 s after the uplift, where theta grows
-            // like u^3 and would be lost in C cosh + sigma alpha's rounding).
-            long double lo = truth.empty() ? 1e-5L : 1e-9L, hi = lo;
-            while (sigma * theta(hi) > 0 && ti + hi < pulse.t_end()) lo = hi, hi *= 1.01L;
-            if (ti + hi >= pulse.t_end()) break;
-            for (int i = 0; i < 200; ++i) (sigma * theta((lo + hi) / 2) > 0 ? lo : hi) = (lo + hi) / 2;
-            const long double u = (lo + hi) / 2;
+            // The return to the ground, searched from 1e-9 s (1e-5 s after the
+            // uplift, where theta grows like u^3 and would be lost in
+            // C cosh + sigma alpha's rounding).
+            const long double until = pulse.t_end() - ti;
+            const long double u =
+                first_fall([&](long double v) { return sigma * theta(v); }, truth.empty() ? 1e-5L : 1e-9L, until);
+            if (u >= until) break;
             om = e * (p * (C * std::sinh(p * u) + D * std::cosh(p * u)) + B * w * std::cos(w * (ti + u) + psi));
             ti += u;
             truth.push_back(ti);
