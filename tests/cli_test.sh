@@ -92,7 +92,18 @@ check "one input only"               "give exactly one input" "$rocking" simulat
 status "one input only exits 2"      2 "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --case 2
 check "missing record is named"      "no-such-file:0: cannot open the file" "$rocking" simulate --record no-such-file --alpha 0.1 --p 1
 status "missing record exits 1"      1 "$rocking" simulate --record no-such-file --alpha 0.1 --p 1
+# Extremes: at 1e20 g the step lifts the block at t = 0 and it falls when (a - alpha)(cosh t - 1) = pi/2,
+# t = 1.7724538509055160e-10 s (mpmath, 60 digits); the record kernel put it at 0.05 s before 2026-11-21.
+check "fall under 1e20 g"            '"t_overturn": 1.77245385090551' "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --pga 1e20 --json
+check "bulirsch-stoer's range"       "bulirsch-stoer: p^2 PGA = 1e+100 (rad/s)^2 g is beyond its range" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --pga 1e100 --solver bulirsch-stoer
 rm -f "$step"
+# A step of max_step_p / p below the resolution of t spun for ever: p = 1e20 rad/s, the block
+# lifted at t = 0.01 alpha / 0.3 = 0.00667 s by a record rising from 0 to 0.3 g in 0.01 s.
+ramp=$(mktemp)
+printf '0\n0.3\n0.5\n' > "$ramp"
+check "a step below t's resolution"  "no progress at t = 0.00666666666666" timeout 60 "$rocking" simulate --record "$ramp" --unit g --record-dt 0.01 --alpha 0.2 --p 1e20
+status "a step below t's resolution exits 1" 1 timeout 60 "$rocking" simulate --record "$ramp" --unit g --record-dt 0.01 --alpha 0.2 --p 1e20
+rm -f "$ramp"
 # records: every file in the shared folder can be assessed (skipped without the folder).
 records="$(dirname "$0")/../../shared/records"
 if [ -d "$records" ]; then

@@ -265,6 +265,93 @@ TEST(Dynamics, OdeSolversRefuseAToleranceBelow100Eps) {
     EXPECT_NO_THROW(simulate(linear_model(), input, with(SolverKind::exact, 0)));
 }
 
+TEST(Dynamics, AStepBelowTheResolutionOfTimeStopsTheRunWithAClearError) {
+    // Steps are at most max_step_p / p long.  Where that is below half an ulp
+    // of t, t + h == t: every solver spun in place for ever (p = 1e20 rad/s
+    // under a 0.05 s input; a 6-sample input 5e16 s long at p = 2).  The
+    // driver now stops such a run and names the cause.  Inside double's
+    // reach (p = 1e10: p ulp(t) ~ 1e-8 at the uplift, 0.00667 s) every
+    // solver still follows the block, which falls about 1e-9 s later.
+    const SampledInput brief({0.0, 0.3, 0.5, 0.1, -0.4, 0.0}, 0.01, "brief");
+    const SampledInput endless({0.0, 0.3, 0.5, 0.1, -0.4, 0.0}, 1e16, "endless");
+    for (Equation eq : {Equation::linearised, Equation::full})
+        for (SolverKind k : {SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78, SolverKind::bulirsch_stoer,
+                             SolverKind::gsl_rk8pd}) {
+            if (eq == Equation::full && k == SolverKind::exact) continue;
+            const std::string what = solver_name(k) + (eq == Equation::full ? ", full" : ", linearised");
+            auto model = [&](double p) {
+                Model m = linear_model(0.2, p);
+                m.equation = eq;
+                return m;
+            };
+            for (const auto& [input, p] : {std::pair<const SampledInput*, double>{&brief, 1e20}, {&endless, 2.0}}) {
+                try {
+                    simulate(model(p), *input, with(k, 1e-6));
+                    ADD_FAILURE() << what << ", p " << p << ": no error";
+                } catch (const std::runtime_error& e) {
+                    // It names where: the uplift, the input's 0.3 g reached in one dt.
+                    const std::string message = e.what();
+                    const double t_up = model(p).uplift_threshold() / 0.3 * input->dt();
+                    const std::size_t at = message.find("at t = ");
+                    ASSERT_NE(at, std::string::npos) << what << ": " << message;
+                    EXPECT_NEAR(std::stod(message.substr(at + 7)), t_up, 1e-12 * t_up) << what << ": " << message;
+                    EXPECT_NE(message.find("below double's resolution"), std::string::npos) << what << ": " << message;
+                }
+            }
+            const double t_up = model(1e10).uplift_threshold() / 0.3 * brief.dt();
+            const SimulationResult r = simulate(model(1e10), brief, with(k, 1e-6));
+            EXPECT_TRUE(r.overturned_during_input) << what;
+            EXPECT_GT(r.t_overturn, t_up) << what;
+            EXPECT_LT(r.t_overturn, t_up + 1e-8) << what;
+        }
+}
+
+TEST(Dynamics, UnderARampOfAnyAmplitudeTheBlockFallsWhereTheClosedFormSays) {
+    // A record of two samples, 0 and A g, 0.01 s apart: the block lifts at
+    // t_up = alpha dt / A and, from rest on a ramp of slope c1 = A / dt,
+    // theta = c1 (sinh pu - pu) / p (eq. 3, u = t - t_up), which reaches the
+    // fall angle within the piece for A >= 1e10.  Truth in long double (the
+    // series of sinh x - x for x < 0.01).  Before 2026-11-21: the kernel put
+    // the fall at 1e-15 s from A = 1e20 (its rounding level for the whole
+    // piece, 20 rad, above the fall angle), every solver at 1e-15 s from
+    // about 1e35 g (move_until's absolute floor), the general path 3e8 times
+    // late at 1e100 g (TOMS 748 out of iterations), Bulirsch-Stoer 3.6 times
+    // late from 1e150 g and for ever at 1e300 g (it is now refused beyond
+    // p^2 PGA = 1e90: its dense output is NaN from 1e100 g).
+    const double alpha = 0.2, p = 2.0, dt = 0.01;
+    for (double A : {1e10, 1e20, 1e30, 1e50, 1e80, 1e100, 1e200, 1e300, 1.7e306}) {
+        const SampledInput ramp({0.0, A}, dt, "ramp");
+        const SimulationOptions defaults;
+        const long double c1 = static_cast<long double>(A) / dt, fall = defaults.overturn_angle;
+        auto theta = [&](long double u) {
+            const long double x = p * u;
+            return c1 / p * (x < 1e-2L ? x * x * x / 6 * (1 + x * x / 20 * (1 + x * x / 42 * (1 + x * x / 72)))
+                                       : std::sinh(x) - x);
+        };
+        long double lo = 0, hi = 1e-300L;
+        while (theta(hi) < fall) hi *= 2;
+        for (int i = 0; i < 300; ++i) (theta((lo + hi) / 2) < fall ? lo : hi) = (lo + hi) / 2;
+        const double truth = static_cast<double>(alpha / c1 + lo);
+        ASSERT_LT(truth, dt) << A;
+        for (int path = 0; path < 6; ++path) {
+            const SolverKind k = path < 2 ? SolverKind::exact : kOde[path - 2];
+            SimulationOptions o = with(k, 1e-10);
+            o.solver.atol_alpha = 1e-10;
+            o.solver.record_kernel = path == 1;
+            const std::string what = (path == 1 ? "record kernel" : solver_name(k)) + " at " + std::to_string(A) + " g";
+            if (k == SolverKind::bulirsch_stoer && A > 1e80) {
+                EXPECT_THROW(simulate(linear_model(alpha, p), ramp, o), std::invalid_argument) << what;
+                continue;
+            }
+            const SimulationResult r = simulate(linear_model(alpha, p), ramp, o);
+            EXPECT_TRUE(r.overturned_during_input) << what;
+            // Exact: rounding (measured 3e-16).  ODE solvers at rtol 1e-10:
+            // measured 1.9e-12 (Dormand-Prince at 1e10 g), 1e-15 elsewhere.
+            EXPECT_NEAR(r.t_overturn, truth, (k == SolverKind::exact ? 2e-15 : 1e-10) * truth) << what;
+        }
+    }
+}
+
 TEST(Dynamics, ConvergenceOrderOfTheRungeKuttaMethods) {
     // Fixed steps on one pulse of the linearised equation, where
     // theta/alpha = (q - 1)(cosh pt - 1): the error falls as h^order.

@@ -160,6 +160,17 @@ struct Closed {
         return 4 * std::numeric_limits<Real>::epsilon() * (std::fabs(C) + std::fabs(W) * u1) * (1 + k1);
     }
 
+    // The rounding level of what solve() seeks, at u (the levels above on
+    // [0, u], plus four ulps of the level sought).
+    Real noise_at(Seek seek, Real u, Real level) const {
+        const Real k1 = k1_bound(u);
+        switch (seek) {
+            case Seek::level: return theta_noise(u, k1) + 4 * std::numeric_limits<Real>::epsilon() * std::fabs(level);
+            case Seek::extremum: return omega_noise(u, k1);
+            default: return curvature_noise(u, k1);
+        }
+    }
+
     // A root and the point there.
     struct Found {
         Real u;
@@ -211,7 +222,12 @@ struct Closed {
             const Real h = newton * r2 / 2;
             const Real step = std::fabs(h) < Real(0.5) ? newton * (1 + h) : newton;
             Real next = x - step;
-            if (std::fabs(f) <= f_noise) {
+            // The caller's rounding level holds for the whole bracket; where
+            // the state grows by orders of magnitude across it (an input of
+            // 1e20 g: theta 1e16 rad at the piece's end, a rounding level of
+            // 20 rad against the fall angle sought, 1.57), the level at x is
+            // the one that says f is 0 within rounding.
+            if (std::fabs(f) <= f_noise && std::fabs(f) <= noise_at(seek, x, level)) {
                 if (!(next >= a && next <= b)) next = x;
                 return {next, near(q, x, next - x)};
             }
@@ -227,6 +243,25 @@ struct Closed {
                 return {next, near(q, x, next - x)};
             x = next;
         }
+        // Not settled in 100 steps: a bracket spanning decades (an input of
+        // 1e100 g, whose fall comes 1e-34 s into a 0.01 s piece), where each
+        // step from the far side shrinks it by a constant factor only, and
+        // the cap returned a point 1e6 times the root.  Bisection, geometric
+        // while the ends differ by more than a factor 4, to 2 ulps.
+        auto value = [&](const Point& q) {
+            switch (seek) {
+                case Seek::level: return sigma * q.theta - level;
+                case Seek::extremum: return q.omega;
+                default: return q.curvature;
+            }
+        };
+        for (int i = 0; i < 2200 && b - a > 2 * eps * std::fmax(std::fabs(a), std::fabs(b)); ++i) {
+            x = a > 0 && b > 4 * a ? std::sqrt(a) * std::sqrt(b) : a + (b - a) / 2;
+            if (!(x > a && x < b)) break;
+            if (flip * value(at(x)) < 0) a = x;
+            else b = x;
+        }
+        x = a + (b - a) / 2;
         return {x, at(x)};
     }
     Found level(Real sigma, Real value, Real lo, Real hi, Real flo, Real fhi, Real f_noise,

@@ -55,13 +55,16 @@ public:
 };
 
 // t moved forward until exceeds(t) holds, at most 64 tries, stopping at
-// t_end: one ulp, then steps doubling from 1e-15 max(1, |t|).  What makes a
-// crossing located on one evaluation of the input hold for another, whose
-// rounding differs (uplift_time).
+// t_end: one ulp, then steps doubling from 1e-15 |t| (1e-15 s at t = 0).
+// What makes a crossing located on one evaluation of the input hold for
+// another, whose rounding differs (uplift_time).  The steps are relative to
+// t: an absolute floor (1e-15 s, before 2026-11-21) put the uplift of an
+// input of 1e35 g or more, at 1e-37 s, at 1e-15 s, and its fall there too.
 template <class Exceeds>
 double move_until(double t, double t_end, Exceeds exceeds) {
+    const double scale = t != 0.0 ? 1e-15 * std::fabs(t) : 1e-15;
     for (int k = 0; k < 64 && t < t_end && !exceeds(t); ++k)
-        t = std::max(std::nextafter(t, INFINITY), t + 1e-15 * std::fmax(1.0, std::fabs(t)) * std::ldexp(1.0, std::min(k, 40)));
+        t = std::max(std::nextafter(t, INFINITY), t + scale * std::ldexp(1.0, std::min(k, 40)));
     return t;
 }
 

@@ -29,6 +29,7 @@
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "dynamics/stepper.hpp"
@@ -50,11 +51,24 @@ struct RockingSystem {
     int sigma = 1;
     double t_stop = INFINITY;
 
-    // A new segment on corner sigma; returns the first trial step.
+    // A new segment on corner sigma; returns the first trial step: 1e-3 / p,
+    // shortened to where the input alone (its value and rate at t) would
+    // move theta by 1e-3 alpha, and at least 16 ulps of t (p t > 3e11): GSL
+    // refuses a step that leaves t where it was ("failure"), Odeint takes it
+    // in vain.  The input's bound is below 1e-3 / p only for inputs above
+    // 2000 alpha g or rates above 6e6 alpha p g/s.  Without it, under a ramp
+    // of 1e30 g, Bulirsch-Stoer's first step took theta to 1e17 rad, and its
+    // interpolant's rounding there (~10 rad) put the fall at the uplift.
     double start(int corner, double t, double stop) {
         sigma = corner;
         t_stop = stop;
-        return std::min(1e-3 / model->block.p, stop - t);
+        const InputPiece piece = input->piece_from(t);
+        const double p2 = model->block.p * model->block.p, move = 1e-3 * model->block.alpha;
+        const double a = std::fabs(piece.at(t)), rate = std::fabs(piece.rate(t));
+        double h = 1e-3 / model->block.p;
+        if (p2 * a * h * h > 2 * move) h = std::sqrt(2 * move / (p2 * a));
+        if (p2 * rate * h * h * h > 6 * move) h = std::cbrt(6 * move / (p2 * rate));
+        return std::min(std::max(h, 16 * std::numeric_limits<double>::epsilon() * std::fabs(t)), stop - t);
     }
 
     // Where a step that must not straddle a kink of the input ends: the
@@ -214,7 +228,15 @@ public:
         double t = t1_;
         h_ = std::min(h_, h_max);
         const int status = gsl_odeiv2_evolve_apply(evolve_, control_, step_, &gsl_sys_, &t, sys_.next_kink(t), &h_, y_);
-        if (status != GSL_SUCCESS) throw std::runtime_error("gsl rk8pd failed at t = " + std::to_string(t));
+        if (status != GSL_SUCCESS) {
+            char text[320];
+            // GSL fails where its step no longer moves t.
+            const bool unresolved = t + h_ == t;
+            std::snprintf(text, sizeof text, "gsl-rk8pd solver: failed at t = %.17g s with step %.3g s (GSL: %s)%s", t,
+                          h_, gsl_strerror(status),
+                          unresolved ? ": the step is below double's resolution there, the motion too fast for t" : "");
+            throw std::runtime_error(text);
+        }
         t1_ = t;
         ++steps_;
         return true;
@@ -254,6 +276,20 @@ std::unique_ptr<Stepper> make_stepper(const Model& model, const GroundInput& inp
                               solver_name(options.kind).c_str(), tol);
                 throw std::invalid_argument(text);
             }
+    // Bulirsch-Stoer breaks under absurd inputs: on a 0.01 s ramp at p = 2
+    // rad/s, from 1e100 g its dense output over the first step (as short as
+    // the input demands, 7e-36 s) is NaN (it scales derivatives by powers of
+    // the step), and with longer first steps its fall came 3.6 times late from
+    // 1e150 g and never at 1e300 g.  Verified to 1e95 g (tests: to 1e80 g);
+    // beyond p^2 PGA = 1e90 it is refused.  The other solvers hold to 1.7e306 g.
+    if (options.kind == SolverKind::bulirsch_stoer &&
+        !(model.block.p * model.block.p * input.peak() <= 1e90)) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "bulirsch-stoer: p^2 PGA = %.3g (rad/s)^2 g is beyond its range, 1e90: use another solver",
+                      model.block.p * model.block.p * input.peak());
+        throw std::invalid_argument(text);
+    }
     switch (options.kind) {
         case SolverKind::exact:
             if (model.equation != Equation::linearised)

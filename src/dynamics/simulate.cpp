@@ -5,6 +5,7 @@
 #include "numerics/roots.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <functional>
 #include <stdexcept>
 
@@ -105,6 +106,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
         stepper->reset(t, theta, omega, sigma, t_stop);
         double ta = t, tha = theta, oma = omega;
         bool event = false;
+        int stalled = 0;  // steps in a row that left t where it was
         // A block lifted from rest with an acceleration just above the threshold
         // rises from theta = 0 by less than rounding at first; a return to 0
         // before it has risen above that noise is no impact: it stays at rest.
@@ -182,6 +184,24 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
             return false;
         };
         while (!event && stepper->advance()) {
+            // A step shorter than half an ulp of t leaves t where it was, and
+            // there is nothing to analyse (a dense output's interpolant over
+            // it is 0/0).  An ODE solver's first steps may, and grow; where even
+            // max_step_p / p is that short (p t beyond double's resolution) no
+            // step ever moves t, and the run would never end.
+            if (stepper->t_end() > stepper->t_begin()) {
+                stalled = 0;
+            } else if (++stalled <= 100) {
+                continue;
+            } else {
+                char text[320];
+                std::snprintf(text, sizeof text,
+                              "%s solver: no progress at t = %.17g s in 100 steps: its step (at most max_step_p / p = "
+                              "%.3g s) is below double's resolution there: p t = %.3g (p = %.6g rad/s) is too large",
+                              solver_name(options.solver.kind).c_str(), stepper->t_begin(),
+                              options.solver.max_step_p / p, p * stepper->t_begin(), p);
+                throw std::runtime_error(text);
+            }
             // The step may have started after the last one seen (a batched run);
             // at the segment's start the state is known exactly (an interpolant
             // may put theta' = 0 a rounding error off and fake an extremum).
@@ -192,6 +212,12 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
             const double tb = stepper->t_end();
             double thb, omb;
             stepper->state_at(tb, thb, omb);
+            if (!std::isfinite(thb) || !std::isfinite(omb)) {
+                char text[240];
+                std::snprintf(text, sizeof text, "%s solver: the state is not finite at t = %.17g s (theta %g, theta' %g)",
+                              solver_name(options.solver.kind).c_str(), tb, thb, omb);
+                throw std::runtime_error(text);
+            }
             // The step's parts, each holding at most one extremum of theta,
             // which the analysis below assumes.  A part first ends at the
             // input's next kink (a record's sample; Dormand-Prince steps across
