@@ -92,6 +92,13 @@ check "one input only"               "give exactly one input" "$rocking" simulat
 status "one input only exits 2"      2 "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --case 2
 check "missing record is named"      "no-such-file:0: cannot open the file" "$rocking" simulate --record no-such-file --alpha 0.1 --p 1
 status "missing record exits 1"      1 "$rocking" simulate --record no-such-file --alpha 0.1 --p 1
+# A one-sine pulse 1e20 times slower than the block fell at its rounding's time (35 s, the closed form's 24.4 s).
+check "a one-sine far slower than the block is refused" "--wp: must be at least 1e-6 p = 2e-06 rad/s (got 1e-20)" "$rocking" simulate --one-sine --ap 0.45 --wp 1e-20 --alpha 0.15 --p 2
+status "a one-sine far slower exits 2" 2 "$rocking" simulate --one-sine --ap 0.45 --wp 1e-20 --alpha 0.15 --p 2
+# A time step of 0 read as "not given" (then "1 values, expected 2" at line 1); a negative one was put on line 0.
+check "record-dt 0 refused"          "--record-dt: must be > 0 (got 0)" "$rocking" simulate --record "$step" --unit g --record-dt 0 --alpha 0.1 --p 1
+status "record-dt 0 exits 2"         2 "$rocking" simulate --record "$step" --unit g --record-dt 0 --alpha 0.1 --p 1
+check "record --dt negative refused" "--dt: must be > 0 (got -0.1)" "$rocking" record info "$step" --unit g --dt -0.1
 # Extremes: at 1e20 g the step lifts the block at t = 0 and it falls when (a - alpha)(cosh t - 1) = pi/2,
 # t = 1.7724538509055160e-10 s (mpmath, 60 digits); the record kernel put it at 0.05 s before 2026-11-21.
 check "fall under 1e20 g"            '"t_overturn": 1.77245385090551' "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --pga 1e20 --json

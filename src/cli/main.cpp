@@ -251,6 +251,9 @@ records::Record load_record(const std::string& path, const Args& a, const std::s
         if (!a.values.count("--unit")) throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2)");
         const std::string unit = a.values.at("--unit");
         const double dt = a.values.count(dt_flag) ? number(dt_flag, a.values.at(dt_flag)) : 0.0;
+        // 0 would read as "not given" (a two-column file), and a negative
+        // step was reported against the file's line 0.
+        if (a.values.count(dt_flag) && !(dt > 0)) throw UsageError(dt_flag + ": must be > 0 (got " + a.values.at(dt_flag) + ")");
         return records::read_plain(path, unit, dt);
     }
     return records::read_any(path);
@@ -334,6 +337,19 @@ int cmd_simulate(int argc, char** argv) {
         input = std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
     } else if (one_sine) {
         if (!has("--ap") || !has("--wp")) throw UsageError("--one-sine needs --ap and --wp");
+        // A pulse far slower than the block lifts it by a_p w_p t cos psi over
+        // t ~ 1/p: below w_p = 1e-16 p that rise is under the rounding of a_p
+        // sin(...) itself, and the fall came at the rounding's time (w_p =
+        // 1e-20 rad/s, p = 2: 35.2 s exact, 2795 s rk8pd, where the closed
+        // form gives 24.4 s).  Refused below 1e-6 p, far from that edge.
+        if (num("--wp") > 0 && num("--wp") < 1e-6 * model.block.p) {
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "--wp: must be at least 1e-6 p = %.3g rad/s (got %g): slower pulses lift the block by less "
+                          "than the rounding of the input",
+                          1e-6 * model.block.p, num("--wp"));
+            throw UsageError(text);
+        }
         try {
             input = std::make_unique<OneSinePulse>(num("--ap"), num("--wp"), model.uplift_threshold());
         } catch (const std::invalid_argument& e) {
