@@ -9,6 +9,8 @@
 #include <initializer_list>
 #include <limits>
 
+#include "numerics/bisect.hpp"
+
 namespace rocking::dynamics::closed_piece {
 
 // The even series of the closed form, in y = x^2:
@@ -160,6 +162,14 @@ struct Closed {
         return 4 * std::numeric_limits<Real>::epsilon() * (std::fabs(C) + std::fabs(W) * u1) * (1 + k1);
     }
 
+    // What solve() seeks the root of, at the point q.
+    static Real sought(Seek seek, Real sigma, Real level, const Point& q) {
+        switch (seek) {
+            case Seek::level: return sigma * q.theta - level;
+            case Seek::extremum: return q.omega;
+            default: return q.curvature;
+        }
+    }
     // The rounding level of what solve() seeks, at u (the levels above on
     // [0, u], plus four ulps of the level sought).
     Real noise_at(Seek seek, Real u, Real level) const {
@@ -203,16 +213,16 @@ struct Closed {
         for (int i = 0; i < 100; ++i) {
             const Point q = at(x);
             Real f, f1, f2, f3;
+            f = sought(seek, sigma, level, q);
             switch (seek) {
                 case Seek::level:
-                    f = sigma * q.theta - level, f1 = sigma * q.omega, f2 = sigma * p2 * q.curvature,
-                    f3 = sigma * p2 * (q.omega + c1);
+                    f1 = sigma * q.omega, f2 = sigma * p2 * q.curvature, f3 = sigma * p2 * (q.omega + c1);
                     break;
                 case Seek::extremum:
-                    f = q.omega, f1 = p2 * q.curvature, f2 = p2 * (q.omega + c1), f3 = p2 * p2 * q.curvature;
+                    f1 = p2 * q.curvature, f2 = p2 * (q.omega + c1), f3 = p2 * p2 * q.curvature;
                     break;
                 default:
-                    f = q.curvature, f1 = q.omega + c1, f2 = p2 * q.curvature, f3 = p2 * (q.omega + c1);
+                    f1 = q.omega + c1, f2 = p2 * q.curvature, f3 = p2 * (q.omega + c1);
             }
             if (flip * f < 0) a = x;
             else b = x;
@@ -246,21 +256,10 @@ struct Closed {
         // Not settled in 100 steps: a bracket spanning decades (an input of
         // 1e100 g, whose fall comes 1e-34 s into a 0.01 s piece), where each
         // step from the far side shrinks it by a constant factor only, and
-        // the cap returned a point 1e6 times the root.  Bisection, geometric
-        // while the ends differ by more than a factor 4, to 2 ulps.
-        auto value = [&](const Point& q) {
-            switch (seek) {
-                case Seek::level: return sigma * q.theta - level;
-                case Seek::extremum: return q.omega;
-                default: return q.curvature;
-            }
-        };
-        for (int i = 0; i < 2200 && b - a > 2 * eps * std::fmax(std::fabs(a), std::fabs(b)); ++i) {
-            x = a > 0 && b > 4 * a ? std::sqrt(a) * std::sqrt(b) : a + (b - a) / 2;
-            if (!(x > a && x < b)) break;
-            if (flip * value(at(x)) < 0) a = x;
-            else b = x;
-        }
+        // the cap returned a point 1e6 times the root.  Bisection
+        // (bisect_decades: geometric across decades) to 2 ulps.
+        numerics::bisect_decades(a, b, [&](Real u) { return flip * sought(seek, sigma, level, at(u)) < 0; },
+                                 [&](Real lo, Real hi) { return hi - lo <= 2 * eps * std::fmax(std::fabs(lo), std::fabs(hi)); });
         x = a + (b - a) / 2;
         return {x, at(x)};
     }

@@ -3,8 +3,9 @@
 #pragma once
 
 #include <boost/math/tools/toms748_solve.hpp>
-#include <cmath>
 #include <cstdint>
+
+#include "numerics/bisect.hpp"
 
 namespace rocking::numerics {
 
@@ -17,8 +18,7 @@ namespace rocking::numerics {
 // TOMS 748 can run out of its 200 iterations on a bracket spanning decades
 // (a fall 1e-34 s into a step of 0.01 s, under an input of 1e100 g: it
 // stopped at [7e-52, 8e-26] and returned 4e-26).  The bracket it hands back
-// then goes on by bisection, geometric while its ends differ by more than a
-// factor 4 (positive ends), to the same tolerance.
+// then goes on by bisect_decades (bisect.hpp) to the same tolerance.
 template <class F>
 double root_of(F f, double a, double b, double fa, double fb, int bits) {
     const std::uintmax_t max_iterations = 200;
@@ -26,20 +26,9 @@ double root_of(F f, double a, double b, double fa, double fb, int bits) {
     boost::math::tools::eps_tolerance<double> tolerance(bits);
     auto r = boost::math::tools::toms748_solve(f, a, b, fa, fb, tolerance, iterations);
     if (iterations >= max_iterations) {
-        double lo = r.first, hi = r.second, flo = f(lo);
-        for (int i = 0; i < 2200 && !tolerance(lo, hi); ++i) {
-            const double x = lo > 0 && hi > 4 * lo ? std::sqrt(lo) * std::sqrt(hi) : lo + (hi - lo) / 2;
-            if (!(x > lo && x < hi)) break;
-            const double fx = f(x);
-            if (fx == 0) return x;
-            if ((fx < 0) == (flo < 0)) {
-                lo = x;
-                flo = fx;
-            } else {
-                hi = x;
-            }
-        }
-        r = {lo, hi};
+        const bool lo_negative = f(r.first) < 0;
+        bisect_decades(r.first, r.second, [&](double x) { return (f(x) < 0) == lo_negative; },
+                       [&](double lo, double hi) { return tolerance(lo, hi); });
     }
     return 0.5 * (r.first + r.second);
 }
