@@ -15,6 +15,7 @@
 #include "dynamics/simulate.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "qfactor/superposition.hpp"
+#include "full_equation_truth.hpp"
 #include "test_util.hpp"
 
 using namespace rocking;
@@ -428,6 +429,80 @@ TEST(Dynamics, FreeRockingQuarterPeriod) {
                 << solver_name(k) << " theta0/alpha " << ratio;
             EXPECT_FALSE(r.overturned);
         }
+}
+
+TEST(Dynamics, FullEquationFreeRockingImpactsWhereItsFirstIntegralSays) {
+    // The full equation against its own first integral (full_equation_truth.hpp,
+    // a quadrature in long double), not against another solver: released from
+    // rest at theta0, its first six impact times, with restitution 1 and with
+    // Housner's, for alpha from 1e-3 to 0.35 and half-heights 0.2 m and 50 m
+    // (p 6.1 to 0.37 rad/s).  At rtol = atol = 1e-12 every ODE solver within
+    // 1e-9 of each time, relative (measured: at most 3e-10 from 0.999 alpha
+    // with Housner's restitution, 2e-11 from 0.1 and 0.9 alpha).  Released
+    // from 0.999 alpha without dissipation, every half-cycle passes 1e-3 alpha
+    // from the top: on the way there an error grows like the distance's
+    // inverse, 1000 times, and the time near the top is as sensitive again to
+    // where the block turns, so the times' condition is ~1e5 there and the
+    // tolerance 1e-7 (measured 2.2e-8; at rtol 1e-13 still 1e-9, while a
+    // solver's error at rtol 1e-10 is 2e-6: the solvers converge to the
+    // quadrature until the condition stops them).  A fault of the equation
+    // (its linearisation, a sign, the restitution) moves these times by 1e-4
+    // and more.
+    const SampledInput none({0.0, 0.0}, 1e-9, "no input");
+    for (double H : {0.2, 50.0})
+        for (double alpha : {1e-3, 0.05, 0.35})
+            for (bool housner : {false, true})
+                for (double ratio : {0.1, 0.9, 0.999}) {
+                    Model m;
+                    m.block = Block::from_half_height(H, alpha);
+                    m.equation = Equation::full;
+                    m.restitution = housner ? housner_restitution(alpha) : 1.0;
+                    const std::vector<long double> truth = rocking::testing::free_rocking_impact_times(
+                        alpha, m.block.p, m.restitution, ratio * alpha, 6);
+                    for (SolverKind k : kOde) {
+                        SimulationOptions o = with(k, 1e-12);
+                        o.initial_theta = ratio * alpha;
+                        o.free_record_time = static_cast<double>(truth.back()) * 1.01;
+                        const SimulationResult r = simulate(m, none, o);
+                        ASSERT_GE(r.impact_times.size(), truth.size()) << solver_name(k);
+                        for (std::size_t i = 0; i < truth.size(); ++i)
+                            EXPECT_NEAR(r.impact_times[i] / truth[i], 1.0, housner || ratio < 0.99 ? 1e-9 : 1e-7)
+                                << solver_name(k) << " H " << H << " alpha " << alpha << " e " << m.restitution
+                                << " theta0/alpha " << ratio << " impact " << i;
+                        EXPECT_FALSE(r.overturned);
+                    }
+                }
+}
+
+TEST(Dynamics, FullEquationUnderAConstantGroundReachesAlphaAndFallsWhereItsFirstIntegralSays) {
+    // A block at rest under a constant ground acceleration A g above g tan
+    // alpha (by 1.001, 1.5 and 10 times) uplifts at once; its first integral
+    // (full_equation_truth.hpp) gives when theta reaches alpha and when it
+    // reaches the fall angle pi/2.  Both signs of A (the mirror image must
+    // take the same times), alpha from 1e-3 to 0.35, half-heights 0.2 m and
+    // 50 m.  At rtol = atol = 1e-12 every ODE solver within 1e-9, relative.
+    // Measured: at most 8e-11 (A = 1.001 g tan alpha, where the block leaves
+    // the ground slowly and the start's error weighs), 1e-12 elsewhere.
+    for (double H : {0.2, 50.0})
+        for (double alpha : {1e-3, 0.05, 0.35})
+            for (double lambda : {1.001, 1.5, 10.0})
+                for (double sign : {1.0, -1.0}) {
+                    Model m;
+                    m.block = Block::from_half_height(H, alpha);
+                    m.equation = Equation::full;
+                    const double A = lambda * std::tan(alpha);
+                    const long double to_alpha = rocking::testing::step_time_to(alpha, m.block.p, A, alpha);
+                    const long double to_fall = rocking::testing::step_time_to(alpha, m.block.p, A, M_PI / 2);
+                    const SampledInput step({sign * A, sign * A}, 2 * static_cast<double>(to_fall) + 1, "step");
+                    for (SolverKind k : kOde) {
+                        const SimulationResult r = simulate(m, step, with(k, 1e-12));
+                        ASSERT_TRUE(r.overturned_during_input) << solver_name(k);
+                        EXPECT_NEAR(r.t_first_alpha / to_alpha, 1.0, 1e-9)
+                            << solver_name(k) << " H " << H << " alpha " << alpha << " A " << sign * A;
+                        EXPECT_NEAR(r.t_overturn / to_fall, 1.0, 1e-9)
+                            << solver_name(k) << " H " << H << " alpha " << alpha << " A " << sign * A;
+                    }
+                }
 }
 
 TEST(Dynamics, ABlockPastTheTopWhenTheInputEndsFalls) {
