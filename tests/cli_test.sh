@@ -142,4 +142,29 @@ printf 'NDATA: 3\nUNITS: cm/s^2\n1\n2\n' > "$bad"
 check "broken record is named" "missing header key SAMPLING_INTERVAL_S" "$rocking" record info "$bad"
 status "broken record exits 1" 1 "$rocking" record info "$bad"
 rm -f "$bad"
+# Records at the edges (found 2026-11-21): a sample that overflows once in
+# m/s^2 was read as inf (record info printed "PGA = inf"); a record scaled to
+# 1e300 g printed its PGA in 300 digits; a record the half-periods cannot be
+# measured on, and a folder, were refused without the file's name or as an
+# "empty file".
+edge=$(mktemp -d)
+printf '0 1e308\n0.01 -1e308\n0.02 0\n0.03 0.1\n0.04 0\n' > "$edge/huge.txt"
+check "a sample out of range in m/s2 is refused" "huge.txt:1: '1e308' g is out of range for a double in m/s^2" \
+    "$rocking" record info "$edge/huge.txt" --unit g
+status "and exits 1" 1 "$rocking" assess "$edge/huge.txt" --alpha 0.1 --height 3 --unit g
+printf '0 1e300\n0.01 -1e300\n0.02 0\n0.03 0.1\n0.04 0\n' > "$edge/big.txt"
+check "a huge PGA prints in exponent form" "PGA = 9.8100e+300 m/s^2 (1.0000e+300 g)" "$rocking" record info "$edge/big.txt" --unit g
+printf '0 0\n0.01 0\n0.02 0\n0.03 0\n' > "$edge/zeros.txt"
+check "half-periods of a zero record name the file" "zeros.txt: half_periods: the record is identically zero" \
+    "$rocking" assess "$edge/zeros.txt" --alpha 0.1 --height 3 --unit g
+check "a folder is not a record" "is a folder, not a record file" "$rocking" record info "$edge"
+# A record that overturns the block at the search's lowest p (0.3 rad/s): the
+# search has no bracket, and used to print that p as "the smallest pulsation"
+# and "safe at 0.000000".
+{ echo "0 0"; for i in $(seq 1 200); do echo "$i 2"; done; } | awk '{ printf "%.2f %s\n", $1 / 100, $2 }' > "$edge/strong.txt"
+check "collapse at the lowest p says so" "strong.txt overturns the block (alpha = 0.1) already at the search's lowest pulsation" \
+    "$rocking" collapse "$edge/strong.txt" --alpha 0.1 --unit g
+check "and gives the lowest p as a bound" "p <= 0.300000 rad/s: " "$rocking" collapse "$edge/strong.txt" --alpha 0.1 --unit g
+check "and its JSON has no safe p" '"p_safe": null, "below_range": true' "$rocking" collapse "$edge/strong.txt" --alpha 0.1 --unit g --json
+rm -rf "$edge"
 exit $fail

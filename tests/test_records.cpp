@@ -67,11 +67,16 @@ TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
         {"peer_sample.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 x\n", ":5: sample 'x' is not a number"},
         {"peer_range.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 1e400\n",
          ":5: sample '1e400' is out of range for a double"},
+        // A double in g, out of range once in m/s^2 (it was read as inf).
+        {"peer_overflow.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 -1e308\n",
+         ":5: sample '-1e308' g is out of range for a double in m/s^2"},
+        {"folder", "", ":0: is a folder, not a record file"},
         {"neither.txt", "0 0.1\n0.01 0.2\n0.02 0.3\n0.03 0.1\n", ":1: neither ESM ASCII"},
         {"short.txt", "0.1\n", ":1: neither ESM ASCII"},
     };
     for (const Case& c : cases) {
-        const std::string path = write_file(c.name, c.text);
+        const std::string path = c.name == "folder" ? std::filesystem::path(write_file("in_folder.txt", "")).parent_path().string()
+                                                    : write_file(c.name, c.text);
         const std::string message = error_of([&] { read_any(path); });
         EXPECT_NE(message.find(path + c.want), std::string::npos) << c.name << ": " << message;
     }
@@ -92,6 +97,9 @@ TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
     EXPECT_NE(error_of([&] { read_plain(bad, "g", 0.01); }).find(":2: 'zz' is not a number"), std::string::npos);
     const std::string huge = write_file("huge.txt", "0.1\n-1e400\n");
     EXPECT_NE(error_of([&] { read_plain(huge, "g", 0.01); }).find(":2: '-1e400' is out of range"), std::string::npos);
+    const std::string overflow = write_file("overflow.txt", "0 0.1\n0.01 1e308\n");
+    EXPECT_NE(error_of([&] { read_plain(overflow, "g", 0); }).find(":2: '1e308' g is out of range for a double in m/s^2"),
+              std::string::npos);
 }
 
 TEST(Measures, CosineHasEveryHalfPeriodAtItsHalfPeriod) {
@@ -185,4 +193,15 @@ TEST(CollapseSearch, ConstantStepHasAClosedFormThreshold) {
     ASSERT_TRUE(c.found);
     EXPECT_NEAR(c.p / expected, 1.0, 2e-3);  // the sampled step ramps down over one dt
     EXPECT_LT(c.p_safe, c.p);
+    EXPECT_FALSE(c.below_range);
+    // Held for 10 s the same step overturns from p* = ln 3 / 10 = 0.11 rad/s,
+    // below the search's lowest p: the search says so (it had reported p_min
+    // as the smallest collapsing p, with no safe p below it).
+    std::vector<double> longer(static_cast<std::size_t>(10.0 / 1e-3) + 1, A);
+    longer.push_back(0.0);
+    const CollapseResult l = smallest_collapse_p(dynamics::SampledInput(longer, 1e-3, "long step"), alpha, o);
+    ASSERT_TRUE(l.found);
+    EXPECT_TRUE(l.below_range);
+    EXPECT_EQ(l.p, o.p_min);
+    EXPECT_EQ(l.simulations, 1);
 }

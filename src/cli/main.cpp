@@ -157,6 +157,24 @@ double x_from(const Args& a) {
     return x;
 }
 
+// A value to 4 decimals, in exponent form from 1e9 on (a record scaled
+// absurdly printed 300 digits).
+std::string four(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, std::fabs(v) < 1e9 ? "%.4f" : "%.4e", v);
+    return buf;
+}
+
+// The record's half-periods; a record they cannot be measured on is refused
+// with its file's name.
+records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path) {
+    try {
+        return records::half_periods(r);
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(path + ": " + e.what());
+    }
+}
+
 std::string json_string(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
@@ -439,7 +457,7 @@ int cmd_record(int argc, char** argv) {
     const std::string path = argv[3];
     const Args a = parse(argc, argv, 4, {"--unit", "--dt"});
     const records::Record r = load_record(path, a);
-    const records::HalfPeriods h = records::half_periods(r);
+    const records::HalfPeriods h = half_periods_of(r, path);
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"format\": " << json_string(r.format)
                   << ", \"name\": " << json_string(r.name) << ", \"samples\": " << r.accel.size()
@@ -451,7 +469,8 @@ int cmd_record(int argc, char** argv) {
     } else {
         std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,
                     r.duration());
-        std::printf("  PGA = %.4f m/s^2 (%.4f g), PGV = %.4f m/s, Amax = %.4f m/s\n", h.pga, h.pga / dynamics::kGravity, h.pgv, h.amax);
+        std::printf("  PGA = %s m/s^2 (%s g), PGV = %s m/s, Amax = %s m/s\n", four(h.pga).c_str(),
+                    four(h.pga / dynamics::kGravity).c_str(), four(h.pgv).c_str(), four(h.amax).c_str());
         static const char* what[] = {"largest-area pulse", "pulse holding the PGA", "sine of same PGA and area (eq. 29)",
                                      "constant of same PGA and area (eq. 30)", "pi PGV / PGA (eq. 31)",
                                      "Fourier peak, acceleration", "Fourier peak, velocity", "CWT max amplitude, acceleration",
@@ -495,11 +514,17 @@ int cmd_collapse(int argc, char** argv) {
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
                   << ", \"found\": " << (c.found ? "true" : "false") << ", \"p\": " << harness::format_number(c.p)
-                  << ", \"p_safe\": " << harness::format_number(c.p_safe) << ", \"simulations\": " << c.simulations
+                  << ", \"p_safe\": " << (c.below_range ? std::string("null") : harness::format_number(c.p_safe))
+                  << ", \"below_range\": " << (c.below_range ? "true" : "false") << ", \"simulations\": " << c.simulations
                   << ", \"search\": " << json_string(o.describe()) << "}\n";
     } else {
-        if (c.found) std::printf("p = %.6f rad/s: the smallest pulsation at which %s overturns the block (alpha = %g); "
-                                 "safe at %.6f\n", c.p, r.name.c_str(), alpha, c.p_safe);
+        if (c.found && c.below_range)
+            std::printf("p <= %.6f rad/s: %s overturns the block (alpha = %g) already at the search's lowest "
+                        "pulsation; the smallest one that overturns it lies at or below that, outside the search\n",
+                        c.p, r.name.c_str(), alpha);
+        else if (c.found)
+            std::printf("p = %.6f rad/s: the smallest pulsation at which %s overturns the block (alpha = %g); "
+                        "safe at %.6f\n", c.p, r.name.c_str(), alpha, c.p_safe);
         else {
             // Below the uplift threshold no p can move the block: say so, or the
             // scan's "up to 30 rad/s" reads as if a larger p might.
@@ -535,7 +560,7 @@ int cmd_assess(int argc, char** argv) {
         throw UsageError(e.what());
     }
     const records::Record r = load_record(path, a);
-    const records::HalfPeriods h = records::half_periods(r);
+    const records::HalfPeriods h = half_periods_of(r, path);
     const double to5 = h.to[4], x = b.p * to5, q27 = q2_n6(x), q_record = h.pga / (alpha * kGravity);
     const bool safe = q_record < q27;
     if (a.json) {
@@ -547,8 +572,9 @@ int cmd_assess(int argc, char** argv) {
     } else {
         std::printf("%s: %s\n", r.name.c_str(), safe ? "PASSES (the record's q is below eq. 27's)" : "FAILS");
         std::printf("  block: alpha = %g, p = %.4f rad/s (eqs. 2, 4, half-height %.3f m)\n", alpha, b.p, b.R * std::cos(alpha));
-        std::printf("  record: PGA = %.4f g, to_5 = pi PGV/PGA = %.4f s; x = p to_5 = %.4f\n", h.pga / kGravity, to5, x);
-        std::printf("  q from eq. 27 = %.4f; the record's q = PGA/(alpha g) = %.4f\n", q27, q_record);
+        std::printf("  record: PGA = %s g, to_5 = pi PGV/PGA = %.4f s; x = p to_5 = %.4f\n", four(h.pga / kGravity).c_str(),
+                    to5, x);
+        std::printf("  q from eq. 27 = %s; the record's q = PGA/(alpha g) = %s\n", four(q27).c_str(), four(q_record).c_str());
     }
     return 0;
 }

@@ -27,6 +27,10 @@ struct CollapseResult {
     bool found = false;
     double p = 0;            // smallest collapsing p found (the upper end of the final bracket)
     double p_safe = 0;       // the largest p below it known not to collapse
+    // Collapse already at p_min, the search's lowest p: the smallest
+    // collapsing p lies at or below p_min, outside the search, and no p was
+    // seen to be safe (p = p_min, p_safe = 0).
+    bool below_range = false;
     int simulations = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -54,6 +55,9 @@ bool peer_units_line(std::string line) {
 }
 
 std::ifstream open(const std::string& path) {
+    // A folder opens as a stream that reads nothing, which read as "empty file".
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw RecordError(path, 0, "is a folder, not a record file");
     std::ifstream in(path);
     if (!in) throw RecordError(path, 0, "cannot open the file");
     return in;
@@ -169,6 +173,8 @@ Record read_peer(const std::string& path) {
             double v;
             if (!parse_number(token, v)) throw RecordError(path, number, "sample " + refused(token));
             r.accel.push_back(v * 9.81);  // g -> m/s^2 (NGA files use g = 9.81 m/s^2)
+            if (!std::isfinite(r.accel.back()))
+                throw RecordError(path, number, "sample '" + token + "' g is out of range for a double in m/s^2");
         }
     }
     if (number == 0) throw RecordError(path, 0, "empty file");
@@ -225,6 +231,8 @@ Record read_plain(const std::string& path, const std::string& unit, double dt) {
             times.push_back(time);
         }
         r.accel.push_back(values.back() * scale);
+        if (!std::isfinite(r.accel.back()))
+            throw RecordError(path, number, "'" + tokens.back() + "' " + unit + " is out of range for a double in m/s^2");
     }
     if (r.accel.empty()) throw RecordError(path, 0, "empty file");
     if (r.accel.size() < 2) throw RecordError(path, number, "a record needs at least 2 samples");
