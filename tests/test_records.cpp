@@ -193,7 +193,7 @@ TEST(CollapseSearch, ConstantStepHasAClosedFormThreshold) {
     ASSERT_TRUE(c.found);
     EXPECT_NEAR(c.p / expected, 1.0, 2e-3);  // the sampled step ramps down over one dt
     EXPECT_LT(c.p_safe, c.p);
-    EXPECT_FALSE(c.below_range);
+    EXPECT_FALSE(c.below_range());
     // Held for 10 s the same step overturns from p* = ln 3 / 10 = 0.11 rad/s,
     // below the search's lowest p: the search says so (it had reported p_min
     // as the smallest collapsing p, with no safe p below it).
@@ -201,7 +201,7 @@ TEST(CollapseSearch, ConstantStepHasAClosedFormThreshold) {
     longer.push_back(0.0);
     const CollapseResult l = smallest_collapse_p(dynamics::SampledInput(longer, 1e-3, "long step"), alpha, o);
     ASSERT_TRUE(l.found);
-    EXPECT_TRUE(l.below_range);
+    EXPECT_TRUE(l.below_range());
     EXPECT_EQ(l.p, o.p_min);
     EXPECT_EQ(l.simulations, 1);
 }

@@ -51,7 +51,7 @@ RecordRow analyse(const std::string& root, const std::string& path, bool referen
     const records::CollapseOptions o = table1_search();
     for (std::size_t k = 0; k < kTableAlphas.size(); ++k) {
         row.collapse[k] = records::smallest_collapse_p(input, kTableAlphas[k], o);
-        if (reference && row.collapse[k].found && row.collapse[k].p_safe > 0) {
+        if (reference && row.collapse[k].found && !row.collapse[k].below_range()) {
             // A second solver at a much tighter tolerance must see the same
             // boundary: collapse at p, none at p_safe.  rtol 1e-13: at 1e-11
             // rk8pd itself flips borderline outcomes (rocking on a record is

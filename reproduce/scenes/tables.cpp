@@ -118,7 +118,7 @@ void run_table1(SceneContext& ctx) {
             const auto& c = r.collapse[k];
             rt.row().add(r.file).add(r.name).add(alpha_label(kTableAlphas[k])).add(r.pga_cms2)
                 .add(r.pga_cms2 / (kTableAlphas[k] * kTableG));
-            if (c.found && c.below_range) rt.add(c.p).add("none: collapses at the lowest p searched");
+            if (c.below_range()) rt.add(c.p).add("none: collapses at the lowest p searched");
             else if (c.found) rt.add(c.p).add(c.p_safe);
             else rt.add("none below 30").add("-");
             rt.add(r.confirmed[k]);

@@ -514,11 +514,11 @@ int cmd_collapse(int argc, char** argv) {
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
                   << ", \"found\": " << (c.found ? "true" : "false") << ", \"p\": " << harness::format_number(c.p)
-                  << ", \"p_safe\": " << (c.below_range ? std::string("null") : harness::format_number(c.p_safe))
-                  << ", \"below_range\": " << (c.below_range ? "true" : "false") << ", \"simulations\": " << c.simulations
+                  << ", \"p_safe\": " << (c.below_range() ? std::string("null") : harness::format_number(c.p_safe))
+                  << ", \"below_range\": " << (c.below_range() ? "true" : "false") << ", \"simulations\": " << c.simulations
                   << ", \"search\": " << json_string(o.describe()) << "}\n";
     } else {
-        if (c.found && c.below_range)
+        if (c.below_range())
             std::printf("p <= %.6f rad/s: %s overturns the block (alpha = %g) already at the search's lowest "
                         "pulsation; the smallest one that overturns it lies at or below that, outside the search\n",
                         c.p, r.name.c_str(), alpha);

@@ -43,7 +43,6 @@ CollapseResult smallest_collapse_p(const GroundInput& input, double alpha, const
     if (p > options.p_max) return out;
     if (lo == 0.0) {  // collapses already at p_min
         out.found = true;
-        out.below_range = true;
         out.p = p;
         return out;
     }

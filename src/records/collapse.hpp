@@ -26,12 +26,13 @@ struct CollapseOptions {
 struct CollapseResult {
     bool found = false;
     double p = 0;            // smallest collapsing p found (the upper end of the final bracket)
-    double p_safe = 0;       // the largest p below it known not to collapse
-    // Collapse already at p_min, the search's lowest p: the smallest
-    // collapsing p lies at or below p_min, outside the search, and no p was
-    // seen to be safe (p = p_min, p_safe = 0).
-    bool below_range = false;
+    double p_safe = 0;       // the largest p below it known not to collapse; 0 when none was seen
     int simulations = 0;
+
+    // Collapse already at p_min, the search's lowest p: the smallest
+    // collapsing p lies at or below p_min, outside the search (p = p_min,
+    // and no p was seen to be safe).
+    bool below_range() const { return found && !(p_safe > 0); }
 };
 
 CollapseResult smallest_collapse_p(const dynamics::GroundInput& input, double alpha, const CollapseOptions& options);
