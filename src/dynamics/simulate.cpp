@@ -261,7 +261,8 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
                     // back inside (theta''' towards 0 at the start, away from it at
                     // the end) and reaches the other sign at the turn.  The part is
                     // then cut at the turn, each side holding one root.  (On the full
-                    // equation the same check runs, without that proof.)
+                    // equation the same check runs without that proof, measured
+                    // instead: FullEquationOnOneSinePulsesJustAboveTheThreshold...)
                     if (piece.s != 0.0 && ea * eb > 0.0) {
                         auto jerk_at = [&](double s) {
                             double th, om;
