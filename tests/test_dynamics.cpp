@@ -266,6 +266,28 @@ TEST(Dynamics, OdeSolversRefuseAToleranceBelow100Eps) {
     EXPECT_NO_THROW(simulate(linear_model(), input, with(SolverKind::exact, 0)));
 }
 
+TEST(Dynamics, AOneSinePulseSlowerThanAMillionthOfPIsRefused) {
+    // simulate() itself refuses it (until 2026-11-21 only the command line
+    // did): at w_p = 1e-20 rad/s the fall came at 35.2 s (exact) or 2795 s
+    // (rk8pd) where the closed form gives 24.4 s.  At 1e-6 p the run goes
+    // on: a_p = 2 alpha, the block falls within seconds.
+    const double alpha = 0.1, p = 2.0;
+    for (SolverKind k : {SolverKind::exact, SolverKind::gsl_rk8pd}) {
+        for (double wp : {1e-20, 0.999e-6 * p}) {
+            const OneSinePulse slow(2 * alpha, wp, alpha);
+            try {
+                simulate(linear_model(alpha, p), slow, with(k));
+                ADD_FAILURE() << solver_name(k) << ", w_p " << wp << ": not refused";
+            } catch (const std::invalid_argument& e) {
+                EXPECT_NE(std::string(e.what()).find("below 1e-6 p = 2e-06 rad/s"), std::string::npos) << e.what();
+            }
+        }
+        const SimulationResult r = simulate(linear_model(alpha, p), OneSinePulse(2 * alpha, 1e-6 * p, alpha), with(k));
+        EXPECT_TRUE(r.overturned && r.overturned_during_input) << solver_name(k);
+        EXPECT_LT(r.t_overturn, 30.0) << solver_name(k);
+    }
+}
+
 TEST(Dynamics, AStepBelowTheResolutionOfTimeStopsTheRunWithAClearError) {
     // Steps are at most max_step_p / p long.  Where that is below half an ulp
     // of t, t + h == t: every solver spun in place for ever (p = 1e20 rad/s

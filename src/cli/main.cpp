@@ -355,17 +355,15 @@ int cmd_simulate(int argc, char** argv) {
         input = std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
     } else if (one_sine) {
         if (!has("--ap") || !has("--wp")) throw UsageError("--one-sine needs --ap and --wp");
-        // A pulse far slower than the block lifts it by a_p w_p t cos psi over
-        // t ~ 1/p: below w_p = 1e-16 p that rise is under the rounding of a_p
-        // sin(...) itself, and the fall came at the rounding's time (w_p =
-        // 1e-20 rad/s, p = 2: 35.2 s exact, 2795 s rk8pd, where the closed
-        // form gives 24.4 s).  Refused below 1e-6 p, far from that edge.
-        if (num("--wp") > 0 && num("--wp") < 1e-6 * model.block.p) {
+        // simulate() refuses a pulse slower than OneSinePulse::slowest_wp_over_p
+        // times p (why: ground_input.hpp); said here in the option's terms.
+        const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
+        if (num("--wp") > 0 && num("--wp") < slowest) {
             char text[200];
             std::snprintf(text, sizeof text,
                           "--wp: must be at least 1e-6 p = %.3g rad/s (got %g): slower pulses lift the block by less "
                           "than the rounding of the input",
-                          1e-6 * model.block.p, num("--wp"));
+                          slowest, num("--wp"));
             throw UsageError(text);
         }
         try {
