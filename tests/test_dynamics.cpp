@@ -5,6 +5,7 @@
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -57,6 +58,36 @@ bool well_conditioned(const SimulationResult& ref, const SimulationResult& probe
         if (std::fabs(ref.impact_times[i] - probe.impact_times[i]) > 1e-9) return false;
     return true;
 }
+
+// The draws of the random solver comparisons below, from the raw
+// mt19937_64 stream (the same on every platform).  block(): alpha
+// 0.02-0.32, p 0.5-5.5 rad/s, Housner's restitution on even cases and one
+// in [0.5, 1] on odd ones.  sine_just_above(): a one-sine pulse with
+// a_p / threshold - 1 in (1e-6, 0.05] and w_p / p in [0.1, 20.1], its probe
+// (a_p scaled by 1 + 1e-13) and its description.
+struct RandomDraws {
+    std::mt19937_64 rng;
+    explicit RandomDraws(std::uint64_t seed) : rng(seed) {}
+    double operator()() { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+    Model block(int it, Equation equation) {
+        const double alpha = 0.02 + 0.3 * (*this)(), p = 0.5 + 5 * (*this)();
+        Model m = linear_model(alpha, p, it % 2 == 0 ? housner_restitution(alpha) : 0.5 + 0.5 * (*this)());
+        m.equation = equation;
+        return m;
+    }
+    struct Sine {
+        OneSinePulse input, nudged;
+        std::string what;
+    };
+    Sine sine_just_above(int it, const Model& m) {
+        const double threshold = m.uplift_threshold(), p = m.block.p;
+        const double ap = threshold * (1 + 1e-6 + 0.05 * (*this)()), wp = p * (0.1 + 20 * (*this)());
+        return {OneSinePulse(ap, wp, threshold), OneSinePulse(ap * (1 + 1e-13), wp, threshold),
+                "case " + std::to_string(it) + ", alpha " + std::to_string(m.block.alpha) + ", p " +
+                    std::to_string(p) + ", a_p/threshold " + std::to_string(ap / threshold) + ", w_p/p " +
+                    std::to_string(wp / p)};
+    }
+};
 
 // A run against the reference, for a failure's message.
 std::string against(const SimulationResult& r, const SimulationResult& ref, double alpha) {
@@ -853,17 +884,12 @@ TEST(Dynamics, OnRandomOneSinePulsesJustAboveTheThresholdTheSolversAgree) {
     // all but one at w_p / p > 10).  Dormand-Prince is left out: it locates
     // events on its fourth-order dense output (1e-6 s off over a hundred
     // impacts).
-    std::mt19937_64 rng(20261121);
-    auto U = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+    RandomDraws draw(20261121);
     int well = 0;
     for (int it = 0; it < 1000; ++it) {
-        const double alpha = 0.02 + 0.3 * U(), p = 0.5 + 5 * U();
-        const Model m = linear_model(alpha, p, it % 2 == 0 ? housner_restitution(alpha) : 0.5 + 0.5 * U());
-        const double ap = alpha * (1 + 1e-6 + 0.05 * U()), wp = p * (0.1 + 20 * U());
-        const OneSinePulse input(ap, wp, alpha), nudged(ap * (1 + 1e-13), wp, alpha);
-        const std::string what = "case " + std::to_string(it) + ", alpha " + std::to_string(alpha) + ", p " +
-                                 std::to_string(p) + ", a_p/alpha " + std::to_string(ap / alpha) + ", w_p/p " +
-                                 std::to_string(wp / p);
+        const Model m = draw.block(it, Equation::linearised);
+        const double alpha = m.block.alpha;
+        const auto [input, nudged, what] = draw.sine_just_above(it, m);
         const SimulationResult ref = simulate(m, input, with(SolverKind::exact));
         if (!well_conditioned(ref, simulate(m, nudged, with(SolverKind::exact)), alpha)) continue;
         ++well;
@@ -893,11 +919,6 @@ TEST(Dynamics, FullEquationOnOneSinePulsesJustAboveTheThresholdHidesNoExcursionI
         o.solver.max_step_p = max_step_p;
         return o;
     };
-    auto full_model = [](double alpha, double p, double e) {
-        Model m = linear_model(alpha, p, e);
-        m.equation = Equation::full;
-        return m;
-    };
     // 1. Case 912 of the draw below: chattering at theta ~ 1e-5 alpha with
     // 103 impacts, a trough of the sine inside one of rkf78's long steps.
     // With the check switched off for the full equation, rkf78 put the peak
@@ -909,7 +930,8 @@ TEST(Dynamics, FullEquationOnOneSinePulsesJustAboveTheThresholdHidesNoExcursionI
     // drift over the 103 impacts).
     {
         const double alpha = 0.050184945984386824, p = 4.4112546067459206, e = 0.99622537722367499;
-        const Model m = full_model(alpha, p, e);
+        Model m = linear_model(alpha, p, e);
+        m.equation = Equation::full;
         const OneSinePulse input(0.050717133614236451, 36.013722601245362, std::tan(alpha));
         const SimulationResult ref = simulate(m, input, with_steps(SolverKind::rkf78, 1e-3));
         const SimulationResult ref2 = simulate(m, input, with_steps(SolverKind::gsl_rk8pd, 1e-3));
@@ -932,17 +954,12 @@ TEST(Dynamics, FullEquationOnOneSinePulsesJustAboveTheThresholdHidesNoExcursionI
     // 1 + 1e-13: measured 997 of 1000), the three solvers with their usual
     // steps must agree with it to 1e-7 alpha (as above: 1e-12 times the
     // probe's 1e4; measured 6.1e-10) and on the number of impacts.
-    std::mt19937_64 rng(20261122);
-    auto U = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+    RandomDraws draw(20261122);
     int well = 0;
     for (int it = 0; it < 1000; ++it) {
-        const double alpha = 0.02 + 0.3 * U(), p = 0.5 + 5 * U();
-        const Model m = full_model(alpha, p, it % 2 == 0 ? housner_restitution(alpha) : 0.5 + 0.5 * U());
-        const double threshold = std::tan(alpha), ap = threshold * (1 + 1e-6 + 0.05 * U()), wp = p * (0.1 + 20 * U());
-        const OneSinePulse input(ap, wp, threshold), nudged(ap * (1 + 1e-13), wp, threshold);
-        const std::string what = "case " + std::to_string(it) + ", alpha " + std::to_string(alpha) + ", p " +
-                                 std::to_string(p) + ", a_p/tan(alpha) " + std::to_string(ap / threshold) +
-                                 ", w_p/p " + std::to_string(wp / p);
+        const Model m = draw.block(it, Equation::full);
+        const double alpha = m.block.alpha;
+        const auto [input, nudged, what] = draw.sine_just_above(it, m);
         const SimulationResult ref = simulate(m, input, with_steps(SolverKind::rkf78, 0.01));
         if (!well_conditioned(ref, simulate(m, nudged, with_steps(SolverKind::rkf78, 0.01)), alpha)) continue;
         ++well;
@@ -974,12 +991,11 @@ TEST(Dynamics, OnRandomInputsEverySolverAgreesWhereTheMotionIsWellConditioned) {
     // found two bugs of the general path that hid an excursion inside one
     // step (AnExcursionOutAndBackWithinOneStepIsFollowed); the uniform draws
     // come from the raw mt19937_64 stream, the same on every platform.
-    std::mt19937_64 rng(20261121);
-    auto U = [&] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
+    RandomDraws U(20261121);
     int well = 0;
     for (int it = 0; it < 400; ++it) {
-        const double alpha = 0.02 + 0.3 * U(), p = 0.5 + 5 * U();
-        const Model m = linear_model(alpha, p, it % 2 == 0 ? housner_restitution(alpha) : 0.5 + 0.5 * U());
+        const Model m = U.block(it, Equation::linearised);
+        const double alpha = m.block.alpha, p = m.block.p;
         std::unique_ptr<GroundInput> input, nudged;
         std::string what = "case " + std::to_string(it);
         if (U() < 0.7) {
