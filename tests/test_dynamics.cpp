@@ -5,13 +5,15 @@
 #include <array>
 #include <boost/numeric/odeint.hpp>
 #include <chrono>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <memory>
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "dynamics/simulate.hpp"
 #include "qfactor/closed_forms.hpp"
@@ -37,6 +39,28 @@ SimulationOptions with(SolverKind kind, double rtol = 1e-10) {
     o.solver.rtol = rtol;
     o.solver.atol_alpha = rtol;
     return o;
+}
+
+// A solver to run: each kind by its name, and the exact one once more by its
+// general path (ExactStepper + the driver: the record kernel switched off).
+struct SolverPath {
+    SolverKind kind;
+    bool kernel;
+    std::string name;
+    SimulationOptions options(double rtol) const {
+        SimulationOptions o = with(kind, rtol);
+        o.solver.record_kernel = kernel;
+        return o;
+    }
+};
+
+std::vector<SolverPath> with_general_path(std::initializer_list<SolverKind> kinds) {
+    std::vector<SolverPath> paths;
+    for (SolverKind k : kinds) {
+        paths.push_back({k, true, solver_name(k)});
+        if (k == SolverKind::exact) paths.push_back({k, false, solver_name(k) + " (general path)"});
+    }
+    return paths;
 }
 
 const SolverKind kOde[] = {SolverKind::dopri5, SolverKind::rkf78, SolverKind::bulirsch_stoer, SolverKind::gsl_rk8pd};
@@ -581,22 +605,19 @@ TEST(Dynamics, ABlockPastTheTopWhenTheInputEndsFalls) {
             const long double d0 = (s.theta_over_alpha - 1) * alpha, w0 = s.omega_over_alpha_p * alpha * p;
             const long double A = (d0 + w0 / p) / 2, B = (d0 - w0 / p) / 2, D = M_PI / 2 - alpha;
             const double expected = static_cast<double>(std::log((D + std::sqrt(D * D - 4 * A * B)) / (2 * A)) / p);
-            for (SolverKind k : {SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78})
-                for (bool kernel : {true, false}) {
-                    if (!kernel && k != SolverKind::exact) continue;
-                    SimulationOptions o = with(k, 1e-12);
-                    o.solver.record_kernel = kernel;
-                    o.initial_theta = sign * s.theta_over_alpha * alpha;
-                    o.initial_omega = sign * s.omega_over_alpha_p * alpha * p;
-                    const SimulationResult r = simulate(linear_model(alpha, p), none, o);
-                    const std::string what = solver_name(k) + (kernel ? "" : " (general path)") + " theta0/alpha " +
-                                             std::to_string(sign * s.theta_over_alpha);
-                    EXPECT_TRUE(r.overturned) << what;
-                    EXPECT_FALSE(r.overturned_during_input) << what;
-                    EXPECT_TRUE(r.collapse(Criterion::overturning, alpha)) << what;
-                    EXPECT_EQ(r.impacts, 0) << what;
-                    EXPECT_NEAR(r.t_overturn, expected, k == SolverKind::exact ? 1e-13 : 1e-9) << what;
-                }
+            for (const SolverPath& path :
+                 with_general_path({SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78})) {
+                SimulationOptions o = path.options(1e-12);
+                o.initial_theta = sign * s.theta_over_alpha * alpha;
+                o.initial_omega = sign * s.omega_over_alpha_p * alpha * p;
+                const SimulationResult r = simulate(linear_model(alpha, p), none, o);
+                const std::string what = path.name + " theta0/alpha " + std::to_string(sign * s.theta_over_alpha);
+                EXPECT_TRUE(r.overturned) << what;
+                EXPECT_FALSE(r.overturned_during_input) << what;
+                EXPECT_TRUE(r.collapse(Criterion::overturning, alpha)) << what;
+                EXPECT_EQ(r.impacts, 0) << what;
+                EXPECT_NEAR(r.t_overturn, expected, path.kind == SolverKind::exact ? 1e-13 : 1e-9) << what;
+            }
         }
     // The control, which the energy rule already followed: above the barrier
     // and moving in, the block crosses back over alpha (e^(2pt1) = -B/A) with
@@ -677,29 +698,25 @@ TEST(Dynamics, AnExcursionOutAndBackWithinOneStepIsFollowed) {
             const SampledInput piece({sign * a0, sign * (a0 + c1 * dt)}, dt, "rising through alpha");
             const std::vector<long double> truth = cascade(sign, c1);
             ASSERT_GE(truth.size(), 2u);
-            for (SolverKind k : {SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78, SolverKind::bulirsch_stoer,
-                                 SolverKind::gsl_rk8pd})
-                for (bool kernel : {true, false}) {
-                    if (!kernel && k != SolverKind::exact) continue;
-                    SimulationOptions o = with(k, 1e-10);
-                    o.solver.record_kernel = kernel;
-                    o.free_rocking = false;
-                    o.initial_omega = sign * w0;
-                    const SimulationResult r = simulate(linear_model(alpha, p), piece, o);
-                    const std::string what = solver_name(k) + (kernel ? "" : " (general path)") + " c1 " +
-                                             std::to_string(c1) + " sign " + std::to_string(sign);
-                    EXPECT_EQ(r.impact_times.size(), truth.size()) << what;
-                    EXPECT_EQ(r.rests, 0) << what;
-                    // The exact solvers to rounding: theta's (~1e-19 rad) over theta'
-                    // at the impacts (down to ~1e-6 rad/s), accumulated along the
-                    // cascade (measured 7e-14 s at most).  The ODE solvers to their
-                    // atol, 1e-11 rad, over theta' (measured: dopri5 3.9e-7 s,
-                    // Bulirsch-Stoer 2.5e-8 s; rkf78 and rk8pd, which step on the
-                    // record's samples, 7e-14 s).
-                    const double tol = k == SolverKind::exact ? 5e-13 : 1e-6;
-                    for (std::size_t i = 0; i < std::min(truth.size(), r.impact_times.size()); ++i)
-                        EXPECT_NEAR(r.impact_times[i], static_cast<double>(truth[i]), tol) << what << " impact " << i;
-                }
+            for (const SolverPath& path : with_general_path({SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78,
+                                                             SolverKind::bulirsch_stoer, SolverKind::gsl_rk8pd})) {
+                SimulationOptions o = path.options(1e-10);
+                o.free_rocking = false;
+                o.initial_omega = sign * w0;
+                const SimulationResult r = simulate(linear_model(alpha, p), piece, o);
+                const std::string what = path.name + " c1 " + std::to_string(c1) + " sign " + std::to_string(sign);
+                EXPECT_EQ(r.impact_times.size(), truth.size()) << what;
+                EXPECT_EQ(r.rests, 0) << what;
+                // The exact solvers to rounding: theta's (~1e-19 rad) over theta'
+                // at the impacts (down to ~1e-6 rad/s), accumulated along the
+                // cascade (measured 7e-14 s at most).  The ODE solvers to their
+                // atol, 1e-11 rad, over theta' (measured: dopri5 3.9e-7 s,
+                // Bulirsch-Stoer 2.5e-8 s; rkf78 and rk8pd, which step on the
+                // record's samples, 7e-14 s).
+                const double tol = path.kind == SolverKind::exact ? 5e-13 : 1e-6;
+                for (std::size_t i = 0; i < std::min(truth.size(), r.impact_times.size()); ++i)
+                    EXPECT_NEAR(r.impact_times[i], static_cast<double>(truth[i]), tol) << what << " impact " << i;
+            }
         }
 }
 
@@ -774,27 +791,24 @@ TEST(Dynamics, AnUpliftThatFallsBackWithinItsFirstStepIsFollowed) {
                          static_cast<double>(theta(tu + t_peak))});
     }
     for (const Case& c : cases)
-        for (SolverKind k : {SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78, SolverKind::bulirsch_stoer,
-                             SolverKind::gsl_rk8pd})
-            for (bool kernel : {true, false}) {
-                if (!kernel && k != SolverKind::exact) continue;
-                SimulationOptions o = with(k, 1e-12);
-                o.solver.record_kernel = kernel;
-                const SimulationResult r = simulate(linear_model(alpha, c.p, 0.9), *c.input, o);
-                const std::string what = c.name + ", " + solver_name(k) + (kernel ? "" : " (general path)");
-                if (r.impacts < 1) {
-                    ADD_FAILURE() << what << ": no impact, peak " << r.max_abs_theta_input;
-                    continue;
-                }
-                // Exact: rounding, at most eps |B| on the sine (its increment
-                // sin(w u + ph) - sin ph - w u cos ph cancels terms of B = 0.02 rad):
-                // measured 1.3e-18 rad on a peak of 1.8e-6 rad and 1.2e-14 s;
-                // on the record 3e-21 rad and 1e-16 s.  ODE at rtol 1e-12: its
-                // atol (1e-13 rad) over theta' at the impact (~3e-5 rad/s),
-                // measured up to 2e-9 s.
-                EXPECT_NEAR(r.t_first_impact, c.impact, k == SolverKind::exact ? 5e-14 : 1e-8) << what;
-                EXPECT_NEAR(r.max_abs_theta_input, c.peak, k == SolverKind::exact ? 1e-17 : 1e-13) << what;
+        for (const SolverPath& path : with_general_path({SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78,
+                                                         SolverKind::bulirsch_stoer, SolverKind::gsl_rk8pd})) {
+            SimulationOptions o = path.options(1e-12);
+            const SimulationResult r = simulate(linear_model(alpha, c.p, 0.9), *c.input, o);
+            const std::string what = c.name + ", " + path.name;
+            if (r.impacts < 1) {
+                ADD_FAILURE() << what << ": no impact, peak " << r.max_abs_theta_input;
+                continue;
             }
+            // Exact: rounding, at most eps |B| on the sine (its increment
+            // sin(w u + ph) - sin ph - w u cos ph cancels terms of B = 0.02 rad):
+            // measured 1.3e-18 rad on a peak of 1.8e-6 rad and 1.2e-14 s;
+            // on the record 3e-21 rad and 1e-16 s.  ODE at rtol 1e-12: its
+            // atol (1e-13 rad) over theta' at the impact (~3e-5 rad/s),
+            // measured up to 2e-9 s.
+            EXPECT_NEAR(r.t_first_impact, c.impact, path.kind == SolverKind::exact ? 5e-14 : 1e-8) << what;
+            EXPECT_NEAR(r.max_abs_theta_input, c.peak, path.kind == SolverKind::exact ? 1e-17 : 1e-13) << what;
+        }
 }
 
 TEST(Dynamics, ThetaDoubleDotTurningTwiceInsideOneSineStepIsFollowed) {
