@@ -152,7 +152,7 @@ TEST(ClosedPiece, RootsToTheRoundingOfTheirFunction) {
 }
 
 TEST(ClosedPiece, TaylorStartsAreAFourthOrderStepCloserThanTheParabola) {
-    // The root finder's first point for an impact (parabola_root) and for an
+    // The root finder's first point for an impact (ground_root) and for an
     // extremum (slope_root): the root d0 of Taylor's parabola from the
     // piece's start, corrected by one Newton step on Taylor's polynomial to
     // fourth order (taylor_root).  Against the long-double root d* of the
@@ -189,7 +189,7 @@ TEST(ClosedPiece, TaylorStartsAreAFourthOrderStepCloserThanTheParabola) {
             Ld root;
             if (kind == 0) {
                 if (!(sigma * end.theta < 0 && (piece.omega0 < 0) == (end.omega < 0))) continue;
-                start = f.parabola_root(sigma, 0.0, at0);
+                start = f.ground_root(sigma, 0.0, at0);
                 d0 = quadratic_root(sigma * piece.theta0, sigma * piece.omega0, sigma * p2 * f.C);
                 root = bisect([&](Ld u) { return Ld(sigma) * g.at(u).theta; }, Ld(0), Ld(u1));
             } else {

@@ -160,12 +160,10 @@ struct Closed {
         return {q.theta + d * (q.omega + d / 2 * (d2 + d / 3 * (d3 + d / 4 * d4))),
                 q.omega + d * (d2 + d / 2 * (d3 + d / 3 * d4)), q.curvature + d * (r + d / 2 * d2)};
     }
-    // Where sigma theta's parabola at the point q (at u) reaches the ground:
-    // the first point of an impact's root finder, NaN when it does not.
     // Where sigma theta's Taylor polynomial at the point q (at u) reaches the
     // ground: the first point of an impact's root finder, NaN when its
     // parabola does not (taylor_root).
-    Real parabola_root(Real sigma, Real u, const Point& q) const {
+    Real ground_root(Real sigma, Real u, const Point& q) const {
         const Real p2 = p * p, k2 = p2 * q.curvature, k3 = p2 * (q.omega + c1());
         return u + taylor_root(sigma * q.theta, sigma * q.omega, sigma * k2, sigma * k3, sigma * p2 * k2);
     }

@@ -58,14 +58,16 @@ double rest_threshold(const SimulationOptions& options) {
 }
 
 SimulationResult simulate(const Model& model, const GroundInput& input, const SimulationOptions& options) {
-    if (const auto* sine = dynamic_cast<const OneSinePulse*>(&input);
-        sine != nullptr && !(sine->wp() >= OneSinePulse::slowest_wp_over_p * model.block.p)) {
-        char text[240];
-        std::snprintf(text, sizeof text,
-                      "one-sine pulse: w_p = %g rad/s is below 1e-6 p = %g rad/s: so slow a pulse lifts the block by "
-                      "less than the rounding of the input (OneSinePulse::slowest_wp_over_p)",
-                      sine->wp(), OneSinePulse::slowest_wp_over_p * model.block.p);
-        throw std::invalid_argument(text);
+    if (const auto* sine = dynamic_cast<const OneSinePulse*>(&input)) {
+        const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
+        if (!(sine->wp() >= slowest)) {
+            char text[240];
+            std::snprintf(text, sizeof text,
+                          "one-sine pulse: w_p = %g rad/s is below 1e-6 p = %g rad/s: so slow a pulse lifts the block "
+                          "by less than the rounding of the input (OneSinePulse::slowest_wp_over_p)",
+                          sine->wp(), slowest);
+            throw std::invalid_argument(text);
+        }
     }
     if (record_kernel_applies(model, input, options))
         return simulate_record_kernel(model, static_cast<const SampledInput&>(input), options);
