@@ -3,6 +3,11 @@
 // bounce form of a rebound.  Templated on the working precision: the kernel
 // runs in double, its twin in long double, and the tests check each piece
 // against the other precision (tests/test_closed_piece.cpp).
+// Divisions by constants other than powers of 2 are written as products by
+// their reciprocals, x * Real(1.0L / 3): the compiler must keep x / 3 a
+// division (the product rounds differently), ~15 cycles of latency on the
+// chain from one impact to the next; the product differs by an ulp, inside
+// every rounding level below.  (Norcia's run: 24 -> 22.7 us, bench/.)
 #pragma once
 
 #include <cmath>
@@ -21,22 +26,19 @@ namespace rocking::dynamics::closed_piece {
 // below 1e-17 for x <= 1; beyond, from cosh and sinh (a few bits lost to
 // the cancellation of sinh x - x, on pieces no default option produces).
 // They carry cosh x - 1 = y ch1 and sinh x - x = x y sh1 without the
-// cancellation of the differences.
+// cancellation of the differences.  1/n! as constants: the divisions are
+// done once, at compile time.  Shorter sums where the terms left out stay
+// below 2e-20 relative: to y^3 below y = 4e-4 (x < 0.02: a record piece of
+// a block with p dt ~ 0.01, every rebound of a cascade), to y^5 below y =
+// 0.01.  The y^3 sum, nearly every call, is inline; the others are not
+// (inlined whole, series cost its callers' registers: 0.5 us of Norcia's
+// 22 us, bench/).
 template <class Real>
-void series(Real y, Real& ch1, Real& sh1) {
+__attribute__((noinline)) void series_long(Real y, Real& ch1, Real& sh1) {
     if (y > 1) {
         const Real x = std::sqrt(y);
         ch1 = (std::cosh(x) - 1) / y;
         sh1 = (std::sinh(x) - x) / (x * y);
-        return;
-    }
-    // 1/n! as constants: the divisions are done once, at compile time.
-    // Shorter sums where the terms left out stay below 2e-20 relative: to
-    // y^3 below y = 4e-4 (x < 0.02: a record piece of a block with p dt ~
-    // 0.01, every rebound of a cascade), to y^5 below y = 0.01.
-    if (y < Real(4e-4)) {
-        ch1 = Real(1) / 2 + y * (Real(1) / 24 + y * (Real(1) / 720 + y * (Real(1) / 40320)));
-        sh1 = Real(1) / 6 + y * (Real(1) / 120 + y * (Real(1) / 5040 + y * (Real(1) / 362880)));
         return;
     }
     if (y < Real(0.01)) {
@@ -66,6 +68,16 @@ void series(Real y, Real& ch1, Real& sh1) {
                                         y * (Real(1) / 355687428096000.0L + y * (Real(1) / 121645100408832000.0L))))))));
 }
 
+template <class Real>
+inline void series(Real y, Real& ch1, Real& sh1) {
+    if (y < Real(4e-4)) {
+        ch1 = Real(1) / 2 + y * (Real(1) / 24 + y * (Real(1) / 720 + y * (Real(1) / 40320)));
+        sh1 = Real(1) / 6 + y * (Real(1) / 120 + y * (Real(1) / 5040 + y * (Real(1) / 362880)));
+        return;
+    }
+    series_long(y, ch1, sh1);
+}
+
 // The first root s > 0 of fa + fpa s + fpp s^2 / 2 (Taylor's polynomial of
 // f at a bracket's start: the root finders' first point), NaN when it has none.
 template <class Real>
@@ -91,8 +103,8 @@ Real quadratic_root(Real fa, Real fpa, Real fpp) {
 template <class Real>
 Real taylor_root(Real f0, Real f1, Real f2, Real f3, Real f4) {
     const Real d0 = quadratic_root(f0, f1, f2);
-    const Real T = d0 * d0 * d0 * (f3 / 6 + d0 * f4 / 24);
-    const Real dT = f1 + d0 * (f2 + d0 * (f3 / 2 + d0 * f4 / 6));
+    const Real T = d0 * d0 * d0 * (f3 * Real(1.0L / 6) + d0 * f4 * Real(1.0L / 24));
+    const Real dT = f1 + d0 * (f2 + d0 * (f3 / 2 + d0 * f4 * Real(1.0L / 6)));
     const Real step = T / dT;
     return std::fabs(step) <= Real(0.25) * d0 ? d0 - step : d0;
 }
@@ -157,8 +169,9 @@ struct Closed {
         if (!(std::fabs(p * d) <= Real(1e-6))) return at(u + d);
         const Real p2 = p * p, r = q.omega + c1();
         const Real d2 = p2 * q.curvature, d3 = p2 * r, d4 = p2 * d2;
-        return {q.theta + d * (q.omega + d / 2 * (d2 + d / 3 * (d3 + d / 4 * d4))),
-                q.omega + d * (d2 + d / 2 * (d3 + d / 3 * d4)), q.curvature + d * (r + d / 2 * d2)};
+        const Real d_3 = d * Real(1.0L / 3);
+        return {q.theta + d * (q.omega + d / 2 * (d2 + d_3 * (d3 + d / 4 * d4))),
+                q.omega + d * (d2 + d / 2 * (d3 + d_3 * d4)), q.curvature + d * (r + d / 2 * d2)};
     }
     // Where sigma theta's Taylor polynomial at the point q (at u) reaches the
     // ground: the first point of an impact's root finder, NaN when its
@@ -271,7 +284,7 @@ struct Closed {
                 continue;
             }
             const Real e = Real(1.25) * std::fabs(step);
-            const Real K = 2 * (r2 * r2 / 2 + std::fabs(r3) / 6);
+            const Real K = 2 * (r2 * r2 / 2 + std::fabs(r3) * Real(1.0L / 6));
             if ((K * e * e <= Real(0.01) && K * e * e * e <= eps / 64 * std::fabs(next)) ||
                 std::fabs(next - x) <= 2 * eps * std::fabs(x) ||
                 b - a <= 2 * eps * std::fmax(std::fabs(a), std::fabs(b)))
@@ -336,10 +349,10 @@ struct Bounce {
     // (the closed form's, from the series already there).
     // u = NaN when the iteration does not settle within 8 steps or leaves (0, u_max).
     typename Closed<Real>::Found landing(Real u_max) const {
-        const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, W = omega + c1;
+        const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, W = omega + c1, inv_p2 = 1 / p2;
         const typename Closed<Real>::Found none{NAN, {NAN, NAN, NAN}};
-        const Real inv_lin = 1 / lin, u0 = -2 * omega * inv_lin / p2;
-        const Real beta = W * u0 * inv_lin / 3, delta = p2 * u0 * u0 / 12;
+        const Real inv_lin = 1 / lin, u0 = -2 * omega * inv_lin * inv_p2;
+        const Real beta = W * u0 * inv_lin * Real(1.0L / 3), delta = p2 * u0 * u0 * Real(1.0L / 12);
         Real u = u0 * (1 - (beta + delta + Real(0.6) * beta * delta) + (2 * beta + 3 * delta) * (beta + delta));
         if (!(std::fabs(beta) + delta < Real(0.1))) u = quadratic_root(omega, p2 * lin / 2, p2 * W / 3);
         for (int i = 0; i < 8; ++i) {
@@ -351,7 +364,7 @@ struct Bounce {
             const Real dg = p2 * lin * (1 + y * sh1 - ch1) + p * x * W * (ch1 - sh1);
             const Real next = u - g / dg;
             const Real e = Real(1.25) * std::fabs(next - u), x_hi = p * (std::fmax(u, next) + e);
-            const Real M = p2 * (p * std::fabs(lin) * x_hi / 4 + std::fabs(W) / 3) * (1 + x_hi * x_hi / 3);
+            const Real M = p2 * (p * std::fabs(lin) * x_hi / 4 + std::fabs(W) * Real(1.0L / 3)) * (1 + x_hi * x_hi * Real(1.0L / 3));
             if ((M * e <= Real(0.2) * std::fabs(dg) && M * e * e <= eps / 32 * std::fabs(dg) * next) ||
                 std::fabs(next - u) <= 4 * eps * u) {
                 if (!(next > 0 && next < u_max)) return none;
