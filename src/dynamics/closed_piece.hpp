@@ -364,7 +364,8 @@ struct Bounce {
             const Real dg = p2 * lin * (1 + y * sh1 - ch1) + p * x * W * (ch1 - sh1);
             const Real next = u - g / dg;
             const Real e = Real(1.25) * std::fabs(next - u), x_hi = p * (std::fmax(u, next) + e);
-            const Real M = p2 * (p * std::fabs(lin) * x_hi / 4 + std::fabs(W) * Real(1.0L / 3)) * (1 + x_hi * x_hi * Real(1.0L / 3));
+            const Real M = p2 * (p * std::fabs(lin) * x_hi / 4 + std::fabs(W) * Real(1.0L / 3)) *
+                           (1 + x_hi * x_hi * Real(1.0L / 3));
             if ((M * e <= Real(0.2) * std::fabs(dg) && M * e * e <= eps / 32 * std::fabs(dg) * next) ||
                 std::fabs(next - u) <= 4 * eps * u) {
                 if (!(next > 0 && next < u_max)) return none;
