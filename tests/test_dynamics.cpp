@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <limits>
 #include <memory>
@@ -120,6 +121,32 @@ std::string against(const SimulationResult& r, const SimulationResult& ref, doub
        << ", theta(t_fin) " << r.theta_at_tfin / alpha << " against " << ref.theta_at_tfin / alpha << ", overturned "
        << r.overturned << " against " << ref.overturned << ", impacts " << r.impacts << " against " << ref.impacts;
     return os.str();
+}
+
+// The comparison under one-sine pulses just above the uplift threshold: the
+// first 1000 draws of seed (RandomDraws: a block of the equation, a pulse and
+// its probe), each kept where the reference run is well conditioned, and
+// there rkf78, rk8pd and Bulirsch-Stoer, run with compared(k), must agree with
+// the reference to tol alpha and on the number of impacts.  Returns how many
+// draws were kept.
+int sines_just_above_agree(std::uint64_t seed, Equation equation, const SimulationOptions& reference,
+                           const std::function<SimulationOptions(SolverKind)>& compared, double tol) {
+    RandomDraws draw(seed);
+    int well = 0;
+    for (int it = 0; it < 1000; ++it) {
+        const Model m = draw.block(it, equation);
+        const double alpha = m.block.alpha;
+        const auto [input, nudged, what] = draw.sine_just_above(it, m);
+        const SimulationResult ref = simulate(m, input, reference);
+        if (!well_conditioned(ref, simulate(m, nudged, reference), alpha)) continue;
+        ++well;
+        for (SolverKind k : {SolverKind::rkf78, SolverKind::gsl_rk8pd, SolverKind::bulirsch_stoer}) {
+            const SimulationResult r = simulate(m, input, compared(k));
+            EXPECT_TRUE(runs_agree(ref, r, alpha, tol) && r.impacts == ref.impacts)
+                << what << ", " << solver_name(k) << ": " << against(r, ref, alpha);
+        }
+    }
+    return well;
 }
 
 // The first u after lo where f, positive from lo, stops being positive: bracketed
@@ -898,21 +925,8 @@ TEST(Dynamics, OnRandomOneSinePulsesJustAboveTheThresholdTheSolversAgree) {
     // all but one at w_p / p > 10).  Dormand-Prince is left out: it locates
     // events on its fourth-order dense output (1e-6 s off over a hundred
     // impacts).
-    RandomDraws draw(20261121);
-    int well = 0;
-    for (int it = 0; it < 1000; ++it) {
-        const Model m = draw.block(it, Equation::linearised);
-        const double alpha = m.block.alpha;
-        const auto [input, nudged, what] = draw.sine_just_above(it, m);
-        const SimulationResult ref = simulate(m, input, with(SolverKind::exact));
-        if (!well_conditioned(ref, simulate(m, nudged, with(SolverKind::exact)), alpha)) continue;
-        ++well;
-        for (SolverKind k : {SolverKind::rkf78, SolverKind::gsl_rk8pd, SolverKind::bulirsch_stoer}) {
-            const SimulationResult r = simulate(m, input, with(k, 1e-12));
-            EXPECT_TRUE(runs_agree(ref, r, alpha, 1e-7) && r.impacts == ref.impacts)
-                << what << ", " << solver_name(k) << ": " << against(r, ref, alpha);
-        }
-    }
+    const int well = sines_just_above_agree(
+        20261121, Equation::linearised, with(SolverKind::exact), [](SolverKind k) { return with(k, 1e-12); }, 1e-7);
     // Not a vacuous test: most cases are well conditioned (measured 951 of 1000).
     EXPECT_GT(well, 800);
 }
@@ -968,21 +982,8 @@ TEST(Dynamics, FullEquationOnOneSinePulsesJustAboveTheThresholdHidesNoExcursionI
     // 1 + 1e-13: measured 997 of 1000), the three solvers with their usual
     // steps must agree with it to 1e-7 alpha (as above: 1e-12 times the
     // probe's 1e4; measured 6.1e-10) and on the number of impacts.
-    RandomDraws draw(20261122);
-    int well = 0;
-    for (int it = 0; it < 1000; ++it) {
-        const Model m = draw.block(it, Equation::full);
-        const double alpha = m.block.alpha;
-        const auto [input, nudged, what] = draw.sine_just_above(it, m);
-        const SimulationResult ref = simulate(m, input, with_steps(SolverKind::rkf78, 0.01));
-        if (!well_conditioned(ref, simulate(m, nudged, with_steps(SolverKind::rkf78, 0.01)), alpha)) continue;
-        ++well;
-        for (SolverKind k : {SolverKind::rkf78, SolverKind::gsl_rk8pd, SolverKind::bulirsch_stoer}) {
-            const SimulationResult r = simulate(m, input, with_steps(k, 0.5));
-            EXPECT_TRUE(runs_agree(ref, r, alpha, 1e-7) && r.impacts == ref.impacts)
-                << what << ", " << solver_name(k) << ": " << against(r, ref, alpha);
-        }
-    }
+    const int well = sines_just_above_agree(20261122, Equation::full, with_steps(SolverKind::rkf78, 0.01),
+                                            [&](SolverKind k) { return with_steps(k, 0.5); }, 1e-7);
     EXPECT_GT(well, 900);
 }
 
