@@ -363,7 +363,9 @@ struct Bounce {
             const Real g = omega + p * lin * x * ch1 + W * y * sh1;
             const Real dg = p2 * lin * (1 + y * sh1 - ch1) + p * x * W * (ch1 - sh1);
             const Real next = u - g / dg;
-            const Real e = Real(1.25) * std::fabs(next - u), x_hi = p * (std::fmax(u, next) + e);
+            // max(u, next) as a comparison (as std::fmax when next is NaN; u > 0
+            // here): std::fmax is a library call, on the chain from one rebound to the next.
+            const Real e = Real(1.25) * std::fabs(next - u), x_hi = p * ((u < next ? next : u) + e);
             const Real M = p2 * (p * std::fabs(lin) * x_hi / 4 + std::fabs(W) * Real(1.0L / 3)) *
                            (1 + x_hi * x_hi * Real(1.0L / 3));
             if ((M * e <= Real(0.2) * std::fabs(dg) && M * e * e <= eps / 32 * std::fabs(dg) * next) ||
