@@ -8,6 +8,11 @@ check() {  # description, expected substring, command...
     local out; out=$("$@" 2>&1)
     if [[ "$out" != *"$want"* ]]; then echo "FAIL: $what: wanted '$want' in: $out"; fail=1; else echo "ok: $what"; fi
 }
+check_not() {  # description, substring that must be absent, command...
+    local what="$1" unwanted="$2"; shift 2
+    local out; out=$("$@" 2>&1)
+    if [[ "$out" == *"$unwanted"* ]]; then echo "FAIL: $what: '$unwanted' should not be in: $out"; fail=1; else echo "ok: $what"; fi
+}
 status() {  # description, expected exit status, command...
     local what="$1" want="$2"; shift 2
     "$@" >/dev/null 2>&1; local got=$?
@@ -55,7 +60,23 @@ check "collapse rtol range (before reading the file)" "--rtol: must be in [2.2e-
 check "rtol below 100 eps refused"   "--rtol: must be in [2.2e-14, 1), 100 eps and above (got 1e-30)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-30
 status "rtol below 100 eps exits 2"  2 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-30
 status "rtol at 100 eps runs"        0 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver bulirsch-stoer --rtol 2.3e-14
-check "rtol printed plainly"         "solver: dopri5 (rtol 1e-06)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5
+check "tolerances printed plainly"   "solver: dopri5 (rtol 1e-06, atol 1e-06 alpha = 1.5e-07 rad)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5
+# --atol in rad, as ode45's AbsTol: it reaches the solver.  At rtol 1e-12 the
+# case-2 run keeps theta(t_fin)/alpha = 0.8456919365 (the jump sum, above) with
+# the default atol (1e-12 alpha) and with 1e-13 rad, and loses it at 1e-3 rad.
+check "atol stated in rad and alpha" "solver: dopri5 (rtol 1e-12, atol 6.66667e-13 alpha = 1e-13 rad)" \
+    "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-12 --atol 1e-13
+check "a tight atol keeps the answer" "theta(t_fin)/alpha = 0.8456919365" \
+    "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-12 --atol 1e-13
+check "a loose atol runs" $'atol 0.00666667 alpha = 0.001 rad)\n  theta(t_fin)/alpha = 0.84569' \
+    "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-12 --atol 1e-3
+check_not "and moves the answer" "theta(t_fin)/alpha = 0.8456919365" \
+    "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-12 --atol 1e-3
+check "atol in the JSON, in rad" '"rtol": 9.9999999999999998e-13, "atol_rad": 1e-13' \
+    "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-12 --atol 1e-13 --json
+check "atol range in rad and alpha" "--atol: must be in [3.33e-15, 0.15) rad, [2.2e-14, 1) alpha at alpha = 0.15 (got 0.2)" \
+    "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --atol 0.2
+status "atol out of range exits 2" 2 "$rocking" collapse no-such-file --alpha 0.15 --atol 1e-20
 status "collapse bad restitution exits 2" 2 "$rocking" collapse no-such-file --alpha 0.15 --restitution x
 status "simulate bad criterion exits 2" 2 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --criterion soon
 # A block past the top when the pulse ends (theta(t_fin) = 2.4 alpha, moving out)
@@ -69,7 +90,7 @@ out=$(mktemp)
 check "simulate writes theta(t)"     "t,theta_over_alpha,omega_over_alpha_p" cat "$out"
 "$rocking" simulate --one-sine --ap 0.45 --wp 6 --alpha 0.15 --p 2 --solver rkf78 --rtol 1e-9 --criterion overturning \
     --output "$out" --dt 0.1 >/dev/null
-check "theta(t) file states solver and tolerance" $'# solver: rkf78 (rtol 1e-09)\n# criterion: overturning' cat "$out"
+check "theta(t) file states solver and tolerance" $'# solver: rkf78 (rtol 1e-09, atol 1e-09 alpha = 1.5e-10 rad)\n# criterion: overturning' cat "$out"
 rm -f "$out"
 # simulate --record: a one-column record holding 0.2 g for 1 s (11 samples) drives
 # the block from rest as a step: theta/alpha = (a/alpha - 1)(cosh pt - 1) (eq. 3),
@@ -166,5 +187,10 @@ check "collapse at the lowest p says so" "strong.txt overturns the block (alpha 
     "$rocking" collapse "$edge/strong.txt" --alpha 0.1 --unit g
 check "and gives the lowest p as a bound" "p <= 0.300000 rad/s: " "$rocking" collapse "$edge/strong.txt" --alpha 0.1 --unit g
 check "and its JSON has no safe p" '"p_safe": null, "below_range": true' "$rocking" collapse "$edge/strong.txt" --alpha 0.1 --unit g --json
+# The search's description printed rtol by std::to_string, 1e-8 as "0.000000".
+check "collapse states its tolerances plainly" "solver dopri5 rtol 1e-08, atol 1e-07 alpha, p scanned" \
+    "$rocking" collapse "$edge/strong.txt" --alpha 0.1 --unit g --solver dopri5 --rtol 1e-8 --atol 1e-8 --json
+check "and a restitution factor" "restitution 1e-07, criterion" \
+    "$rocking" collapse "$edge/strong.txt" --alpha 0.1 --unit g --restitution 1e-7 --json
 rm -rf "$edge"
 exit $fail

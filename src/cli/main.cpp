@@ -31,10 +31,11 @@ const char* kUsage =
     "usage: rocking q --case I --x X [--pulses N] [--json]\n"
     "       rocking q --train A:d,A:d,... --x X [--json]\n"
     "       rocking response --case I --x X [--pulses N] [--q Q] [--steps K] [--json]\n"
-    "       rocking simulate INPUT GEOMETRY [--model M] [--solver S] [--rtol R] [--criterion C]\n"
+    "       rocking simulate INPUT GEOMETRY [--model M] [--solver S] [--rtol R] [--atol A] [--criterion C]\n"
     "                        [--restitution E|housner] [--output FILE --dt DT] [--json]\n"
     "       rocking record info FILE [--json]\n"
-    "       rocking collapse FILE --alpha A [--model M] [--solver S] [--criterion C] [--restitution E|housner] [--json]\n"
+    "       rocking collapse FILE --alpha A [--model M] [--solver S] [--rtol R] [--atol A] [--criterion C]\n"
+    "                        [--restitution E|housner] [--json]\n"
     "       rocking assess FILE --alpha A (--height H | --half-height h) [--json]\n"
     "\n"
     "  --case I     input of Figure 3, I = 1..5 (amplitudes in PGA, durations in to)\n"
@@ -53,8 +54,9 @@ const char* kUsage =
     "  samples, as recorded or scaled to --pga G (in g) or --q Q (PGA = Q alpha g).\n"
     "  GEOMETRY is --alpha A with --p P (rad/s), --half-height h (m, the H of eq. 2) or --height H (m).\n"
     "  --model linearised|full (default linearised); --solver exact|dopri5|rkf78|bulirsch-stoer|gsl-rk8pd\n"
-    "  (default exact for linearised, dopri5 for full); --rtol in [2.2e-14, 1) (default 1e-6; also the\n"
-    "  absolute tolerance, in units of alpha);\n"
+    "  (default exact for linearised, dopri5 for full); --rtol in [2.2e-14, 1) (default 1e-6);\n"
+    "  --atol in rad on theta and rad/s on theta', as ode45's AbsTol (default rtol times alpha; ode45's\n"
+    "  default is 1e-6), in [2.2e-14, 1) alpha; the ODE solvers' tolerances, stated in every output;\n"
     "  --criterion final-rotation|peak-rotation|overturning (default final-rotation, the paper's);\n"
     "  --restitution on angular velocity at impact (default 1) or housner (1 - 1.5 sin^2 alpha);\n"
     "  --output FILE writes t,theta/alpha,theta'/(alpha p) every --dt seconds (default 0.01).\n"
@@ -97,6 +99,24 @@ double rtol_option(const std::string& text) {
     if (!(r >= dynamics::kSmallestTolerance && r < 1))
         throw UsageError("--rtol: must be in [2.2e-14, 1), 100 eps and above (got " + text + ")");
     return r;
+}
+
+// --rtol and --atol into the solver's options: --atol in rad (and rad/s on
+// theta', one number for the whole state, as ode45's AbsTol), kept in units
+// of alpha and held to the same range as --rtol there.
+void tolerance_options(const std::map<std::string, std::string>& values, double alpha,
+                       dynamics::SolverOptions& solver) {
+    if (values.count("--rtol")) solver.rtol = solver.atol_alpha = rtol_option(values.at("--rtol"));
+    if (!values.count("--atol")) return;
+    const std::string& text = values.at("--atol");
+    const double atol = number("--atol", text), in_alpha = atol / alpha;
+    if (!(in_alpha >= dynamics::kSmallestTolerance && in_alpha < 1)) {
+        char range[160];
+        std::snprintf(range, sizeof range, "[%.3g, %.3g) rad, [2.2e-14, 1) alpha at alpha = %g",
+                      dynamics::kSmallestTolerance * alpha, alpha, alpha);
+        throw UsageError("--atol: must be in " + std::string(range) + " (got " + text + ")");
+    }
+    solver.atol_alpha = in_alpha;
 }
 
 int integer(const std::string& flag, const std::string& text) {
@@ -287,7 +307,7 @@ int cmd_simulate(int argc, char** argv) {
         else ++it;
     const Args a = parse(static_cast<int>(args.size()), args.data(), 2,
                          {"--case", "--train", "--pulses", "--x", "--to", "--pga", "--q", "--rd", "--ap", "--wp",
-                          "--alpha", "--p", "--half-height", "--height", "--model", "--solver", "--rtol", "--criterion",
+                          "--alpha", "--p", "--half-height", "--height", "--model", "--solver", "--rtol", "--atol", "--criterion",
                           "--restitution", "--output", "--dt", "--record", "--unit", "--record-dt"});
     auto has = [&](const char* f) { return a.values.count(f) > 0; };
     auto num = [&](const char* f) { return number(f, a.values.at(f)); };
@@ -317,7 +337,7 @@ int cmd_simulate(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--solver: ") + e.what());
     }
-    if (has("--rtol")) options.solver.rtol = options.solver.atol_alpha = rtol_option(a.values.at("--rtol"));
+    tolerance_options(a.values, alpha, options.solver);
     Criterion criterion = Criterion::final_rotation;
     try {
         if (has("--criterion")) criterion = parse_criterion(a.values.at("--criterion"));
@@ -386,10 +406,11 @@ int cmd_simulate(int argc, char** argv) {
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
     const SimulationResult r = simulate(model, *input, options);
-    char rtol[32];
-    std::snprintf(rtol, sizeof rtol, " (rtol %g)", options.solver.rtol);
-    const std::string tolerance =
-        options.solver.kind == SolverKind::exact ? std::string(" (closed form between events)") : std::string(rtol);
+    char atol_rad[48];
+    std::snprintf(atol_rad, sizeof atol_rad, " = %g rad", options.solver.atol_alpha * alpha);
+    const std::string tolerance = options.solver.kind == SolverKind::exact
+                                      ? std::string(" (closed form between events)")
+                                      : " (" + tolerance_text(options.solver) + atol_rad + ")";
     if (has("--output")) {
         harness::Table table({"t", "theta_over_alpha", "omega_over_alpha_p"});
         table.note("model", model.describe());
@@ -408,6 +429,7 @@ int cmd_simulate(int argc, char** argv) {
         std::cout << "{\"model\": " << json_string(model.describe()) << ", \"input\": " << json_string(input->describe())
                   << ", \"solver\": " << json_string(solver_name(options.solver.kind))
                   << ", \"rtol\": " << harness::format_number(options.solver.rtol)
+                  << ", \"atol_rad\": " << harness::format_number(options.solver.atol_alpha * alpha)
                   << ", \"criterion\": " << json_string(criterion_name(criterion)) << ", \"collapse\": " << b(collapse)
                   << ", \"t_fin\": " << harness::format_number(r.t_fin)
                   << ", \"theta_tfin_over_alpha\": "
@@ -482,7 +504,8 @@ int cmd_collapse(int argc, char** argv) {
     using namespace rocking::dynamics;
     if (argc < 3) throw UsageError("usage: rocking collapse FILE --alpha A [options]");
     const std::string path = argv[2];
-    const Args a = parse(argc, argv, 3, {"--alpha", "--model", "--solver", "--criterion", "--restitution", "--rtol", "--unit", "--dt"});
+    const Args a = parse(argc, argv, 3,
+                         {"--alpha", "--model", "--solver", "--criterion", "--restitution", "--rtol", "--atol", "--unit", "--dt"});
     if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
     const double alpha = number("--alpha", a.values.at("--alpha"));
     if (!(alpha > 0 && alpha < 0.7)) throw UsageError("--alpha: must be in (0, 0.7)");
@@ -498,7 +521,7 @@ int cmd_collapse(int argc, char** argv) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
-    if (a.values.count("--rtol")) o.solver.rtol = o.solver.atol_alpha = rtol_option(a.values.at("--rtol"));
+    tolerance_options(a.values, alpha, o.solver);
     if (a.values.count("--restitution")) {
         const double e = restitution_option(a.values.at("--restitution"));
         o.housner_restitution = std::isnan(e);

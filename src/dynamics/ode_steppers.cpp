@@ -322,6 +322,12 @@ std::string solver_name(SolverKind kind) {
     return "?";
 }
 
+std::string tolerance_text(const SolverOptions& options) {
+    char text[64];
+    std::snprintf(text, sizeof text, "rtol %g, atol %g alpha", options.rtol, options.atol_alpha);
+    return text;
+}
+
 SolverKind parse_solver(const std::string& name) {
     for (SolverKind k : {SolverKind::exact, SolverKind::dopri5, SolverKind::rkf78, SolverKind::bulirsch_stoer,
                          SolverKind::gsl_rk8pd})

@@ -24,8 +24,13 @@ constexpr double kSmallestTolerance = 100 * std::numeric_limits<double>::epsilon
 
 struct SolverOptions {
     SolverKind kind = SolverKind::exact;
-    double rtol = 1e-6;        // relative tolerance (ODE solvers)
-    double atol_alpha = 1e-6;  // absolute tolerance on theta, in units of alpha (theta' in alpha p)
+    double rtol = 1e-6;  // relative tolerance (ODE solvers)
+    // Absolute tolerance, in units of alpha: atol_alpha * alpha rad on theta
+    // and the same number in rad/s on theta' (Odeint and GSL take one
+    // absolute tolerance for the whole state, (theta, theta'), as ode45's
+    // scalar AbsTol does).  1e-6 alpha is tighter than ode45's default
+    // AbsTol, 1e-6 rad, for every alpha below 1 rad.
+    double atol_alpha = 1e-6;
     // Largest step times p: keeps the closed form's series within 1e-21
     // (closed_piece.hpp) and the events of a step few.  It does not keep a
     // step to one extremum of theta: where theta'' changes sign inside a step,
@@ -37,6 +42,9 @@ struct SolverOptions {
 };
 
 std::string solver_name(SolverKind kind);
+// The tolerances a run of an ODE solver keeps, for the outputs that state
+// it: "rtol 1e-06, atol 1e-06 alpha" (%g: "rtol 1e-08", never "0.000000").
+std::string tolerance_text(const SolverOptions& options);
 // Parses exact, dopri5, rkf78, bulirsch-stoer, gsl-rk8pd; throws std::invalid_argument.
 SolverKind parse_solver(const std::string& name);
 

@@ -9,10 +9,11 @@ using namespace dynamics;
 
 std::string CollapseOptions::describe() const {
     std::ostringstream os;
-    os << (equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1") << ", restitution "
-       << (housner_restitution ? std::string("Housner 1 - 1.5 sin^2 alpha") : std::to_string(restitution))
-       << ", criterion " << criterion_name(criterion) << ", solver " << solver_name(solver.kind)
-       << (solver.kind == SolverKind::exact ? std::string("") : " rtol " + std::to_string(solver.rtol))
+    os << (equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1") << ", restitution ";
+    if (housner_restitution) os << "Housner 1 - 1.5 sin^2 alpha";
+    else os << restitution;  // %g: std::to_string printed 1e-7 as 0.000000
+    os << ", criterion " << criterion_name(criterion) << ", solver " << solver_name(solver.kind)
+       << (solver.kind == SolverKind::exact ? std::string("") : " " + tolerance_text(solver))
        << ", p scanned from " << p_min << " by x" << growth << ", refined to " << rel_tol;
     return os.str();
 }
