@@ -206,3 +206,42 @@ TEST(CollapseSearch, ConstantStepHasAClosedFormThreshold) {
     EXPECT_EQ(l.p, o.p_min);
     EXPECT_EQ(l.simulations, 1);
 }
+
+TEST(CollapseSearch, ItsPIsTheFirstOnItsGridNotABound) {
+    // Table 1's search (as the paper's) raises p by 1 % until the block
+    // overturns, then bisects.  The set of collapsing p is not an interval:
+    // narrower islands of collapse can lie below the p it finds.  Under
+    // Norcia's 2016-08-24 02:33 NS record at alpha = 0.1 it finds 5.4806
+    // rad/s (expected/table1), yet the block overturns at 4.0018 rad/s, 27 %
+    // lower (the first collapse on a grid 10 times finer, bench/:
+    // table1_finer_grid.csv), by four solvers that agree on the time of the
+    // fall to 1e-10 s.
+    const std::string path = kRecords + "/esm/IT.NRC..HGN.D.20160824.023329.C.ACC.ASC";
+    if (!fs::exists(path)) GTEST_SKIP() << "shared records folder absent: " << path;
+    const Record r = read_esm(path);
+    const dynamics::SampledInput input(r.in_g(9.81), r.dt, r.name);
+    const double alpha = 0.1, p_island = 4.001751175;
+    CollapseOptions o;  // Table 1's: linearised, exact solver, Housner restitution, overturning
+    const CollapseResult c = smallest_collapse_p(input, alpha, o);
+    ASSERT_TRUE(c.found);
+    EXPECT_NEAR(c.p, 5.4806, 1e-4);
+    double first_fall = NAN;
+    for (int path_kind = 0; path_kind < 4; ++path_kind) {
+        dynamics::Model m;
+        m.block = dynamics::Block::from_p(p_island, alpha);
+        m.restitution = dynamics::housner_restitution(alpha);
+        dynamics::SimulationOptions s;
+        s.solver.kind = path_kind < 2 ? dynamics::SolverKind::exact
+                                      : path_kind == 2 ? dynamics::SolverKind::gsl_rk8pd : dynamics::SolverKind::rkf78;
+        s.solver.record_kernel = path_kind == 0;
+        s.solver.rtol = s.solver.atol_alpha = path_kind == 2 ? 1e-13 : 1e-12;
+        const dynamics::SimulationResult run = simulate(m, input, s);
+        const std::string what = dynamics::solver_name(s.solver.kind) + (path_kind == 1 ? " (general path)" : "");
+        ASSERT_TRUE(run.overturned) << what;
+        EXPECT_EQ(run.impacts, 33) << what;
+        if (std::isnan(first_fall)) first_fall = run.t_overturn;
+        EXPECT_NEAR(run.t_overturn, 25.53772072, 1e-8) << what;
+        EXPECT_NEAR(run.t_overturn, first_fall, 1e-9) << what;
+    }
+    EXPECT_TRUE(collapses_at(input, alpha, p_island, o));
+}
