@@ -97,6 +97,39 @@ SimulationOptions with(SolverKind k, double rtol) {
     return o;
 }
 
+// work(i, input) for every row's record, read again as the pipeline reads
+// it (records_analysis.cpp), in parallel across records.  The first failure
+// as "file: what", empty when there is none.
+template <class Work>
+std::string on_each_record(const std::vector<scenes::RecordRow>& rows, Work work) {
+    const std::string root = scenes::records_dir();
+    std::vector<std::string> errors(rows.size());
+    const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), rows.size()));
+    std::vector<std::thread> pool;
+    for (unsigned w = 0; w < workers; ++w)
+        pool.emplace_back([&, w] {
+            for (std::size_t i = w; i < rows.size(); i += workers) try {
+                    const records::Record r = records::read_any(root + "/" + rows[i].file);
+                    work(i, SampledInput(r.in_g(9.81), r.dt, r.name));
+                } catch (const std::exception& e) {
+                    errors[i] = e.what();
+                }
+        });
+    for (auto& t : pool) t.join();
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        if (!errors[i].empty()) return rows[i].file + ": " + errors[i];
+    return "";
+}
+
+// The check that confirms every exact bracket of Table 1 (reproduce
+// --reference table1): the same search's options, rk8pd at rtol 1e-13.
+records::CollapseOptions rk8pd_check() {
+    records::CollapseOptions o = scenes::table1_search();
+    o.solver.kind = SolverKind::gsl_rk8pd;
+    o.solver.rtol = o.solver.atol_alpha = 1e-13;
+    return o;
+}
+
 // Table 1's collapse search (records_analysis.cpp) run again with the
 // paper's solver setting: ode45 at RelTol 1e-6, its default AbsTol 1e-6
 // (rad on theta, rad/s on theta': atol_alpha = 1e-6 / alpha), here
@@ -112,10 +145,8 @@ SimulationOptions with(SolverKind k, double rtol) {
 // of the model's non-interval set of collapsing p.
 template <class Say>
 void paper_setting_search(const std::vector<scenes::RecordRow>& rows, const std::string& out, Say say) {
-    const std::string root = scenes::records_dir();
     std::vector<std::array<records::CollapseResult, 5>> dopri(rows.size());
     std::vector<std::array<int, 5>> verdict(rows.size());  // -1: not checked, 0: rk8pd contradicts, 1: confirms
-    std::vector<std::string> errors(rows.size());
     // CPU seconds of each thread's searches, exact and dopri5 (the rk8pd
     // checks left out): the whole search's cost with either solver.
     std::vector<double> exact_cpu(rows.size(), 0.0), dopri_cpu(rows.size(), 0.0);
@@ -124,45 +155,30 @@ void paper_setting_search(const std::vector<scenes::RecordRow>& rows, const std:
         clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
         return ts.tv_sec + 1e-9 * ts.tv_nsec;
     };
-    const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), rows.size()));
-    std::vector<std::thread> pool;
-    for (unsigned w = 0; w < workers; ++w)
-        pool.emplace_back([&, w] {
-            for (std::size_t i = w; i < rows.size(); i += workers) try {
-                    const records::Record r = records::read_any(root + "/" + rows[i].file);
-                    const SampledInput input(r.in_g(9.81), r.dt, r.name);
-                    for (std::size_t k = 0; k < scenes::kTableAlphas.size(); ++k) {
-                        records::CollapseOptions o = scenes::table1_search();
-                        const double t0 = thread_cpu();
-                        const records::CollapseResult e = records::smallest_collapse_p(input, scenes::kTableAlphas[k], o);
-                        const double t1 = thread_cpu();
-                        if (e.p != rows[i].collapse[k].p || e.p_safe != rows[i].collapse[k].p_safe)
-                            throw std::runtime_error("the exact search did not repeat itself");
-                        o.solver.kind = SolverKind::dopri5;
-                        o.solver.rtol = 1e-6;
-                        o.solver.atol_alpha = 1e-6 / scenes::kTableAlphas[k];
-                        const records::CollapseResult d = dopri[i][k] =
-                            records::smallest_collapse_p(input, scenes::kTableAlphas[k], o);
-                        exact_cpu[i] += t1 - t0;
-                        dopri_cpu[i] += thread_cpu() - t1;
-                        verdict[i][k] = -1;
-                        if (d.found && !d.below_range() && e.found && std::fabs(d.p - e.p) > 1e-4 * e.p) {
-                            o.solver.kind = SolverKind::gsl_rk8pd;
-                            o.solver.rtol = o.solver.atol_alpha = 1e-13;
-                            verdict[i][k] = records::collapses_at(input, scenes::kTableAlphas[k], d.p, o) &&
-                                            !records::collapses_at(input, scenes::kTableAlphas[k], d.p_safe, o);
-                        }
-                    }
-                } catch (const std::exception& e) {
-                    errors[i] = e.what();
-                }
-        });
-    for (auto& t : pool) t.join();
-    for (std::size_t i = 0; i < rows.size(); ++i)
-        if (!errors[i].empty()) {
-            say("table1 search with the paper's setting not measured: %s: %s\n", rows[i].file.c_str(), errors[i].c_str());
-            return;
+    const std::string failed = on_each_record(rows, [&](std::size_t i, const SampledInput& input) {
+        for (std::size_t k = 0; k < scenes::kTableAlphas.size(); ++k) {
+            records::CollapseOptions o = scenes::table1_search();
+            const double t0 = thread_cpu();
+            const records::CollapseResult e = records::smallest_collapse_p(input, scenes::kTableAlphas[k], o);
+            const double t1 = thread_cpu();
+            if (e.p != rows[i].collapse[k].p || e.p_safe != rows[i].collapse[k].p_safe)
+                throw std::runtime_error("the exact search did not repeat itself");
+            o.solver.kind = SolverKind::dopri5;
+            o.solver.rtol = 1e-6;
+            o.solver.atol_alpha = 1e-6 / scenes::kTableAlphas[k];
+            const records::CollapseResult d = dopri[i][k] = records::smallest_collapse_p(input, scenes::kTableAlphas[k], o);
+            exact_cpu[i] += t1 - t0;
+            dopri_cpu[i] += thread_cpu() - t1;
+            verdict[i][k] = -1;
+            if (d.found && !d.below_range() && e.found && std::fabs(d.p - e.p) > 1e-4 * e.p)
+                verdict[i][k] = records::collapses_at(input, scenes::kTableAlphas[k], d.p, rk8pd_check()) &&
+                                !records::collapses_at(input, scenes::kTableAlphas[k], d.p_safe, rk8pd_check());
         }
+    });
+    if (!failed.empty()) {
+        say("table1 search with the paper's setting not measured: %s\n", failed.c_str());
+        return;
+    }
     std::ofstream csv(out + "/table1_paper_setting.csv");
     csv.precision(10);
     csv << "# Table 1's collapse search (" << scenes::table1_search().describe()
@@ -214,41 +230,26 @@ void paper_setting_search(const std::vector<scenes::RecordRow>& rows, const std:
 // block first below it, rk8pd at rtol 1e-13 re-simulates that p.
 template <class Say>
 void finer_grid_search(const std::vector<scenes::RecordRow>& rows, const std::string& out, Say say) {
-    const std::string root = scenes::records_dir();
     const std::size_t na = scenes::kTableAlphas.size();
     std::vector<double> first(rows.size() * na, NAN);
     std::vector<int> confirmed(rows.size() * na, -1);
-    std::vector<std::string> errors(rows.size());
-    const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), rows.size()));
-    std::vector<std::thread> pool;
-    for (unsigned w = 0; w < workers; ++w)
-        pool.emplace_back([&, w] {
-            for (std::size_t i = w; i < rows.size(); i += workers) try {
-                    const records::Record r = records::read_any(root + "/" + rows[i].file);
-                    const SampledInput input(r.in_g(9.81), r.dt, r.name);
-                    for (std::size_t k = 0; k < na; ++k) {
-                        const records::CollapseResult& e = rows[i].collapse[k];
-                        if (!e.found || e.below_range()) continue;
-                        records::CollapseOptions o = scenes::table1_search();
-                        for (double p = o.p_min; p < e.p_safe; p *= 1.001)
-                            if (records::collapses_at(input, scenes::kTableAlphas[k], p, o)) {
-                                first[i * na + k] = p;
-                                o.solver.kind = SolverKind::gsl_rk8pd;
-                                o.solver.rtol = o.solver.atol_alpha = 1e-13;
-                                confirmed[i * na + k] = records::collapses_at(input, scenes::kTableAlphas[k], p, o);
-                                break;
-                            }
-                    }
-                } catch (const std::exception& e) {
-                    errors[i] = e.what();
+    const std::string failed = on_each_record(rows, [&](std::size_t i, const SampledInput& input) {
+        for (std::size_t k = 0; k < na; ++k) {
+            const records::CollapseResult& e = rows[i].collapse[k];
+            if (!e.found || e.below_range()) continue;
+            const records::CollapseOptions o = scenes::table1_search();
+            for (double p = o.p_min; p < e.p_safe; p *= 1.001)
+                if (records::collapses_at(input, scenes::kTableAlphas[k], p, o)) {
+                    first[i * na + k] = p;
+                    confirmed[i * na + k] = records::collapses_at(input, scenes::kTableAlphas[k], p, rk8pd_check());
+                    break;
                 }
-        });
-    for (auto& t : pool) t.join();
-    for (std::size_t i = 0; i < rows.size(); ++i)
-        if (!errors[i].empty()) {
-            say("table1 search on a finer grid not measured: %s: %s\n", rows[i].file.c_str(), errors[i].c_str());
-            return;
         }
+    });
+    if (!failed.empty()) {
+        say("table1 search on a finer grid not measured: %s\n", failed.c_str());
+        return;
+    }
     std::ofstream csv(out + "/table1_finer_grid.csv");
     csv.precision(10);
     csv << "# Table 1's search (" << scenes::table1_search().describe()
