@@ -133,11 +133,12 @@ records::CollapseOptions rk8pd_check() {
 // Table 1's collapse search (records_analysis.cpp) run again with the
 // paper's solver setting: ode45 at RelTol 1e-6, its default AbsTol 1e-6
 // (rad on theta, rad/s on theta': atol_alpha = 1e-6 / alpha), here
-// Dormand-Prince with the same rule for rest, against the exact solver's p
-// (the pipeline's rows).  Not a check of either: near the boundary the set
-// of collapsing p is not an interval (PROVENANCE.md, table1), so a
-// difference mixes Dormand-Prince's error with that fragility; it measures
-// how far a p of the paper's Table 1 may sit from what its model gives.
+// Dormand-Prince with this harness's impact rule and its own rest rule
+// (rest_threshold), against the exact solver's p (the pipeline's rows).  A
+// difference alone is no verdict: near the boundary the set of collapsing p
+// is not an interval (PROVENANCE.md, table1), so it mixes Dormand-Prince's
+// error with that fragility; it measures how far a p found at the paper's
+// setting may sit from what the model gives.
 // Where the two differ, Dormand-Prince's bracket (collapse at p, none at
 // p_safe) is re-simulated with rk8pd at rtol 1e-13, the check that confirms
 // every exact bracket (reproduce --reference table1): a bracket it
