@@ -121,15 +121,6 @@ std::string on_each_record(const std::vector<scenes::RecordRow>& rows, Work work
     return "";
 }
 
-// The check that confirms every exact bracket of Table 1 (reproduce
-// --reference table1): the same search's options, rk8pd at rtol 1e-13.
-records::CollapseOptions rk8pd_check() {
-    records::CollapseOptions o = scenes::table1_search();
-    o.solver.kind = SolverKind::gsl_rk8pd;
-    o.solver.rtol = o.solver.atol_alpha = 1e-13;
-    return o;
-}
-
 // Table 1's collapse search (records_analysis.cpp) run again with the
 // paper's solver setting: ode45 at RelTol 1e-6, its default AbsTol 1e-6
 // (rad on theta, rad/s on theta': atol_alpha = 1e-6 / alpha), here
@@ -172,8 +163,8 @@ void paper_setting_search(const std::vector<scenes::RecordRow>& rows, const std:
             dopri_cpu[i] += thread_cpu() - t1;
             verdict[i][k] = -1;
             if (d.found && !d.below_range() && e.found && std::fabs(d.p - e.p) > 1e-4 * e.p)
-                verdict[i][k] = records::collapses_at(input, scenes::kTableAlphas[k], d.p, rk8pd_check()) &&
-                                !records::collapses_at(input, scenes::kTableAlphas[k], d.p_safe, rk8pd_check());
+                verdict[i][k] = records::collapses_at(input, scenes::kTableAlphas[k], d.p, scenes::table1_check()) &&
+                                !records::collapses_at(input, scenes::kTableAlphas[k], d.p_safe, scenes::table1_check());
         }
     });
     if (!failed.empty()) {
@@ -242,7 +233,7 @@ void finer_grid_search(const std::vector<scenes::RecordRow>& rows, const std::st
             for (double p = o.p_min; p < e.p_safe; p *= 1.001)
                 if (records::collapses_at(input, scenes::kTableAlphas[k], p, o)) {
                     first[i * na + k] = p;
-                    confirmed[i * na + k] = records::collapses_at(input, scenes::kTableAlphas[k], p, rk8pd_check());
+                    confirmed[i * na + k] = records::collapses_at(input, scenes::kTableAlphas[k], p, scenes::table1_check());
                     break;
                 }
         }

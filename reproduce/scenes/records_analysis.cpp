@@ -37,6 +37,17 @@ records::CollapseOptions table1_search() {
     return o;
 }
 
+records::CollapseOptions table1_check() {
+    // rtol 1e-13: at 1e-11 rk8pd itself flips borderline outcomes (rocking
+    // on a record is that sensitive near the boundary; measured, see
+    // PROVENANCE.md).
+    records::CollapseOptions check = table1_search();
+    check.solver.kind = dynamics::SolverKind::gsl_rk8pd;
+    check.solver.rtol = 1e-13;
+    check.solver.atol_alpha = 1e-13;
+    return check;
+}
+
 namespace {
 
 RecordRow analyse(const std::string& root, const std::string& path, bool reference) {
@@ -53,13 +64,8 @@ RecordRow analyse(const std::string& root, const std::string& path, bool referen
         row.collapse[k] = records::smallest_collapse_p(input, kTableAlphas[k], o);
         if (reference && row.collapse[k].found && !row.collapse[k].below_range()) {
             // A second solver at a much tighter tolerance must see the same
-            // boundary: collapse at p, none at p_safe.  rtol 1e-13: at 1e-11
-            // rk8pd itself flips borderline outcomes (rocking on a record is
-            // that sensitive near the boundary; measured, see PROVENANCE.md).
-            records::CollapseOptions check = o;
-            check.solver.kind = dynamics::SolverKind::gsl_rk8pd;
-            check.solver.rtol = 1e-13;
-            check.solver.atol_alpha = 1e-13;
+            // boundary: collapse at p, none at p_safe.
+            const records::CollapseOptions check = table1_check();
             const bool at_p = records::collapses_at(input, kTableAlphas[k], row.collapse[k].p, check);
             const bool below = records::collapses_at(input, kTableAlphas[k], row.collapse[k].p_safe, check);
             row.confirmed[k] = at_p && !below;

@@ -30,5 +30,8 @@ std::string records_dir();
 const std::vector<RecordRow>& shared_records(bool reference);
 // The options of Table 1's collapse search (stated in every output).
 records::CollapseOptions table1_search();
+// The same search's second solver, which must see each bracket the same
+// (reference mode): GSL rk8pd at rtol 1e-13.
+records::CollapseOptions table1_check();
 
 }  // namespace rocking::scenes
