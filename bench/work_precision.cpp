@@ -140,7 +140,9 @@ void paper_setting_search(const std::vector<scenes::RecordRow>& rows, const std:
     std::vector<std::array<records::CollapseResult, 5>> dopri(rows.size());
     std::vector<std::array<int, 5>> verdict(rows.size());  // -1: not checked, 0: rk8pd contradicts, 1: confirms
     // CPU seconds of each thread's searches, exact and dopri5 (the rk8pd
-    // checks left out): the whole search's cost with either solver.
+    // checks left out): the whole search's cost with either solver.  The
+    // pipeline's exact search runs again here to be timed without the
+    // half-periods it was timed with; it must give the same brackets.
     std::vector<double> exact_cpu(rows.size(), 0.0), dopri_cpu(rows.size(), 0.0);
     auto thread_cpu = [] {
         timespec ts;

@@ -214,8 +214,8 @@ TEST(CollapseSearch, ItsPIsTheFirstOnItsGridNotABound) {
     // Norcia's 2016-08-24 02:33 NS record at alpha = 0.1 it finds 5.4806
     // rad/s (expected/table1), yet the block overturns at 4.0018 rad/s, 27 %
     // lower (the first collapse on a grid 10 times finer, bench/:
-    // table1_finer_grid.csv), by four solvers that agree on the time of the
-    // fall to 1e-10 s.
+    // table1_finer_grid.csv): the exact solver's two paths, rk8pd and rkf78
+    // agree on the time of the fall to 1e-10 s.
     const std::string path = kRecords + "/esm/IT.NRC..HGN.D.20160824.023329.C.ACC.ASC";
     if (!fs::exists(path)) GTEST_SKIP() << "shared records folder absent: " << path;
     const Record r = read_esm(path);
