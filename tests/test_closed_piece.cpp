@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <string>
 
 #include "dynamics/closed_piece.hpp"
 #include "test_util.hpp"
@@ -215,13 +216,52 @@ TEST(ClosedPiece, TaylorStartsAreAFourthOrderStepCloserThanTheParabola) {
     EXPECT_GT(checked[1], 3000);
 }
 
+// A rebound leaving theta = 0 at omega on a piece a0 + c1 u (sigma omega >
+// 0, sigma lin < 0): its landing, from the bounce form, against the
+// long-double root of theta / u by bisection.  The tolerances: g's rounding,
+// a few ulps of omega and its corrections over |g'| ~ p^2 |lin| / 2, on the
+// time; theta''s rounding and the time's error on the velocity.  Returns the
+// larger error as a fraction of its tolerance, -1 where there is no landing
+// before u_max (and none found), NaN after a failed expectation.
+double check_landing(double p, double lin, double omega, double c1, double u_max, const std::string& what) {
+    const Bounce<double> b{p, omega, lin, c1};
+    const auto land = b.landing(u_max);
+    const Closed<Ld> g{Ld(p), 0, Ld(omega), Ld(lin), Ld(omega) + Ld(c1)};
+    auto over_u = [&](Ld u) { return g.at(u).theta / u; };
+    // The first sign change of theta / u on a geometric scan of (0, u_max),
+    // from 1e-3 of the parabola's landing.
+    Ld lo = Ld(-2 * omega / (p * p * lin)) * 1e-3L, hi = lo;
+    bool bracket = false;
+    while (hi < u_max && !bracket) {
+        lo = hi;
+        hi = std::min(Ld(u_max), hi * 1.05L);
+        bracket = (over_u(lo) < 0) != (over_u(hi) < 0);
+    }
+    if (!bracket) {
+        EXPECT_TRUE(std::isnan(land.u)) << what << ": no landing before u_max, yet one found";
+        return std::isnan(land.u) ? -1.0 : NAN;
+    }
+    EXPECT_FALSE(std::isnan(land.u)) << what << ": landing not found";
+    if (std::isnan(land.u)) return NAN;
+    const Ld ref = bisect(over_u, lo, hi);
+    const auto at_ref = g.at(ref);
+    const Closed<double> f = b.closed();
+    const double k1 = f.k1_bound(double(ref));
+    const double s = std::fabs(double(at_ref.omega)) / double(ref);
+    const double tol_u = 4 * kEps * double(ref) + 8 * kEps * (std::fabs(omega) + std::fabs(c1) * double(ref)) / s;
+    const double e_u = std::fabs(land.u - double(ref)) / tol_u;
+    EXPECT_LT(e_u, 1.0) << what;
+    const double du = std::fabs(land.u - double(ref));
+    const double e_om = std::fabs(land.q.omega - double(at_ref.omega)) /
+                        (2 * f.omega_noise(double(ref), k1) + p * p * std::fabs(double(at_ref.curvature)) * du * 1.01);
+    EXPECT_LT(e_om, 1.0) << what;
+    return std::max(e_u, e_om);
+}
+
 TEST(ClosedPiece, BounceLandsWhereTheClosedFormReturnsToTheGround) {
-    // A rebound leaving theta = 0 at omega on a piece a0 + c1 u (sigma omega
-    // > 0, sigma lin < 0): the landing, from the bounce form g = theta / u,
-    // against the long-double root of g by bisection, for bounces from
-    // p u = 1e-7 (the end of a cascade) to 0.09 (near the 0.1 / p the kernel
-    // allows), where the start from g's series is off by ~1e-4 relative and
-    // Newton needs more than one step.
+    // Bounces from p u = 1e-7 (the end of a cascade) to 0.09 (near the 0.1 / p
+    // the kernel allows), where the start from g's series is off by ~1e-4
+    // relative and Newton needs more than one step.
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     double worst = 0;
@@ -232,41 +272,44 @@ TEST(ClosedPiece, BounceLandsWhereTheClosedFormReturnsToTheGround) {
         const double x_target = std::pow(10.0, -7.0 + 5.95 * unit(rng));
         const double omega = -p * lin * x_target / 2;  // the parabola's landing at u = x_target / p
         const double c1 = 50.0 * (2 * unit(rng) - 1);
-        const Bounce<double> b{p, omega, lin, c1};
-        const double u_max = 0.1 / p;
-        const auto land = b.landing(u_max);
-        // theta / u in long double, the root at u = 0 taken out.
-        const Closed<Ld> g{Ld(p), 0, Ld(omega), Ld(lin), Ld(omega) + Ld(c1)};
-        auto over_u = [&](Ld u) { return g.at(u).theta / u; };
-        // The first sign change of theta / u on a geometric scan of (0, u_max).
-        Ld lo = Ld(x_target) / p * 1e-3L, hi = lo;
-        bool bracket = false;
-        while (hi < u_max && !bracket) {
-            lo = hi;
-            hi = std::min(Ld(u_max), hi * 1.05L);
-            bracket = (over_u(lo) < 0) != (over_u(hi) < 0);
-        }
-        if (!bracket) {
-            EXPECT_TRUE(std::isnan(land.u)) << "n " << n << ": no landing before u_max, yet one found";
-            continue;
-        }
-        ASSERT_FALSE(std::isnan(land.u)) << "n " << n << ": landing at p u ~ " << x_target << " not found";
-        ++landed;
-        const Ld ref = bisect(over_u, lo, hi);
-        const auto at_ref = g.at(ref);
-        const Closed<double> f = b.closed();
-        const double k1 = f.k1_bound(double(ref));
-        // g's rounding, a few ulps of omega and its corrections, over |g'| ~ p^2 |lin| / 2.
-        const double s = std::fabs(double(at_ref.omega)) / double(ref);
-        const double tol_u = 4 * kEps * double(ref) + 8 * kEps * (std::fabs(omega) + std::fabs(c1) * double(ref)) / s;
-        const double e_u = std::fabs(land.u - double(ref)) / tol_u;
-        EXPECT_LT(e_u, 1.0) << "n " << n << ", p u " << x_target;
-        const double du = std::fabs(land.u - double(ref));
-        const double e_om = std::fabs(land.q.omega - double(at_ref.omega)) /
-                            (2 * f.omega_noise(double(ref), k1) + p * p * std::fabs(double(at_ref.curvature)) * du * 1.01);
-        EXPECT_LT(e_om, 1.0) << "n " << n << ", p u " << x_target;
-        worst = std::max({worst, e_u, e_om});
+        const double e = check_landing(p, lin, omega, c1, 0.1 / p, "n " + std::to_string(n) + ", p u " +
+                                                                       std::to_string(x_target));
+        if (e >= 0) ++landed;
+        worst = std::max(worst, e);
     }
     std::printf("landing(): %d bounces; largest error %.2f of the tolerance\n", landed, worst);
     EXPECT_GT(landed, 3500);
+}
+
+TEST(ClosedPiece, AShortBounceLandsByItsSeriesAsByNewton) {
+    // The bounces short_bounce() takes (|beta| <= 1e-3, delta <= 1e-5, in
+    // double): beta and delta drawn over the whole region, a tenth of them on
+    // its edges, where the series' truncation is largest, against the same
+    // long-double root and tolerances as above.  A term wrong or left out
+    // above rounding fails here (without e's delta^3 term, 9e-15 relative at
+    // the edge: 3.4 times the tolerance); the coefficients themselves are
+    // checked exactly against their derivation by ctest landing_series.
+    std::mt19937_64 rng(12);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst = 0;
+    int landed = 0;
+    for (int n = 0; n < 4000; ++n) {
+        const double p = 0.5 * std::pow(40.0, unit(rng)), sigma = unit(rng) < 0.5 ? 1.0 : -1.0;
+        const double lin = -sigma * (0.01 + 0.3 * unit(rng));
+        const bool edge = n % 10 == 0;
+        const double delta = edge ? kShortDelta * (1 - 1e-9) : kShortDelta * std::pow(10.0, -8 * unit(rng));
+        const double beta = (unit(rng) < 0.5 ? -1 : 1) * (edge ? kShortBeta * (1 - 1e-9)
+                                                               : kShortBeta * std::pow(10.0, -6 * unit(rng)));
+        // beta and delta as Bounce::landing forms them: u0 = -2 omega / (p^2 lin),
+        // delta = (p u0)^2 / 12, beta = W u0 / (3 lin).
+        const double u0 = std::sqrt(12 * delta) / p, omega = -p * p * lin * u0 / 2;
+        const double c1 = 3 * lin * beta / u0 - omega;
+        const double e = check_landing(p, lin, omega, c1, 0.1 / p, "n " + std::to_string(n) + ", beta " +
+                                                                       std::to_string(beta) + ", delta " +
+                                                                       std::to_string(delta));
+        if (e >= 0) ++landed;
+        worst = std::max(worst, e);
+    }
+    std::printf("short bounces: %d; largest error %.2f of the tolerance\n", landed, worst);
+    EXPECT_EQ(landed, 4000);
 }

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <type_traits>
 
 #include "numerics/bisect.hpp"
 
@@ -328,6 +329,45 @@ struct Closed {
 // every term a correction to omega, and from the series in x of
 // (cosh x - 1)/x and (sinh x - x)/x,
 //   |g''(u)| <= p^2 (p |lin| x / 4 + |W| / 3) (1 + x^2 / 3).
+// The landing of a short bounce without iteration: Bounce's g = 0 solved as
+// a power series in its small parameters (Bounce::landing below),
+//   u = u0 (1 + e),  theta'(u) = omega (v - 1),
+// e and v the series of tools/landing_series.py, which derives them on exact
+// fractions and checks these lines (ctest landing_series).  For |beta| <=
+// 1e-3 and delta <= 1e-5 (kShortBeta, kShortDelta) the terms kept leave out
+// below 6e-20 relative, under eps/32 of double (Newton's own criterion), and
+// Estrin's scheme in beta keeps the chain short: a cascade's rebounds follow
+// one another through it.
+inline constexpr double kShortBeta = 1e-3, kShortDelta = 1e-5;
+
+template <class Real>
+struct ShortBounce {
+    Real e, v;
+};
+
+template <class Real>
+ShortBounce<Real> short_bounce(Real b, Real d) {
+    const Real e0 = d * (Real(-1) + d * (Real(13.0L / 5) + d * (Real(-311.0L / 35) + d * (Real(6063.0L / 175)))));
+    const Real e1 = Real(-1) + d * (Real(22.0L / 5) + d * (Real(-741.0L / 35) + d * (Real(18628.0L / 175))));
+    const Real e2 = Real(2) + d * (Real(-87.0L / 5) + d * (Real(21912.0L / 175) + d * (Real(-29346.0L / 35))));
+    const Real e3 = Real(-5) + d * (Real(336.0L / 5) + d * (Real(-22782.0L / 35)));
+    const Real e4 = Real(14) + d * (Real(-258) + d * (Real(110583.0L / 35)));
+    const Real e5 = Real(-42) + d * (Real(990));
+    const Real e6 = Real(132);
+    const Real e7 = Real(-429);
+    const Real v0 = d * (Real(-2) + d * (Real(22.0L / 5) + d * (Real(-494.0L / 35) + d * (Real(9314.0L / 175)))));
+    const Real v1 = Real(-1) + d * (Real(31.0L / 5) + d * (Real(-1059.0L / 35) + d * (Real(26569.0L / 175))));
+    const Real v2 = Real(2) + d * (Real(-108.0L / 5) + d * (Real(28596.0L / 175) + d * (Real(-27912.0L / 25))));
+    const Real v3 = Real(-5) + d * (Real(392.0L / 5) + d * (Real(-140586.0L / 175)));
+    const Real v4 = Real(14) + d * (Real(-1452.0L / 5) + d * (Real(131472.0L / 35)));
+    const Real v5 = Real(-42) + d * (Real(1089));
+    const Real v6 = Real(132);
+    const Real v7 = Real(-429);
+    const Real b2 = b * b, b4 = b2 * b2;
+    return {(e0 + b * e1) + b2 * (e2 + b * e3) + b4 * ((e4 + b * e5) + b2 * (e6 + b * e7)),
+            (v0 + b * v1) + b2 * (v2 + b * v3) + b4 * ((v4 + b * v5) + b2 * (v6 + b * v7))};
+}
+
 template <class Real>
 struct Bounce {
     Real p, omega, lin, c1;
@@ -346,13 +386,26 @@ struct Bounce {
     // e ~ s: the iteration stops when that bound (g'' bounded as above, e
     // taken as 1.25 |s|) is below eps/32 of the root, or at a step below
     // 4 ulps.  The state at the landing is near() the last point evaluated
-    // (the closed form's, from the series already there).
+    // (the closed form's, from the series already there).  Where beta and
+    // delta are small enough (most of a cascade's rebounds), short_bounce()
+    // gives the root and theta' there to the same criterion with no step
+    // (theta''/p^2 = lin + c1 u at theta = 0).
     // u = NaN when the iteration does not settle within 8 steps or leaves (0, u_max).
     typename Closed<Real>::Found landing(Real u_max) const {
         const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, W = omega + c1, inv_p2 = 1 / p2;
         const typename Closed<Real>::Found none{NAN, {NAN, NAN, NAN}};
         const Real inv_lin = 1 / lin, u0 = -2 * omega * inv_lin * inv_p2;
         const Real beta = W * u0 * inv_lin * Real(1.0L / 3), delta = p2 * u0 * u0 * Real(1.0L / 12);
+        // In double only: the series are cut for double's rounding; long
+        // double (the kernel's check on its own rounding) iterates.
+        if constexpr (std::is_same_v<Real, double>) {
+            if (std::fabs(beta) <= Real(kShortBeta) && delta <= Real(kShortDelta)) {
+                const ShortBounce<Real> s = short_bounce(beta, delta);
+                const Real u = u0 + u0 * s.e;
+                if (!(u > 0 && u < u_max)) return none;
+                return {u, {Real(0), omega * s.v - omega, lin + c1 * u}};
+            }
+        }
         Real u = u0 * (1 - (beta + delta + Real(0.6) * beta * delta) + (2 * beta + 3 * delta) * (beta + delta));
         if (!(std::fabs(beta) + delta < Real(0.1))) u = quadratic_root(omega, p2 * lin / 2, p2 * W / 3);
         for (int i = 0; i < 8; ++i) {

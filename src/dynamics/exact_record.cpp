@@ -128,6 +128,28 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             const bool micro_b = rules::record_impact(result, t_land, options, p);
             rules::apply_impact(run, result, model, t_land, om_land, micro_b, rest);
         }
+        // The rebound that outlasts the piece goes on to the piece's end, as
+        // the piece analysis would take it, without the analysis (which would
+        // locate its top): nothing happens on the way when sigma theta is
+        // concave (sigma theta'' < 0 at both ends), ends above noise, and the
+        // tangents at the ends, meeting at w0 (s1 + w1 u1) / (w0 + w1), keep
+        // its top below the largest |theta| so far, as in the loop above.
+        if (!run.resting && t < t_fin && t < dt * (k + 1)) {
+            const Rest piece = rest_of_piece();
+            const Real lin_b = piece.a0 - sigma * alpha;
+            if (!(sigma * lin_b < 0)) return;
+            const Closed<Real> f{p, 0, omega, lin_b, omega + piece.c1};
+            const typename Closed<Real>::Point end = f.at(piece.u1);
+            const Real s1 = sigma * end.theta, w0 = sigma * omega, w1 = -sigma * end.omega;
+            if (!(sigma * end.curvature < 0 && s1 > noise && w0 > 0)) return;
+            const Real top = w1 > 0 ? w0 * ((s1 + w1 * piece.u1) / (w0 + w1)) : s1;
+            if (!(top < max_theta * Real(1 - 1e-9))) return;
+            ++result.steps;
+            t = dt * (k + 1);
+            theta = end.theta;
+            omega = end.omega;
+            if (t < t_fin) ++k;
+        }
     };
 
     while (!done && rules::begin_pass(run, result, model, input, accel_at, options, t_fin, note_theta, [](Real) {})) {
