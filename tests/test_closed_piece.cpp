@@ -258,27 +258,49 @@ double check_landing(double p, double lin, double omega, double c1, double u_max
     return std::max(e_u, e_om);
 }
 
+// A rebound drawn for a test of landing(), with its description.
+struct Rebound {
+    double omega, c1;
+    std::string what;
+};
+
+// 4000 bounces on pieces with p from 0.5 to 20 rad/s and sigma lin < 0 up to
+// 0.3 rad, their rebound drawn by rebound(rng, unit, n, p, lin),
+// each checked by check_landing: how many landed, and the largest error as a
+// fraction of its tolerance.
+struct Landings {
+    int landed = 0;
+    double worst = 0;
+};
+
+template <class Rebound>
+Landings check_landings(std::uint64_t seed, Rebound rebound) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Landings out;
+    for (int n = 0; n < 4000; ++n) {
+        const double p = 0.5 * std::pow(40.0, unit(rng)), sigma = unit(rng) < 0.5 ? 1.0 : -1.0;
+        const double lin = -sigma * (0.01 + 0.3 * unit(rng));
+        const auto [omega, c1, what] = rebound(rng, unit, n, p, lin);
+        const double e = check_landing(p, lin, omega, c1, 0.1 / p, what);
+        if (e >= 0) ++out.landed;
+        out.worst = std::max(out.worst, e);
+    }
+    return out;
+}
+
 TEST(ClosedPiece, BounceLandsWhereTheClosedFormReturnsToTheGround) {
     // Bounces from p u = 1e-7 (the end of a cascade) to 0.09 (near the 0.1 / p
     // the kernel allows), where the start from g's series is off by ~1e-4
     // relative and Newton needs more than one step.
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    double worst = 0;
-    int landed = 0;
-    for (int n = 0; n < 4000; ++n) {
-        const double p = 0.5 * std::pow(40.0, unit(rng)), sigma = unit(rng) < 0.5 ? 1.0 : -1.0;
-        const double lin = -sigma * (0.01 + 0.3 * unit(rng));
+    const Landings r = check_landings(11, [](auto& rng, auto& unit, int n, double p, double lin) {
         const double x_target = std::pow(10.0, -7.0 + 5.95 * unit(rng));
         const double omega = -p * lin * x_target / 2;  // the parabola's landing at u = x_target / p
         const double c1 = 50.0 * (2 * unit(rng) - 1);
-        const double e = check_landing(p, lin, omega, c1, 0.1 / p, "n " + std::to_string(n) + ", p u " +
-                                                                       std::to_string(x_target));
-        if (e >= 0) ++landed;
-        worst = std::max(worst, e);
-    }
-    std::printf("landing(): %d bounces; largest error %.2f of the tolerance\n", landed, worst);
-    EXPECT_GT(landed, 3500);
+        return Rebound{omega, c1, "n " + std::to_string(n) + ", p u " + std::to_string(x_target)};
+    });
+    std::printf("landing(): %d bounces; largest error %.2f of the tolerance\n", r.landed, r.worst);
+    EXPECT_GT(r.landed, 3500);
 }
 
 TEST(ClosedPiece, AShortBounceLandsByItsSeriesAsByNewton) {
@@ -289,13 +311,7 @@ TEST(ClosedPiece, AShortBounceLandsByItsSeriesAsByNewton) {
     // above rounding fails here (without e's delta^3 term, 9e-15 relative at
     // the edge: 3.4 times the tolerance); the coefficients themselves are
     // checked exactly against their derivation by ctest landing_series.
-    std::mt19937_64 rng(12);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    double worst = 0;
-    int landed = 0;
-    for (int n = 0; n < 4000; ++n) {
-        const double p = 0.5 * std::pow(40.0, unit(rng)), sigma = unit(rng) < 0.5 ? 1.0 : -1.0;
-        const double lin = -sigma * (0.01 + 0.3 * unit(rng));
+    const Landings r = check_landings(12, [](auto& rng, auto& unit, int n, double p, double lin) {
         const bool edge = n % 10 == 0;
         const double delta = edge ? kShortDelta * (1 - 1e-9) : kShortDelta * std::pow(10.0, -8 * unit(rng));
         const double beta = (unit(rng) < 0.5 ? -1 : 1) * (edge ? kShortBeta * (1 - 1e-9)
@@ -303,13 +319,10 @@ TEST(ClosedPiece, AShortBounceLandsByItsSeriesAsByNewton) {
         // beta and delta as Bounce::landing forms them: u0 = -2 omega / (p^2 lin),
         // delta = (p u0)^2 / 12, beta = W u0 / (3 lin).
         const double u0 = std::sqrt(12 * delta) / p, omega = -p * p * lin * u0 / 2;
-        const double c1 = 3 * lin * beta / u0 - omega;
-        const double e = check_landing(p, lin, omega, c1, 0.1 / p, "n " + std::to_string(n) + ", beta " +
-                                                                       std::to_string(beta) + ", delta " +
-                                                                       std::to_string(delta));
-        if (e >= 0) ++landed;
-        worst = std::max(worst, e);
-    }
-    std::printf("short bounces: %d; largest error %.2f of the tolerance\n", landed, worst);
-    EXPECT_EQ(landed, 4000);
+        return Rebound{omega, 3 * lin * beta / u0 - omega,
+                       "n " + std::to_string(n) + ", beta " + std::to_string(beta) + ", delta " +
+                           std::to_string(delta)};
+    });
+    std::printf("short bounces: %d; largest error %.2f of the tolerance\n", r.landed, r.worst);
+    EXPECT_EQ(r.landed, 4000);
 }

@@ -123,6 +123,20 @@ std::string against(const SimulationResult& r, const SimulationResult& ref, doub
     return os.str();
 }
 
+// A well-conditioned run against the same input under other solvers: each
+// must agree with it to its tolerance (runs_agree), and the general exact
+// path (record_kernel off) on every impact as well.
+void expect_agreement(const SimulationResult& ref, const Model& m, const GroundInput& input, const std::string& what,
+                      std::initializer_list<std::pair<SimulationOptions, double>> others) {
+    for (const auto& [o, tol] : others) {
+        const SimulationResult r = simulate(m, input, o);
+        const bool general = o.solver.kind == SolverKind::exact && !o.solver.record_kernel;
+        EXPECT_TRUE(runs_agree(ref, r, m.block.alpha, tol) && (!general || r.impacts == ref.impacts))
+            << what << ", " << solver_name(o.solver.kind) << (general ? " (general path)" : "") << ": "
+            << against(r, ref, m.block.alpha);
+    }
+}
+
 // The comparison under one-sine pulses just above the uplift threshold: the
 // first 1000 draws of seed (RandomDraws: a block of the equation, a pulse and
 // its probe), each kept where the reference run is well conditioned, and
@@ -997,7 +1011,8 @@ TEST(Dynamics, OnRandomInputsEverySolverAgreesWhereTheMotionIsWellConditioned) {
     // 1e-9 (alpha, s) when the input is scaled by 1 + 1e-13 -- the record
     // kernel, the general exact path and three ODE solvers at rtol 1e-12
     // must agree: the exact ones to 1e-9 alpha (rounding 1e-16 times the
-    // amplification the probe allows, 1e4; measured 9e-12), the ODE ones to
+    // amplification the probe allows, 1e4; measured 9e-12) and on every
+    // impact (expect_agreement; since 2026-11-22), the ODE ones to
     // 1e-7 alpha (their 1e-12 times 1e4; measured: rkf78 1.1e-10, rk8pd
     // 2e-11, Bulirsch-Stoer 4.7e-9).  Dormand-Prince is left out: stepping
     // across the samples it converges slowly on records (README).  Elsewhere
@@ -1042,16 +1057,11 @@ TEST(Dynamics, OnRandomInputsEverySolverAgreesWhereTheMotionIsWellConditioned) {
         ++well;
         SimulationOptions general = with(SolverKind::exact);
         general.solver.record_kernel = false;
-        const std::pair<SimulationOptions, double> others[] = {{general, 1e-9},
-                                                               {with(SolverKind::rkf78, 1e-12), 1e-7},
-                                                               {with(SolverKind::gsl_rk8pd, 1e-12), 1e-7},
-                                                               {with(SolverKind::bulirsch_stoer, 1e-12), 1e-7}};
-        for (const auto& [o, tol] : others) {
-            const SimulationResult r = simulate(m, *input, o);
-            EXPECT_TRUE(runs_agree(ref, r, alpha, tol))
-                << what << ", " << solver_name(o.solver.kind) << (o.solver.record_kernel ? "" : " (general path)")
-                << ": " << against(r, ref, alpha);
-        }
+        expect_agreement(ref, m, *input, what,
+                         {{general, 1e-9},
+                          {with(SolverKind::rkf78, 1e-12), 1e-7},
+                          {with(SolverKind::gsl_rk8pd, 1e-12), 1e-7},
+                          {with(SolverKind::bulirsch_stoer, 1e-12), 1e-7}});
     }
     // Not a vacuous test: most cases are well conditioned (measured 323 of 400).
     EXPECT_GT(well, 250);
@@ -1088,11 +1098,7 @@ TEST(Dynamics, OnCoarseRecordsTheKernelFollowsTheGeneralPath) {
         general.solver.record_kernel = false;
         const std::string what = "case " + std::to_string(it) + ", alpha " + std::to_string(alpha) + ", p " +
                                  std::to_string(p) + ", p dt " + std::to_string(p * dt);
-        const SimulationResult r = simulate(m, input, general);
-        EXPECT_TRUE(runs_agree(ref, r, alpha, 1e-9) && r.impacts == ref.impacts)
-            << what << ", general path: " << against(r, ref, alpha);
-        const SimulationResult q = simulate(m, input, with(SolverKind::gsl_rk8pd, 1e-12));
-        EXPECT_TRUE(runs_agree(ref, q, alpha, 1e-7)) << what << ", rk8pd: " << against(q, ref, alpha);
+        expect_agreement(ref, m, input, what, {{general, 1e-9}, {with(SolverKind::gsl_rk8pd, 1e-12), 1e-7}});
     }
     std::printf("coarse records: %d of 3000 well conditioned\n", well);
     EXPECT_GT(well, 2900);  // measured 2971
