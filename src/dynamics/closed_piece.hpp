@@ -318,19 +318,8 @@ struct Closed {
     }
 };
 
-// A bounce: the block leaves theta = 0 with theta' = omega (sigma omega > 0)
-// on a piece where the record is linear, a0 + c1 u.  With C = lin
-// (theta0 = 0), W = omega + c1, x = p u, y = x^2 and the even series
-//   ch1(y) = (cosh x - 1) / x^2 = 1/2 + y/24 + y^2/720 + ...
-//   sh1(y) = (sinh x - x) / x^3 = 1/6 + y/120 + y^2/5040 + ...
-// the closed form divided by u (its root at u = 0 taken out) is
-//   g(u) = theta(u) / u = omega + p lin x ch1 + W y sh1,
-//   g'(u) = p^2 lin (1 + y sh1 - ch1) + p x W (ch1 - sh1),
-// every term a correction to omega, and from the series in x of
-// (cosh x - 1)/x and (sinh x - x)/x,
-//   |g''(u)| <= p^2 (p |lin| x / 4 + |W| / 3) (1 + x^2 / 3).
-// The landing of a short bounce without iteration: Bounce's g = 0 solved as
-// a power series in its small parameters (Bounce::landing below),
+// The landing of a short bounce without iteration: g = 0 of the bounce
+// below solved as a power series in its small parameters (Bounce::landing),
 //   u = u0 (1 + e),  theta'(u) = omega (v - 1),
 // e and v the series of tools/landing_series.py, which derives them on exact
 // fractions and checks these lines (ctest landing_series).  For |beta| <=
@@ -368,6 +357,17 @@ ShortBounce<Real> short_bounce(Real b, Real d) {
             (v0 + b * v1) + b2 * (v2 + b * v3) + b4 * ((v4 + b * v5) + b2 * (v6 + b * v7))};
 }
 
+// A bounce: the block leaves theta = 0 with theta' = omega (sigma omega > 0)
+// on a piece where the record is linear, a0 + c1 u.  With C = lin
+// (theta0 = 0), W = omega + c1, x = p u, y = x^2 and the even series
+//   ch1(y) = (cosh x - 1) / x^2 = 1/2 + y/24 + y^2/720 + ...
+//   sh1(y) = (sinh x - x) / x^3 = 1/6 + y/120 + y^2/5040 + ...
+// the closed form divided by u (its root at u = 0 taken out) is
+//   g(u) = theta(u) / u = omega + p lin x ch1 + W y sh1,
+//   g'(u) = p^2 lin (1 + y sh1 - ch1) + p x W (ch1 - sh1),
+// every term a correction to omega, and from the series in x of
+// (cosh x - 1)/x and (sinh x - x)/x,
+//   |g''(u)| <= p^2 (p |lin| x / 4 + |W| / 3) (1 + x^2 / 3).
 template <class Real>
 struct Bounce {
     Real p, omega, lin, c1;

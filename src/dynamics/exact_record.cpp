@@ -87,6 +87,12 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         const Closed<Real> f{p, theta0, omega0, C, W};
         return f.extremum({theta0, omega0, C}, 0, dt, om1, f.omega_noise(dt, k1_dt)).q.theta;
     };
+    // Where the tangents at the ends of an arc of sigma theta meet, from
+    // (0, s0) with slope w0 and (u, s1) with slope -w1 (w0, w1 > 0): above
+    // the arc's maximum where it is concave, below its minimum where convex.
+    auto tangents_meet = [](Real s0, Real w0, Real s1, Real w1, Real u) {
+        return s0 + w0 * ((s1 - s0 + w1 * u) / (w0 + w1));
+    };
     // The level that sigma theta, rising from s, must stay below for nothing
     // to happen: the first alpha while it is to come, the fall angle.
     auto upper_from = [&](Real s) -> Real {
@@ -132,8 +138,8 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         // the piece analysis would take it, without the analysis (which would
         // locate its top): nothing happens on the way when sigma theta is
         // concave (sigma theta'' < 0 at both ends), ends above noise, and the
-        // tangents at the ends, meeting at w0 (s1 + w1 u1) / (w0 + w1), keep
-        // its top below the largest |theta| so far, as in the loop above.
+        // tangents at the ends (tangents_meet) keep its top below the largest
+        // |theta| so far, as in the loop above.
         if (!run.resting && t < t_fin && t < dt * (k + 1)) {
             const Rest piece = rest_of_piece();
             const Real lin_b = piece.a0 - sigma * alpha;
@@ -142,7 +148,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             const typename Closed<Real>::Point end = f.at(piece.u1);
             const Real s1 = sigma * end.theta, w0 = sigma * omega, w1 = -sigma * end.omega;
             if (!(sigma * end.curvature < 0 && s1 > noise && w0 > 0)) return;
-            const Real top = w1 > 0 ? w0 * ((s1 + w1 * piece.u1) / (w0 + w1)) : s1;
+            const Real top = w1 > 0 ? tangents_meet(0, w0, s1, w1, piece.u1) : s1;
             if (!(top < max_theta * Real(1 - 1e-9))) return;
             ++result.steps;
             t = dt * (k + 1);
@@ -200,7 +206,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                             // 1e-9 relative, is far above its rounding.
                             const Real s0 = sg * th0, w0 = sg * om0, w1 = -sg * om1;
                             if (!(s0 > noise && om0 * om1 < 0.0)) break;
-                            const Real v = s0 + w0 * ((s1 - s0 + w1 * dt) / (w0 + w1));
+                            const Real v = tangents_meet(s0, w0, s1, w1, dt);
                             if (sg * C < 0.0) {
                                 if (!(v < upper * Real(1 - 1e-9))) break;
                                 if (!(v < std::max(peak, max_theta) * Real(1 - 1e-9))) {
