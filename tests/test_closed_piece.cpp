@@ -265,23 +265,23 @@ struct Rebound {
 };
 
 // 4000 bounces on pieces with p from 0.5 to 20 rad/s and sigma lin < 0 up to
-// 0.3 rad, their rebound drawn by rebound(rng, unit, n, p, lin),
-// each checked by check_landing: how many landed, and the largest error as a
-// fraction of its tolerance.
+// 0.3 rad, each rebound drawn by draw(rng, unit, n, p, lin) and checked by
+// check_landing: how many landed, and the largest error as a fraction of
+// its tolerance.
 struct Landings {
     int landed = 0;
     double worst = 0;
 };
 
-template <class Rebound>
-Landings check_landings(std::uint64_t seed, Rebound rebound) {
+template <class Draw>
+Landings check_landings(std::uint64_t seed, Draw draw) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     Landings out;
     for (int n = 0; n < 4000; ++n) {
         const double p = 0.5 * std::pow(40.0, unit(rng)), sigma = unit(rng) < 0.5 ? 1.0 : -1.0;
         const double lin = -sigma * (0.01 + 0.3 * unit(rng));
-        const auto [omega, c1, what] = rebound(rng, unit, n, p, lin);
+        const auto [omega, c1, what] = draw(rng, unit, n, p, lin);
         const double e = check_landing(p, lin, omega, c1, 0.1 / p, what);
         if (e >= 0) ++out.landed;
         out.worst = std::max(out.worst, e);
