@@ -37,14 +37,12 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     series(p * dt * p * dt, ch1_dt, sh1_dt);
     const Real k1_dt = p * dt * p * dt * ch1_dt, s_dt = p * dt * (1 + p * dt * p * dt * sh1_dt),
                q_dt = dt * p * dt * p * dt * sh1_dt;
-    // The products the quiet loop below takes on every piece: p sinh p dt,
-    // sinh p dt / p and cosh p dt.
-    const Real ps_dt = p * s_dt, sp_dt = s_dt * inv_p, c_dt = 1 + k1_dt;
+    // The product the quiet loop below takes on every piece: p sinh p dt.
+    const Real ps_dt = p * s_dt;
     const Real noise = 1e-12 * alpha;  // the general path's "rose" rule (simulate.cpp)
     const Real rest = options.rest_velocity;
 
-    SimulationResult result;
-    result.t_fin = t_fin;
+    SimulationResult result = rules::new_result(options, t_fin);
     rules::RunState<Real> run(options, t_fin);
     // The state itself (run's fields), under the names of the equations.
     Real &t = run.t, &theta = run.theta, &omega = run.omega;
@@ -176,17 +174,17 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 if (t == dt * k) {
                     // The state and the record in locals: theta and omega are
                     // the run's fields, which the loads of a[] might alias.
-                    Real th0 = theta, om0 = omega, a_k = a[k];
+                    Real th0 = theta, om0 = omega, a_k = a[k], C = th0 + (a_k - sa);
                     const Real sg = sigma;
                     const double* const a_end = a.data() + a.size();
                     const double* a_next = a.data() + k + 1;
                     for (; a_next < a_end; ++a_next) {  // t_stop = t_fin here
                         const Real a_k1 = *a_next;
-                        const Real c1 = (a_k1 - a_k) * inv_dt, lin = a_k - sa;
-                        const Real C = th0 + lin, W = om0 + c1;
+                        const Real c1 = (a_k1 - a_k) * inv_dt, W = om0 + c1;
                         const Real th1 = th0 + om0 * dt + C * k1_dt + W * q_dt;
                         const Real om1 = om0 + C * ps_dt + W * k1_dt;
-                        const Real e1 = C * c_dt + W * sp_dt;  // theta''/p^2 at the end
+                        // theta''/p^2 at the end, eq. 3 at the point: the next piece's C.
+                        const Real e1 = th1 + (a_k1 - sa);
                         const Real s1 = sg * th1;
                         // C e1 > 0: theta'' of one sign at both ends, so theta'
                         // is monotone (an underflow to 0 only sends the piece
@@ -219,6 +217,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                         th0 = th1;
                         om0 = om1;
                         a_k = a_k1;
+                        C = e1;
                         peak = std::max(peak, s1);
                     }
                     k = static_cast<std::size_t>(a_next - a.data()) - 1;

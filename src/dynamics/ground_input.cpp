@@ -74,6 +74,8 @@ SampledInput::SampledInput(std::vector<double> samples_g, double dt, std::string
         if (k % kBlock == 0 && k > 0)  // a block's last piece ends on the next block's first sample
             block_peak_[k / kBlock - 1] = std::max(block_peak_[k / kBlock - 1], std::fabs(samples_[k]));
     }
+    tail_peak_ = block_peak_;
+    for (std::size_t j = tail_peak_.size() - 1; j-- > 0;) tail_peak_[j] = std::max(tail_peak_[j], tail_peak_[j + 1]);
 }
 
 std::size_t SampledInput::piece_index(double t) const {
@@ -154,11 +156,14 @@ double SampledInput::first_above(double t, double t_end, double thr) const {
         ++k;  // |a_k| <= thr: the crossing would have been found
         if (std::fabs(samples_[k]) < thr) {
             for (;;) {
-                // Pieces kBlock j .. kBlock (j + 1) - 1 all below thr: skip them.
-                if (k % kBlock == 0 && k / kBlock < block_peak_.size() && block_peak_[k / kBlock] < thr &&
-                    k + kBlock < last) {
-                    k += kBlock;
-                    continue;
+                // Pieces kBlock j .. kBlock (j + 1) - 1 all below thr: skip them;
+                // every piece from there on below thr: no crossing.
+                if (k % kBlock == 0 && k / kBlock < block_peak_.size() && block_peak_[k / kBlock] < thr) {
+                    if (tail_peak_[k / kBlock] < thr) return INFINITY;
+                    if (k + kBlock < last) {
+                        k += kBlock;
+                        continue;
+                    }
                 }
                 if (k + 1 < last && std::fabs(samples_[k + 1]) < thr) {
                     ++k;

@@ -77,8 +77,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     breaks.push_back(t_fin);
     std::sort(breaks.begin(), breaks.end());
 
-    SimulationResult result;
-    result.t_fin = t_fin;
+    SimulationResult result = rules::new_result(options, t_fin);
     auto stepper = make_stepper(model, input, options.solver);
     stepper->set_batching(options.record_dt <= 0.0, options.overturn_angle);
 
