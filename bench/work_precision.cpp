@@ -43,7 +43,7 @@ namespace {
 
 struct Timed {
     SimulationResult result;
-    double seconds;  // wall time of one run: the fastest of 5 windows' means (timed())
+    double seconds;  // one run, on the steady clock (one thread: its CPU time); timed()
 };
 
 Timed timed(const Model& m, const GroundInput& in, const SimulationOptions& o) {
