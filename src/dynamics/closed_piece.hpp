@@ -392,10 +392,15 @@ struct Bounce {
     // (theta''/p^2 = lin + c1 u at theta = 0).
     // u = NaN when the iteration does not settle within 8 steps or leaves (0, u_max).
     typename Closed<Real>::Found landing(Real u_max) const {
-        const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, W = omega + c1, inv_p2 = 1 / p2;
+        const Real eps = std::numeric_limits<Real>::epsilon(), p2 = p * p, W = omega + c1;
         const typename Closed<Real>::Found none{NAN, {NAN, NAN, NAN}};
-        const Real inv_lin = 1 / lin, u0 = -2 * omega * inv_lin * inv_p2;
-        const Real beta = W * u0 * inv_lin * Real(1.0L / 3), delta = p2 * u0 * u0 * Real(1.0L / 12);
+        // Grouped for the chain from one rebound to the next (lin, then 1/lin,
+        // then these): u0 one product after 1/lin, beta and delta two, with
+        // delta = p^2 u0^2 / 12 written as u0 (-omega / (6 lin)) (Norcia:
+        // 16.8 -> 16.4 us; written as above, 1/lin took three products
+        // more to reach the series).
+        const Real inv_lin = 1 / lin, u0 = (omega * (-2 / p2)) * inv_lin;
+        const Real beta = u0 * ((W * Real(1.0L / 3)) * inv_lin), delta = u0 * ((omega * Real(-1.0L / 6)) * inv_lin);
         // In double only: the series are cut for double's rounding; long
         // double (the kernel's check on its own rounding) iterates.
         if constexpr (std::is_same_v<Real, double>) {
