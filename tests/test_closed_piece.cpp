@@ -190,7 +190,7 @@ TEST(ClosedPiece, TaylorStartsAreAFourthOrderStepCloserThanTheParabola) {
             Ld root;
             if (kind == 0) {
                 if (!(sigma * end.theta < 0 && (piece.omega0 < 0) == (end.omega < 0))) continue;
-                start = f.ground_root(sigma, 0.0, at0);
+                start = f.ground_root(0.0, at0);
                 d0 = quadratic_root(sigma * piece.theta0, sigma * piece.omega0, sigma * p2 * f.C);
                 root = bisect([&](Ld u) { return Ld(sigma) * g.at(u).theta; }, Ld(0), Ld(u1));
             } else {

@@ -180,12 +180,15 @@ struct Closed {
         return {q.theta + d * (q.omega + d / 2 * (d2 + d_3 * (d3 + d / 4 * d4))),
                 (q.omega + d * d2) + dd_2 * (d3 + d_3 * d4), q.curvature + d * (r + d / 2 * d2)};
     }
-    // Where sigma theta's Taylor polynomial at the point q (at u) reaches the
+    // Where theta's Taylor polynomial at the point q (at u) reaches the
     // ground: the first point of an impact's root finder, NaN when its
-    // parabola does not (taylor_root).
-    Real ground_root(Real sigma, Real u, const Point& q) const {
+    // parabola does not (taylor_root).  sigma theta's polynomial has the same
+    // roots, which taylor_root gives to the same bits (each of its operations
+    // flips its result's sign when all its inputs flip): sigma stays off the
+    // chain to the impact.
+    Real ground_root(Real u, const Point& q) const {
         const Real p2 = p * p, k2 = p2 * q.curvature, k3 = p2 * (q.omega + c1());
-        return u + taylor_root(sigma * q.theta, sigma * q.omega, sigma * k2, sigma * k3, sigma * p2 * k2);
+        return u + taylor_root(q.theta, q.omega, k2, k3, p2 * k2);
     }
     // Where theta''s Taylor polynomial at q (at u) vanishes: the first point
     // of an extremum's root finder (theta'''' = p^2 theta'', theta''''' = p^2 theta''').
@@ -257,23 +260,28 @@ struct Closed {
         if (!(x >= a && x <= b)) x = 0.5 * (a + b);
         for (int i = 0; i < 100; ++i) {
             const Point q = at(x);
-            Real f, f1, f2, f3;
-            f = sought(seek, sigma, level, q);
+            // What is sought, g, and its derivatives g1..g3 with its sign
+            // taken out (f = sgn g; sigma for a level): Newton's quotient
+            // and the ratios below are the same to the bit (sigma^2 = 1)
+            // without sigma's products on the chain to the root.
+            Real g, g1, g2, g3, sgn = 1;
             switch (seek) {
                 case Seek::level:
-                    f1 = sigma * q.omega, f2 = sigma * p2 * q.curvature, f3 = sigma * p2 * (q.omega + c1);
+                    sgn = sigma, g = q.theta - sigma * level;
+                    g1 = q.omega, g2 = p2 * q.curvature, g3 = p2 * (q.omega + c1);
                     break;
                 case Seek::extremum:
-                    f1 = p2 * q.curvature, f2 = p2 * (q.omega + c1), f3 = p2 * p2 * q.curvature;
+                    g = q.omega, g1 = p2 * q.curvature, g2 = p2 * (q.omega + c1), g3 = p2 * p2 * q.curvature;
                     break;
                 default:
-                    f1 = q.omega + c1, f2 = p2 * q.curvature, f3 = p2 * (q.omega + c1);
+                    g = q.curvature, g1 = q.omega + c1, g2 = p2 * q.curvature, g3 = p2 * (q.omega + c1);
             }
+            const Real f = sgn * g;
             if (flip * f < 0) a = x;
             else b = x;
             // Chebyshev's step: Newton's, corrected to third order by f2
             // (one division; Halley's form would take two).
-            const Real inv1 = 1 / f1, newton = f * inv1, r2 = f2 * inv1, r3 = f3 * inv1;
+            const Real inv1 = 1 / g1, newton = g * inv1, r2 = g2 * inv1, r3 = g3 * inv1;
             {
                 // Newton's own step leaves an error (r2 / 2) e^2: where that
                 // bound (doubled, e taken as 1.25 |newton|, as below) is

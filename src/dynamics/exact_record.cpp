@@ -279,7 +279,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                 rose = true;
             } else if (monotone && rose && s1 < 0.0) {
                 impact_at(f.level(sigma, 0, 0, u1, s0, s1, f.theta_noise(u1, k1),
-                                  f.ground_root(sigma, 0, {theta, omega, f.C})));
+                                  f.ground_root(0, {theta, omega, f.C})));
                 event = true;
             } else {
                 // Rounding levels of theta, theta' and theta''/p^2 on this piece.
@@ -330,7 +330,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                         hit = has_ext ? f.level(sigma, 0, u_ext, ub, sigma * th_ext, sigma * thb, th_noise,
                                                 beside_ext(1.0))
                                       : f.level(sigma, 0, ua, ub, sigma * tha, sigma * thb, th_noise,
-                                                f.ground_root(sigma, ua, at_a));
+                                                f.ground_root(ua, at_a));
                     if (sigma * thb >= options.overturn_angle)
                         fall = f.level(sigma, options.overturn_angle, ua, ub, sigma * tha - options.overturn_angle,
                                        sigma * thb - options.overturn_angle, th_noise + eps4 * options.overturn_angle);
