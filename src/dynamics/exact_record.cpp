@@ -120,12 +120,13 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         // (Norcia: 17.6 -> 17.0 us; impact times within 3.6e-15 s, ulp(t)).
         Rest piece{0, 0, 0};
         bool have_piece = false;
+        Real lin_b = 0;
         while (!run.resting && t < t_fin && t < dt * (k + 1)) {
             if (!have_piece) {
                 piece = rest_of_piece();
                 have_piece = true;
+                lin_b = piece.a0 - sigma * alpha;
             }
-            const Real lin_b = piece.a0 - sigma * alpha;
             const Real u_max = std::min(piece.u1, Real(0.1) * inv_p);
             if (!(sigma * lin_b < 0)) break;
             const typename Closed<Real>::Found landing = Bounce<Real>{p, omega, lin_b, piece.c1}.landing(u_max);
@@ -141,6 +142,9 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             const Real t_land = t + u_land;
             const bool micro_b = rules::record_impact(result, t_land, options, p);
             rules::apply_impact(run, result, model, t_land, om_land, micro_b, rest);
+            // The next bounce's lin (sigma is the new corner's) with the move
+            // added last: one product and an add after u_land, not two adds.
+            lin_b = (piece.a0 - sigma * alpha) + piece.c1 * u_land;
             piece.a0 += piece.c1 * u_land;
             piece.u1 -= u_land;
         }
