@@ -299,7 +299,7 @@ struct Closed {
             const Real f = sgn * g;
             if (flip * f < 0) a = x;
             else b = x;
-            // Chebyshev's step: Newton's, corrected to third order by f2
+            // Chebyshev's step: Newton's, corrected to third order by g2
             // (one division; Halley's form would take two).
             const Real inv1 = 1 / g1, newton = g * inv1, r2 = g2 * inv1, r3 = g3 * inv1;
             {

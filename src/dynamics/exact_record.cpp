@@ -118,15 +118,12 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         // from the grid again it would come through t + u_land rounded and
         // two fma library calls, on the path from one rebound to the next
         // (Norcia: 17.6 -> 17.0 us; impact times within 3.6e-15 s, ulp(t)).
-        Rest piece{0, 0, 0};
-        bool have_piece = false;
-        Real lin_b = 0;
+        // (The loop and the shortcut below run only while the state is
+        // inside the piece it starts in, as it is here when either runs.)
+        const bool inside = !run.resting && t < t_fin && t < dt * (k + 1);
+        Rest piece = inside ? rest_of_piece() : Rest{0, 0, 0};
+        Real lin_b = piece.a0 - sigma * alpha;
         while (!run.resting && t < t_fin && t < dt * (k + 1)) {
-            if (!have_piece) {
-                piece = rest_of_piece();
-                have_piece = true;
-                lin_b = piece.a0 - sigma * alpha;
-            }
             const Real u_max = std::min(piece.u1, Real(0.1) * inv_p);
             if (!(sigma * lin_b < 0)) break;
             const typename Closed<Real>::Found landing = Bounce<Real>{p, omega, lin_b, piece.c1}.landing(u_max);
@@ -155,8 +152,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         // tangents at the ends (tangents_meet) keep its top below the largest
         // |theta| so far, as in the loop above.
         if (!run.resting && t < t_fin && t < dt * (k + 1)) {
-            if (!have_piece) piece = rest_of_piece();
-            const Real lin_b = piece.a0 - sigma * alpha;
+            lin_b = piece.a0 - sigma * alpha;
             if (!(sigma * lin_b < 0)) return;
             const Closed<Real> f{p, 0, omega, lin_b, omega + piece.c1};
             const typename Closed<Real>::Point end = f.at(piece.u1);
