@@ -59,41 +59,53 @@ bool stop_after_input(const Model& model, const SimulationOptions& options, RunS
     return s.t >= s.t_limit;
 }
 
-// The top of each pass of a run's loop: takes theta(t_fin) the first time
-// t reaches t_fin (note_theta(t, theta) keeps the largest |theta|); lifts a
-// resting block when the input, as the caller evaluates it (at(t), see
-// uplift_time), first exceeds the uplift threshold (rest_until(t) lets the
-// caller keep its theta(t) record of the rest), or ends the run when it does
-// not before t_fin; ends the run after the input once stop_after_input says
-// so.  False: the run is over.
+// The end of the input: theta(t_fin) and theta'(t_fin) taken the first time
+// t reaches t_fin (note_theta(t, theta) keeps the largest |theta|).
+template <class Real, class NoteTheta>
+void end_of_input(RunState<Real>& s, SimulationResult& result, Real t_fin, NoteTheta note_theta) {
+    if (s.recorded || s.t < t_fin) return;
+    result.theta_at_tfin = static_cast<double>(s.theta);
+    result.omega_at_tfin = static_cast<double>(s.omega);
+    s.recorded = true;
+    note_theta(t_fin, s.theta);
+}
+
+// The uplift from rest: a resting block leaves the ground when the input, as
+// the caller evaluates it (at(t), see uplift_time), first exceeds the uplift
+// threshold, on the corner the input pushes it to.  False when it does not
+// before t_fin: the block rests to the end (theta(t_fin) = 0) and the run is
+// over.  rest_until(t) lets the caller keep its theta(t) record of the rest.
+template <class Real, class At, class RestUntil>
+bool lift_from_rest(RunState<Real>& s, SimulationResult& result, const Model& model, const GroundInput& input, At at,
+                    Real t_fin, RestUntil rest_until) {
+    const Real tu = s.t < t_fin ? Real(uplift_time(input, static_cast<double>(s.t), static_cast<double>(t_fin),
+                                                   model.uplift_threshold(), at))
+                                : Real(INFINITY);
+    if (tu >= t_fin) {
+        rest_until(std::max(t_fin, s.t_limit));
+        if (!s.recorded) {
+            result.theta_at_tfin = result.omega_at_tfin = 0.0;
+            s.recorded = true;
+        }
+        return false;
+    }
+    rest_until(tu);
+    s.t = tu;
+    s.theta = s.omega = 0.0;
+    s.sigma = at(static_cast<double>(tu)) > 0 ? 1 : -1;
+    s.resting = false;
+    result.uplifted = true;
+    return true;
+}
+
+// The top of each pass of a run's loop, the phases in their order: the end
+// of the input, the uplift of a resting block, and after the input the free
+// rocking's end (stop_after_input).  False: the run is over.
 template <class Real, class At, class NoteTheta, class RestUntil>
 bool begin_pass(RunState<Real>& s, SimulationResult& result, const Model& model, const GroundInput& input, At at,
                 const SimulationOptions& options, Real t_fin, NoteTheta note_theta, RestUntil rest_until) {
-    if (!s.recorded && s.t >= t_fin) {
-        result.theta_at_tfin = static_cast<double>(s.theta);
-        result.omega_at_tfin = static_cast<double>(s.omega);
-        s.recorded = true;
-        note_theta(t_fin, s.theta);
-    }
-    if (s.resting) {
-        const Real tu = s.t < t_fin ? Real(uplift_time(input, static_cast<double>(s.t), static_cast<double>(t_fin),
-                                                       model.uplift_threshold(), at))
-                                    : Real(INFINITY);
-        if (tu >= t_fin) {
-            rest_until(std::max(t_fin, s.t_limit));
-            if (!s.recorded) {
-                result.theta_at_tfin = result.omega_at_tfin = 0.0;
-                s.recorded = true;
-            }
-            return false;
-        }
-        rest_until(tu);
-        s.t = tu;
-        s.theta = s.omega = 0.0;
-        s.sigma = at(static_cast<double>(tu)) > 0 ? 1 : -1;
-        s.resting = false;
-        result.uplifted = true;
-    }
+    end_of_input(s, result, t_fin, note_theta);
+    if (s.resting && !lift_from_rest(s, result, model, input, at, t_fin, rest_until)) return false;
     return !(s.t >= t_fin && stop_after_input(model, options, s, t_fin));
 }
 
@@ -133,6 +145,15 @@ void apply_impact(RunState<Real>& s, SimulationResult& result, const Model& mode
         s.resting = true;
         ++result.rests;
     }
+}
+
+// An impact at t_impact with angular velocity om_i before it: counted
+// (record_impact), then applied (apply_impact) with the rest rule rest.
+template <class Real>
+void impact(RunState<Real>& s, SimulationResult& result, const Model& model, const SimulationOptions& options,
+            Real t_impact, Real om_i, Real rest) {
+    const bool micro = record_impact(result, t_impact, options, Real(model.block.p));
+    apply_impact(s, result, model, t_impact, om_i, micro, rest);
 }
 
 // Overturning decided by energy when the run stopped in free rocking

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 
 namespace rocking::dynamics {
@@ -57,6 +58,373 @@ double rest_threshold(const SimulationOptions& options) {
                     options.solver.kind == SolverKind::exact ? 0.0 : 10.0 * options.solver.atol_alpha);
 }
 
+namespace {
+
+// A part of a step: [ta, tb] with the states at its ends.
+struct Part {
+    double ta, tha, oma, tb, thb, omb;
+};
+
+// The general path's run (any solver, any input).  A run is a sequence of
+// passes, each beginning with the rules of run_rules.hpp (the end of the
+// input, the uplift from rest, the free rocking's end), then one segment:
+// the solver's steps from the run's state to its next event (impact, rest,
+// fall) or to the input's next discontinuity.  Each step is cut into parts
+// holding at most one extremum of theta, and a part is either quiet (nothing
+// can happen inside it) or analysed for its events.
+class Driver {
+public:
+    Driver(const Model& model, const GroundInput& input, const SimulationOptions& options)
+        : model_(model),
+          input_(input),
+          options_(options),
+          alpha_(model.block.alpha),
+          p_(model.block.p),
+          t_fin_(input.t_end()),
+          noise_(1e-12 * model.block.alpha),
+          breaks_(input.discontinuities()),
+          result_(rules::new_result(options, input.t_end())),
+          stepper_(make_stepper(model, input, options.solver)),
+          run_(options, input.t_end()) {
+        breaks_.push_back(t_fin_);
+        std::sort(breaks_.begin(), breaks_.end());
+        stepper_->set_batching(options.record_dt <= 0.0, options.overturn_angle);
+    }
+
+    SimulationResult run() {
+        while (!done_ && rules::begin_pass(
+                             run_, result_, model_, input_, [&](double s) { return input_.accel(s); }, options_, t_fin_,
+                             [&](double when, double value) { note_theta(when, value); },
+                             [&](double until) { rest_until(until); }))
+            segment();
+        rules::decide_by_energy(run_, result_, model_, options_, t_fin_);
+        result_.rhs_evaluations = stepper_->rhs_evaluations();
+        result_.steps = stepper_->steps();
+        return std::move(result_);
+    }
+
+private:
+    // --- the theta(t) record and the largest |theta| ---------------------------
+
+    void sample_until(double until, const std::function<void(double, double&, double&)>& at) {
+        if (options_.record_dt <= 0) return;
+        // Sample times k dt; the last one may overshoot t_limit by rounding.
+        for (double ts = next_sample_ * options_.record_dt; ts <= until && ts <= run_.t_limit * (1 + 1e-12);
+             ts = ++next_sample_ * options_.record_dt) {
+            double th, om;
+            at(std::min(ts, until), th, om);
+            result_.samples.push_back({ts, th, om});
+        }
+    }
+    void sample_step_until(double until) {
+        sample_until(until, [&](double s, double& th, double& om) { stepper_->state_at(s, th, om); });
+    }
+    void rest_until(double until) {
+        sample_until(until, [](double, double& th, double& om) { th = om = 0.0; });
+    }
+    void note_theta(double when, double value) {
+        if (when <= t_fin_) result_.max_abs_theta_input = std::max(result_.max_abs_theta_input, std::fabs(value));
+    }
+    double theta_at(double s) {
+        double th, om;
+        stepper_->state_at(s, th, om);
+        return th;
+    }
+    double omega_at(double s) {
+        double th, om;
+        stepper_->state_at(s, th, om);
+        return om;
+    }
+
+    // --- a segment: the steps from the run's state to its next event ----------
+
+    // The segment's end: the input's next discontinuity, or, after the
+    // input, the end of the free rocking followed (t_limit).
+    double segment_end(double t) const {
+        if (t >= t_fin_) return run_.t_limit;
+        for (double b : breaks_)
+            if (b > t) return b;
+        return run_.t_limit;
+    }
+
+    void segment() {
+        sigma_ = run_.sigma;
+        stepper_->reset(run_.t, run_.theta, run_.omega, sigma_, segment_end(run_.t));
+        ta_ = run_.t;
+        tha_ = run_.theta;
+        oma_ = run_.omega;
+        stalled_ = 0;
+        // A block lifted from rest with an acceleration just above the threshold
+        // rises from theta = 0 by less than rounding at first; a return to 0
+        // before it has risen above that noise is no impact: it stays at rest.
+        rose_ = std::fabs(run_.theta) > noise_ || std::fabs(run_.omega) > 0.0;
+        bool event = false;
+        while (!event && stepper_->advance())
+            if (moved()) event = step();
+        if (!event) {
+            run_.t = stepper_->t_end();
+            stepper_->state_at(run_.t, run_.theta, run_.omega);
+        }
+    }
+
+    // Whether the last step moved t.  A step shorter than half an ulp of t
+    // leaves t where it was, and there is nothing to analyse (a dense
+    // output's interpolant over it is 0/0).  An ODE solver's first steps may,
+    // and grow; where even max_step_p / p is that short (p t beyond double's
+    // resolution) no step ever moves t, and the run would never end.
+    bool moved() {
+        if (stepper_->t_end() > stepper_->t_begin()) {
+            stalled_ = 0;
+            return true;
+        }
+        if (++stalled_ <= 100) return false;
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "%s solver: no progress at t = %.17g s in 100 steps: its step (at most max_step_p / p = "
+                      "%.3g s) is below double's resolution there: p t = %.3g (p = %.6g rad/s) is too large",
+                      solver_name(options_.solver.kind).c_str(), stepper_->t_begin(), options_.solver.max_step_p / p_,
+                      p_ * stepper_->t_begin(), p_);
+        throw std::runtime_error(text);
+    }
+
+    // --- a step and its events ---------------------------------------------------
+
+    // One step of the solver, cut into parts that each hold at most one
+    // extremum of theta (next_part); true when an event ends the segment.
+    bool step() {
+        // The step may have started after the last one seen (a batched run);
+        // at the segment's start the state is known exactly (an interpolant
+        // may put theta' = 0 a rounding error off and fake an extremum).
+        if (stepper_->t_begin() != ta_) {
+            ta_ = stepper_->t_begin();
+            stepper_->state_at(ta_, tha_, oma_);
+        }
+        const double tb = stepper_->t_end();
+        double thb, omb;
+        stepper_->state_at(tb, thb, omb);
+        if (!std::isfinite(thb) || !std::isfinite(omb)) {
+            char text[240];
+            std::snprintf(text, sizeof text, "%s solver: the state is not finite at t = %.17g s (theta %g, theta' %g)",
+                          solver_name(options_.solver.kind).c_str(), tb, thb, omb);
+            throw std::runtime_error(text);
+        }
+        Part part{ta_, tha_, oma_, tb, thb, omb};
+        bool event = false;
+        while (!event && part.ta < tb) {
+            part.tb = tb;
+            part.thb = thb;
+            part.omb = omb;
+            if (next_part(part)) {
+                sample_step_until(part.tb);
+                note_theta(part.tb, part.thb);
+                rose_ = true;
+            } else {
+                event = part_events(part);
+            }
+            part.ta = part.tb;
+            part.tha = part.thb;
+            part.oma = part.omb;
+        }
+        if (!event) {
+            ta_ = tb;
+            tha_ = thb;
+            oma_ = omb;
+        }
+        return event;
+    }
+
+    // Ends the part from part.ta (at most at the step's end, part.tb) so
+    // that it holds at most one extremum of theta, which part_events
+    // assumes; true when nothing can happen inside it (quiet).
+    //
+    // A part first ends at the input's next kink (a record's sample;
+    // Dormand-Prince steps across them) and, on a sinusoidal piece, where the
+    // sine crosses 0.  On a part where the input is linear, theta'' (a
+    // combination of cosh and sinh on eq. 3) changes sign once at most; on a
+    // sinusoidal one it can change sign twice, and the part is first cut
+    // between the two (cut_at_curvature_turn).  theta' then vanishes at most
+    // twice, and only when theta'' changes sign while theta' keeps its sign
+    // at the ends, or starts from 0 (the uplift from rest): the part is then
+    // cut where theta'' = 0 (cut_at_inflection).  Missing this put a block at
+    // rest where it flew out and back within one step, or let it pass
+    // through the ground unseen (docs/solvers.md, hidden excursions).
+    bool next_part(Part& part) {
+        const InputPiece piece = input_.piece_from(part.ta);
+        part.tb = std::min(piece.t1 > part.ta && piece.t1 < part.tb ? piece.t1 : part.tb,
+                           piece.next_sine_zero(part.ta));
+        if (part.tb < stepper_->t_end()) stepper_->state_at(part.tb, part.thb, part.omb);
+        const bool from_rest = part.oma == 0.0;
+        const double oma = part.oma;
+        auto keeps_sign = [&] { return from_rest || ((oma < 0) == (part.omb < 0) && oma != 0.0 && part.omb != 0.0); };
+        if (piece.s == 0.0 && !keeps_sign()) return false;
+        const double ea = model_.acceleration(part.tha, sigma_, piece.at(part.ta));
+        double eb = model_.acceleration(part.thb, sigma_, piece.at(part.tb));
+        if (piece.s != 0.0 && ea * eb > 0.0) cut_at_curvature_turn(part, piece, ea, eb);
+        // theta' and theta'' of one sign: sigma theta is monotone, and
+        // nothing happens inside when it ends above the ground's noise,
+        // below the fall and on the side of alpha it started.
+        const double sa = sigma_ * part.tha, sb = sigma_ * part.thb;
+        const bool quiet = keeps_sign() && ea * eb > 0.0 && sa >= 0.0 && sb > noise_ && sb < options_.overturn_angle &&
+                           !(std::isnan(result_.t_first_alpha) && sa < alpha_ && sb >= alpha_);
+        if (keeps_sign() && (ea < 0) != (eb < 0) && ea != 0.0 && eb != 0.0) cut_at_inflection(part, piece, from_rest);
+        return quiet;
+    }
+
+    // On a sinusoidal piece, eq. 3 gives theta'' = p^2 (H + K sin(w u + ph)),
+    // H = C cosh pu + D sinh pu, K = s w^2 / (p^2 + w^2), so (theta'')'' -
+    // p^2 theta'' = -(p^2 + w^2) p^2 K sin(w u + ph), of one sign on the
+    // part.  Where it is <= 0, theta'' has no negative interior minimum
+    // (there it would be > 0); where >= 0, no positive interior maximum.
+    // Ends of opposite signs then hold one root, ends of one sign (ea eb > 0
+    // here) none or two: two when theta'' turns back inside (its rate towards
+    // 0 at the start, away from it at the end) and reaches the other sign at
+    // the turn.  The part is then cut at the turn, each side holding one
+    // root.  (On the full equation the same check runs without that proof,
+    // measured instead: FullEquationOnOneSinePulsesJustAboveTheThreshold...)
+    void cut_at_curvature_turn(Part& part, const InputPiece& piece, double ea, double& eb) {
+        const double ja = model_.jerk(part.tha, part.oma, sigma_, piece.at(part.ta), piece.rate(part.ta)),
+                     jb = model_.jerk(part.thb, part.omb, sigma_, piece.at(part.tb), piece.rate(part.tb));
+        if (!(ja * ea < 0.0 && jb * eb > 0.0)) return;
+        auto jerk_at = [&](double s) {
+            double th, om;
+            stepper_->state_at(s, th, om);
+            return model_.jerk(th, om, sigma_, piece.at(s), piece.rate(s));
+        };
+        const double tx = locate(jerk_at, part.ta, part.tb);
+        double thx, omx;
+        stepper_->state_at(tx, thx, omx);
+        const double ex = model_.acceleration(thx, sigma_, piece.at(tx));
+        if (tx > part.ta && tx < part.tb && ex * ea < 0.0) {
+            part.tb = tx;
+            part.thb = thx;
+            part.omb = omx;
+            eb = ex;
+        }
+    }
+
+    // theta'' changes sign on the part while theta' keeps its sign at the
+    // ends, or starts from rest: cut where theta'' = 0 when theta' has
+    // turned there (any sign after an uplift), each side then holding one
+    // extremum at most.
+    void cut_at_inflection(Part& part, const InputPiece& piece, bool from_rest) {
+        auto curvature_at = [&](double s) {
+            double th, om;
+            stepper_->state_at(s, th, om);
+            return model_.acceleration(th, sigma_, piece.at(s));
+        };
+        const double ti = locate(curvature_at, part.ta, part.tb);
+        double thi, omi;
+        stepper_->state_at(ti, thi, omi);
+        if (ti > part.ta && ti < part.tb && (from_rest || (omi < 0) != (part.oma < 0)) && omi != 0.0) {
+            part.tb = ti;
+            part.thb = thi;
+            part.omb = omi;
+        }
+    }
+
+    // The events of a part holding at most one extremum of theta: the
+    // extremum, the impact (sigma theta reaches 0), the fall, the first
+    // |theta| = alpha.  True when one ends the segment (a fall, a rest, an
+    // impact), which it applies to the run.
+    bool part_events(const Part& part) {
+        const double ta = part.ta, tha = part.tha, tb = part.tb, thb = part.thb;
+        // Extremum of theta inside the part (theta' changes sign, once).
+        double t_ext = NAN, th_ext = NAN;
+        if ((part.oma < 0) != (part.omb < 0) && part.oma != 0.0 && part.omb != 0.0) {
+            t_ext = locate([&](double s) { return omega_at(s); }, ta, tb);
+            th_ext = theta_at(t_ext);
+        }
+        const bool has_ext = !std::isnan(t_ext);
+        // The first root of sigma theta in the part: before the extremum
+        // when theta dips below 0 there, after it otherwise.
+        double t_impact = INFINITY, t_fall = INFINITY;
+        auto impact_in = [&](double lo, double hi) {
+            return locate([&](double s) { return sigma_ * theta_at(s); }, lo, hi);
+        };
+        if (has_ext && sigma_ * th_ext < 0.0) t_impact = impact_in(ta, t_ext);
+        else if (sigma_ * thb < 0.0) t_impact = impact_in(has_ext ? t_ext : ta, tb);
+        if (sigma_ * thb >= options_.overturn_angle)
+            t_fall = locate([&](double s) { return sigma_ * theta_at(s) - options_.overturn_angle; }, ta, tb);
+        const double t_cut = std::min({t_impact, t_fall, tb});
+        first_alpha(ta, tha, t_cut, t_ext, th_ext);
+        if (has_ext && t_ext <= t_cut) note_theta(t_ext, th_ext);
+        if (sigma_ * thb > noise_ || (has_ext && t_ext <= t_cut && sigma_ * th_ext > noise_)) rose_ = true;
+        sample_step_until(t_cut);
+        if (t_fall <= t_cut && t_fall < INFINITY) {
+            fall(t_fall);
+            return true;
+        }
+        if (t_impact <= t_cut && t_impact < INFINITY) {
+            if (rose_) impact(t_impact);
+            else rest_on_ground(tb);
+            return true;
+        }
+        note_theta(tb, thb);
+        return false;
+    }
+
+    // The first time |theta| = alpha, when it lies in [ta, t_cut]: theta at
+    // t_cut, or at the extremum before it, at or above alpha.
+    void first_alpha(double ta, double tha, double t_cut, double t_ext, double th_ext) {
+        if (!std::isnan(result_.t_first_alpha) || !(sigma_ * tha < alpha_)) return;
+        auto from_alpha = [&](double s) { return sigma_ * theta_at(s) - alpha_; };
+        if (sigma_ * theta_at(t_cut) >= alpha_) result_.t_first_alpha = locate(from_alpha, ta, t_cut);
+        else if (!std::isnan(t_ext) && t_ext < t_cut && sigma_ * th_ext >= alpha_)
+            result_.t_first_alpha = locate(from_alpha, ta, t_ext);
+    }
+
+    // --- the events that end a segment -----------------------------------------
+
+    void fall(double t_fall) {
+        result_.overturned = true;
+        result_.t_overturn = t_fall;
+        result_.overturned_during_input = t_fall <= t_fin_;
+        note_theta(t_fall, sigma_ * options_.overturn_angle);
+        done_ = true;
+    }
+
+    // A return to the ground before the block rose above the noise: it is
+    // still within rounding of it, so at rest to the end of the step
+    // (progress is guaranteed), then the uplift rule again.
+    void rest_on_ground(double tb) {
+        run_.t = tb;
+        run_.theta = run_.omega = 0.0;
+        run_.resting = true;
+    }
+
+    // An impact: the block passes to the other corner with the restitution;
+    // a rebound below the rest threshold, or a second impact within 1e-6/p of
+    // the last (a bounce too small to resolve), ends the cascade with the
+    // block at rest, which the input may lift again at once.  The cascade's
+    // rebounds are the next segments.
+    void impact(double t_impact) {
+        double th_i, om_i;
+        stepper_->state_at(t_impact, th_i, om_i);
+        note_theta(t_impact, 0.0);
+        rules::impact(run_, result_, model_, options_, t_impact, om_i, rest_threshold(options_));
+    }
+
+    const Model& model_;
+    const GroundInput& input_;
+    const SimulationOptions& options_;
+    const double alpha_, p_, t_fin_, noise_;
+    std::vector<double> breaks_;  // the input's discontinuities and t_fin, in order
+    SimulationResult result_;
+    std::unique_ptr<Stepper> stepper_;
+    rules::RunState<double> run_;
+    long next_sample_ = 0;  // the next sample's index (record_dt)
+    bool done_ = false;     // the block has fallen
+    // The segment's: its corner, the state at the last step's end seen, the
+    // steps in a row that left t where it was, and whether the block has
+    // risen above the ground's noise.
+    int sigma_ = 1;
+    double ta_ = 0, tha_ = 0, oma_ = 0;
+    int stalled_ = 0;
+    bool rose_ = false;
+};
+
+}  // namespace
+
 SimulationResult simulate(const Model& model, const GroundInput& input, const SimulationOptions& options) {
     if (const auto* sine = dynamic_cast<const OneSinePulse*>(&input)) {
         const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
@@ -71,272 +439,7 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     }
     if (record_kernel_applies(model, input, options))
         return simulate_record_kernel(model, static_cast<const SampledInput&>(input), options);
-    const double alpha = model.block.alpha, p = model.block.p;
-    const double t_fin = input.t_end();
-    std::vector<double> breaks = input.discontinuities();
-    breaks.push_back(t_fin);
-    std::sort(breaks.begin(), breaks.end());
-
-    SimulationResult result = rules::new_result(options, t_fin);
-    auto stepper = make_stepper(model, input, options.solver);
-    stepper->set_batching(options.record_dt <= 0.0, options.overturn_angle);
-
-    rules::RunState<double> run(options, t_fin);
-    long next_sample_index = 0;
-
-    auto sample_until = [&](double until, const std::function<void(double, double&, double&)>& at) {
-        if (options.record_dt <= 0) return;
-        // Sample times k dt; the last one may overshoot t_limit by rounding.
-        for (double ts = next_sample_index * options.record_dt;
-             ts <= until && ts <= run.t_limit * (1 + 1e-12); ts = ++next_sample_index * options.record_dt) {
-            double th, om;
-            at(std::min(ts, until), th, om);
-            result.samples.push_back({ts, th, om});
-        }
-    };
-    auto note_theta = [&](double when, double value) {
-        if (when <= t_fin) result.max_abs_theta_input = std::max(result.max_abs_theta_input, std::fabs(value));
-    };
-    auto rest_until = [&](double until) {
-        sample_until(until, [](double, double& th, double& om) { th = om = 0.0; });
-    };
-
-    bool done = false;
-    while (!done && rules::begin_pass(run, result, model, input, [&](double s) { return input.accel(s); }, options, t_fin,
-                                               note_theta, rest_until)) {
-        const double t = run.t, theta = run.theta, omega = run.omega;
-        const int sigma = run.sigma;
-        double t_stop = run.t_limit;
-        for (double b : breaks)
-            if (b > t) {
-                t_stop = b;
-                break;
-            }
-        if (t >= t_fin) t_stop = run.t_limit;
-        stepper->reset(t, theta, omega, sigma, t_stop);
-        double ta = t, tha = theta, oma = omega;
-        bool event = false;
-        int stalled = 0;  // steps in a row that left t where it was
-        // A block lifted from rest with an acceleration just above the threshold
-        // rises from theta = 0 by less than rounding at first; a return to 0
-        // before it has risen above that noise is no impact: it stays at rest.
-        const double noise = 1e-12 * alpha;
-        bool rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
-        auto th_at = [&](double s) {
-            double th, om;
-            stepper->state_at(s, th, om);
-            return th;
-        };
-        auto om_at = [&](double s) {
-            double th, om;
-            stepper->state_at(s, th, om);
-            return om;
-        };
-        // The events of [ta, tb], a part of a step holding at most one
-        // extremum of theta, from the states at its ends; true when one ends
-        // the segment (impact, rest, fall), which it applies to run.
-        auto analyse_part = [&](double ta, double tha, double oma, double tb, double thb, double omb) {
-            // Extremum of theta inside the part (theta' changes sign, once).
-            double t_ext = NAN, th_ext = NAN;
-            if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) {
-                t_ext = locate(om_at, ta, tb);
-                th_ext = th_at(t_ext);
-            }
-            // Terminal events: impact (sigma theta reaches 0) and fall.
-            double t_impact = INFINITY, t_fall = INFINITY;
-            // The first root of sigma theta in the step: before the extremum
-            // when theta dips below 0 there, after it otherwise.
-            auto impact_in = [&](double lo, double hi) {
-                return locate([&](double s) { return sigma * th_at(s); }, lo, hi);
-            };
-            const bool dips = !std::isnan(t_ext) && sigma * th_ext < 0.0;
-            if (dips) t_impact = impact_in(ta, t_ext);
-            else if (sigma * thb < 0.0) t_impact = impact_in(std::isnan(t_ext) ? ta : t_ext, tb);
-            if (sigma * thb >= options.overturn_angle)
-                t_fall = locate([&](double s) { return sigma * th_at(s) - options.overturn_angle; }, ta, tb);
-            const double t_cut = std::min({t_impact, t_fall, tb});
-            // First time |theta| = alpha.
-            if (std::isnan(result.t_first_alpha) && sigma * tha < alpha) {
-                if (sigma * th_at(t_cut) >= alpha)
-                    result.t_first_alpha = locate([&](double s) { return sigma * th_at(s) - alpha; }, ta, t_cut);
-                else if (!std::isnan(t_ext) && t_ext < t_cut && sigma * th_ext >= alpha)
-                    result.t_first_alpha = locate([&](double s) { return sigma * th_at(s) - alpha; }, ta, t_ext);
-            }
-            if (!std::isnan(t_ext) && t_ext <= t_cut) note_theta(t_ext, th_ext);
-            if (sigma * thb > noise || (!std::isnan(t_ext) && t_ext <= t_cut && sigma * th_ext > noise)) rose = true;
-            sample_until(t_cut, [&](double s, double& th, double& om) { stepper->state_at(s, th, om); });
-            if (t_fall <= t_cut && t_fall < INFINITY) {
-                result.overturned = true;
-                result.t_overturn = t_fall;
-                result.overturned_during_input = t_fall <= t_fin;
-                note_theta(t_fall, sigma * options.overturn_angle);
-                done = true;
-                return true;
-            } else if (t_impact <= t_cut && t_impact < INFINITY && !rose) {
-                // Still within rounding of the ground: at rest to the end of the
-                // step (progress is guaranteed), then the uplift rule again.
-                run.t = tb;
-                run.theta = run.omega = 0.0;
-                run.resting = true;
-                return true;
-            } else if (t_impact <= t_cut && t_impact < INFINITY) {
-                double th_i, om_i;
-                stepper->state_at(t_impact, th_i, om_i);
-                note_theta(t_impact, 0.0);
-                // The end of a cascade: a rebound below the rest threshold, or a
-                // second impact within 1e-6/p of the last (a bounce too small to
-                // resolve), leaves the block at rest; the input may lift it again at once.
-                const bool micro = rules::record_impact(result, t_impact, options, p);
-                rules::apply_impact(run, result, model, t_impact, om_i, micro, rest_threshold(options));
-                return true;
-            }
-            note_theta(tb, thb);
-            return false;
-        };
-        while (!event && stepper->advance()) {
-            // A step shorter than half an ulp of t leaves t where it was, and
-            // there is nothing to analyse (a dense output's interpolant over
-            // it is 0/0).  An ODE solver's first steps may, and grow; where even
-            // max_step_p / p is that short (p t beyond double's resolution) no
-            // step ever moves t, and the run would never end.
-            if (stepper->t_end() > stepper->t_begin()) {
-                stalled = 0;
-            } else if (++stalled <= 100) {
-                continue;
-            } else {
-                char text[320];
-                std::snprintf(text, sizeof text,
-                              "%s solver: no progress at t = %.17g s in 100 steps: its step (at most max_step_p / p = "
-                              "%.3g s) is below double's resolution there: p t = %.3g (p = %.6g rad/s) is too large",
-                              solver_name(options.solver.kind).c_str(), stepper->t_begin(),
-                              options.solver.max_step_p / p, p * stepper->t_begin(), p);
-                throw std::runtime_error(text);
-            }
-            // The step may have started after the last one seen (a batched run);
-            // at the segment's start the state is known exactly (an interpolant
-            // may put theta' = 0 a rounding error off and fake an extremum).
-            if (stepper->t_begin() != ta) {
-                ta = stepper->t_begin();
-                stepper->state_at(ta, tha, oma);
-            }
-            const double tb = stepper->t_end();
-            double thb, omb;
-            stepper->state_at(tb, thb, omb);
-            if (!std::isfinite(thb) || !std::isfinite(omb)) {
-                char text[240];
-                std::snprintf(text, sizeof text, "%s solver: the state is not finite at t = %.17g s (theta %g, theta' %g)",
-                              solver_name(options.solver.kind).c_str(), tb, thb, omb);
-                throw std::runtime_error(text);
-            }
-            // The step's parts, each holding at most one extremum of theta,
-            // which the analysis below assumes.  A part first ends at the
-            // input's next kink (a record's sample; Dormand-Prince steps across
-            // them) and, on a sinusoidal piece, where the sine crosses 0.  On
-            // a part where the input is linear, theta'' (a combination of cosh
-            // and sinh on eq. 3) changes sign once at most; on a sinusoidal one
-            // it can change sign twice, and the part is first cut between the
-            // two (below).  theta' then vanishes at most twice, and only when
-            // theta'' changes sign while theta' keeps its sign at the ends, or
-            // starts from 0 (the uplift from rest): the part is then split
-            // where theta'' = 0 if theta' has the other sign there, or any sign
-            // after an uplift.  Missing this put a block at rest where it flew
-            // out and back within one step (an impact at the step's start, then
-            // a micro-bounce, or a rest that the uplift's own step ended), or
-            // let it pass through the ground unseen.
-            double pa = ta, pha = tha, poa = oma;
-            while (!event && pa < tb) {
-                const InputPiece piece = input.piece_from(pa);
-                double pb = std::min(piece.t1 > pa && piece.t1 < tb ? piece.t1 : tb, piece.next_sine_zero(pa));
-                double phb = thb, pob = omb;
-                if (pb < tb) stepper->state_at(pb, phb, pob);
-                bool quiet = false;
-                const bool from_rest = poa == 0.0;
-                auto keeps_sign = [&] { return from_rest || ((poa < 0) == (pob < 0) && poa != 0.0 && pob != 0.0); };
-                if (piece.s != 0.0 || keeps_sign()) {
-                    // theta'' on this part, from the input's piece holding it.
-                    auto curvature_at = [&](double s) {
-                        double th, om;
-                        stepper->state_at(s, th, om);
-                        return model.acceleration(th, sigma, piece.at(s));
-                    };
-                    const double ea = model.acceleration(pha, sigma, piece.at(pa));
-                    double eb = model.acceleration(phb, sigma, piece.at(pb));
-                    // On a sinusoidal piece, eq. 3 gives theta'' = p^2 (H + K sin(w u
-                    // + ph)), H = C cosh pu + D sinh pu, K = s w^2 / (p^2 + w^2), so
-                    // (theta'')'' - p^2 theta'' = -(p^2 + w^2) p^2 K sin(w u + ph), of
-                    // one sign on the part.  Where it is <= 0, theta'' has no
-                    // negative interior minimum (there it would be > 0); where >= 0,
-                    // no positive interior maximum.  Ends of opposite signs then hold
-                    // one root, ends of one sign none or two: two when theta'' turns
-                    // back inside (theta''' towards 0 at the start, away from it at
-                    // the end) and reaches the other sign at the turn.  The part is
-                    // then cut at the turn, each side holding one root.  (On the full
-                    // equation the same check runs without that proof, measured
-                    // instead: FullEquationOnOneSinePulsesJustAboveTheThreshold...)
-                    if (piece.s != 0.0 && ea * eb > 0.0) {
-                        auto jerk_at = [&](double s) {
-                            double th, om;
-                            stepper->state_at(s, th, om);
-                            return model.jerk(th, om, sigma, piece.at(s), piece.rate(s));
-                        };
-                        const double ja = model.jerk(pha, poa, sigma, piece.at(pa), piece.rate(pa)),
-                                     jb = model.jerk(phb, pob, sigma, piece.at(pb), piece.rate(pb));
-                        if (ja * ea < 0.0 && jb * eb > 0.0) {
-                            const double tx = locate(jerk_at, pa, pb);
-                            double thx, omx;
-                            stepper->state_at(tx, thx, omx);
-                            const double ex = model.acceleration(thx, sigma, piece.at(tx));
-                            if (tx > pa && tx < pb && ex * ea < 0.0) {
-                                pb = tx;
-                                phb = thx;
-                                pob = omx;
-                                eb = ex;
-                            }
-                        }
-                    }
-                    // theta' and theta'' of one sign: sigma theta is monotone, and
-                    // nothing happens inside when it ends above the ground's noise,
-                    // below the fall and on the side of alpha it started.
-                    const double sa = sigma * pha, sb = sigma * phb;
-                    quiet = keeps_sign() && ea * eb > 0.0 && sa >= 0.0 && sb > noise && sb < options.overturn_angle &&
-                            !(std::isnan(result.t_first_alpha) && sa < alpha && sb >= alpha);
-                    if (keeps_sign() && (ea < 0) != (eb < 0) && ea != 0.0 && eb != 0.0) {
-                        const double ti = locate(curvature_at, pa, pb);
-                        double thi, omi;
-                        stepper->state_at(ti, thi, omi);
-                        if (ti > pa && ti < pb && (from_rest || (omi < 0) != (poa < 0)) && omi != 0.0) {
-                            pb = ti;
-                            phb = thi;
-                            pob = omi;
-                        }
-                    }
-                }
-                if (quiet) {
-                    sample_until(pb, [&](double s, double& th, double& om) { stepper->state_at(s, th, om); });
-                    note_theta(pb, phb);
-                    rose = true;
-                } else {
-                    event = analyse_part(pa, pha, poa, pb, phb, pob);
-                }
-                pa = pb;
-                pha = phb;
-                poa = pob;
-            }
-            if (!event) {
-                ta = tb;
-                tha = thb;
-                oma = omb;
-            }
-        }
-        if (!event) {
-            run.t = stepper->t_end();
-            stepper->state_at(run.t, run.theta, run.omega);
-        }
-    }
-    rules::decide_by_energy(run, result, model, options, t_fin);
-    result.rhs_evaluations = stepper->rhs_evaluations();
-    result.steps = stepper->steps();
-    return result;
+    return Driver(model, input, options).run();
 }
 
 }  // namespace rocking::dynamics
