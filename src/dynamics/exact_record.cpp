@@ -97,14 +97,14 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         return std::isnan(result.t_first_alpha) && s < alpha ? std::min(alpha, Real(options.overturn_angle))
                                                              : Real(options.overturn_angle);
     };
-    // An impact found at u on the closed form of the piece from t, and the
-    // rebounds after it that land inside the same record piece.
-    auto impact_at = [&](const typename Closed<Real>::Found& hit) {
+    // An impact and its cascade: the impact found at u on the closed form of
+    // the piece from t, and the rebounds after it that land inside the same
+    // record piece.
+    auto impact_and_cascade = [&](const typename Closed<Real>::Found& hit) {
         const Real om_i = hit.q.omega;
         const Real t_impact = t + hit.u;
         note_theta(t_impact, 0.0);
-        const bool micro = rules::record_impact(result, t_impact, options, p);
-        rules::apply_impact(run, result, model, t_impact, om_i, micro, rest);
+        rules::impact(run, result, model, options, t_impact, om_i, rest);
         // The rebounds that land inside the same record piece (an impact
         // cascade) go by the bounce form, one Newton solve each, while it can
         // be shown that nothing else happens on the way: sigma theta'' < 0 at
@@ -137,8 +137,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             if (!(w0 * w1 * u_land < max_theta * (w0 + w1))) break;
             ++result.steps;
             const Real t_land = t + u_land;
-            const bool micro_b = rules::record_impact(result, t_land, options, p);
-            rules::apply_impact(run, result, model, t_land, om_land, micro_b, rest);
+            rules::impact(run, result, model, options, t_land, om_land, rest);
             // The next bounce's lin (sigma is the new corner's) with the move
             // added last: one product and an add after u_land, not two adds.
             lin_b = (piece.a0 - sigma * alpha) + piece.c1 * u_land;
@@ -168,220 +167,241 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         }
     };
 
+    // Whether the block has left the ground since the pass began (the
+    // general path's "rose" rule, simulate.cpp): a return to it before then
+    // is rounding, and the block rests.
+    bool rose = false;
+
+    // Quiet whole pieces from t, a handful of flops each: nothing can happen
+    // inside a piece whose ends have sigma theta > noise, theta' of one sign
+    // and theta'' of one sign (theta' monotone: no extremum), sigma theta
+    // below the fall angle and no first crossing of alpha.  Stops at the
+    // first piece that may hold an event, with t, theta, omega and k at its
+    // start.
+    auto quiet_pieces = [&]() {
+        if (!(dt * k <= t && t < dt * (k + 1))) k = input.piece_index(t);
+        const Real sa = sigma * alpha;
+        const Real upper = upper_from(sigma * theta);
+        const std::size_t k0 = k;
+        Real peak = 0.0;
+        if (t == dt * k) {
+            // The state and the record in locals: theta and omega are
+            // the run's fields, which the loads of a[] might alias.
+            Real th0 = theta, om0 = omega, a_k = a[k], C = th0 + (a_k - sa);
+            const Real sg = sigma;
+            const double* const a_end = a.data() + a.size();
+            const double* a_next = a.data() + k + 1;
+            for (; a_next < a_end; ++a_next) {  // t_stop = t_fin here
+                const Real a_k1 = *a_next;
+                const Real c1 = (a_k1 - a_k) * inv_dt, W = om0 + c1;
+                const Real th1 = th0 + om0 * dt + C * k1_dt + W * q_dt;
+                const Real om1 = om0 + C * ps_dt + W * k1_dt;
+                // theta''/p^2 at the end, eq. 3 at the point: the next piece's C.
+                const Real e1 = th1 + (a_k1 - sa);
+                const Real s1 = sg * th1;
+                // C e1 > 0: theta'' of one sign at both ends, so theta'
+                // is monotone (an underflow to 0 only sends the piece
+                // to the full analysis).
+                if (!(s1 > noise && s1 < upper && C * e1 > 0.0)) break;
+                if (!(om0 * om1 > 0.0)) {
+                    // theta' changes sign once: one extremum of theta.
+                    // Its value is bounded by where the tangents at the
+                    // ends meet, v = s0 + w0 (s1 - s0 + w1 dt) / (w0 + w1)
+                    // (w0 = sigma theta'(0), w1 = -sigma theta'(dt)): from
+                    // above for a maximum of sigma theta (sigma theta''
+                    // < 0), from below for a minimum.  The piece stays
+                    // quiet when the bound keeps a maximum below the
+                    // first alpha and the fall angle, or a minimum above
+                    // the ground; a maximum that may be the largest
+                    // |theta| so far is located.  The bound's margin,
+                    // 1e-9 relative, is far above its rounding.
+                    const Real s0 = sg * th0, w0 = sg * om0, w1 = -sg * om1;
+                    if (!(s0 > noise && om0 * om1 < 0.0)) break;
+                    const Real v = tangents_meet(s0, w0, s1, w1, dt);
+                    if (sg * C < 0.0) {
+                        if (!(v < upper * Real(1 - 1e-9))) break;
+                        if (!(v < std::max(peak, max_theta) * Real(1 - 1e-9))) {
+                            peak = std::max(peak, sg * theta_at_extremum(th0, om0, C, W, om1));
+                        }
+                    } else if (!(v > 2 * noise)) {
+                        break;
+                    }
+                }
+                th0 = th1;
+                om0 = om1;
+                a_k = a_k1;
+                C = e1;
+                peak = std::max(peak, s1);
+            }
+            k = static_cast<std::size_t>(a_next - a.data()) - 1;
+            theta = th0;
+            omega = om0;
+        }
+        if (k != k0) {
+            t = dt * k;
+            rose = true;
+            max_theta = std::max(max_theta, peak);
+            result.steps += static_cast<long>(k - k0);
+        }
+    };
+
+    // The events of the part [ua, ub] of the piece from t (closed form f,
+    // ending at u1, te), between the points at_a and at_b, holding at most
+    // one extremum of theta: the extremum, the impact (sigma theta reaches
+    // 0), the fall, the first |theta| = alpha.  True when one ends the
+    // segment (a fall, a rest, an impact), which it applies to the run.
+    auto part_events = [&](const Closed<Real>& f, Real ua, const typename Closed<Real>::Point& at_a, Real ub,
+                           const typename Closed<Real>::Point& at_b, Real u1, Real te, Real th_noise,
+                           Real om_noise) __attribute__((always_inline)) -> bool {
+        const Real eps4 = 4 * std::numeric_limits<Real>::epsilon();
+        const Real tha = at_a.theta, oma = at_a.omega, thb = at_b.theta, omb = at_b.omega;
+        // Extremum of theta inside the part (theta' changes sign, once).
+        typename Closed<Real>::Found ext{NAN, {NAN, NAN, NAN}};
+        if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) ext = f.extremum(at_a, ua, ub, omb, om_noise);
+        const Real u_ext = ext.u, th_ext = ext.q.theta;
+        const bool has_ext = !std::isnan(u_ext);
+        // Terminal events: impact (sigma theta reaches 0), fall.
+        typename Closed<Real>::Found hit{INFINITY, {}}, fall{INFINITY, {}};
+        // Next to an extremum theta is a parabola, nearly flat when the
+        // rebound is small (the end of an impact cascade): the root finder
+        // starts from the parabola's root, u_ext -+ sqrt(2 |theta_ext / theta''_ext|).
+        auto beside_ext = [&](Real side) {
+            return u_ext + side * std::sqrt(std::fabs(2 * th_ext / (p * p * ext.q.curvature)));
+        };
+        if (has_ext && sigma * th_ext < 0.0)
+            hit = f.level(sigma, 0, ua, u_ext, sigma * tha, sigma * th_ext, th_noise, beside_ext(-1.0));
+        else if (sigma * thb < 0.0)
+            hit = has_ext ? f.level(sigma, 0, u_ext, ub, sigma * th_ext, sigma * thb, th_noise, beside_ext(1.0))
+                          : f.level(sigma, 0, ua, ub, sigma * tha, sigma * thb, th_noise, f.ground_root(ua, at_a));
+        if (sigma * thb >= options.overturn_angle)
+            fall = f.level(sigma, options.overturn_angle, ua, ub, sigma * tha - options.overturn_angle,
+                           sigma * thb - options.overturn_angle, th_noise + eps4 * options.overturn_angle);
+        const Real u_impact = hit.u, u_fall = fall.u;
+        const Real u_cut = std::min({u_impact, u_fall, ub});
+        // First time |theta| = alpha.
+        if (std::isnan(result.t_first_alpha) && sigma * tha < alpha) {
+            const Real th_cut = u_cut == ub ? thb : u_cut == u_impact ? hit.q.theta : fall.q.theta;
+            if (sigma * th_cut >= alpha)
+                result.t_first_alpha = t + f.level(sigma, alpha, ua, u_cut, sigma * tha - alpha, sigma * th_cut - alpha,
+                                                   th_noise + eps4 * alpha)
+                                               .u;
+            else if (has_ext && u_ext < u_cut && sigma * th_ext >= alpha)
+                result.t_first_alpha = t + f.level(sigma, alpha, ua, u_ext, sigma * tha - alpha, sigma * th_ext - alpha,
+                                                   th_noise + eps4 * alpha)
+                                               .u;
+        }
+        if (has_ext && u_ext <= u_cut) note_theta(t + u_ext, th_ext);
+        if (sigma * thb > noise || (has_ext && u_ext <= u_cut && sigma * th_ext > noise)) rose = true;
+
+        if (u_fall <= u_cut && u_fall < INFINITY) {
+            // The fall.
+            result.overturned = true;
+            result.t_overturn = t + u_fall;
+            result.overturned_during_input = result.t_overturn <= t_fin;
+            note_theta(result.t_overturn, sigma * options.overturn_angle);
+            done = true;
+            return true;
+        }
+        if (u_impact <= u_cut && u_impact < INFINITY) {
+            if (rose) {
+                impact_and_cascade(hit);
+            } else {
+                // Within rounding of the ground: at rest to the piece's end.
+                t = te;
+                theta = omega = 0.0;
+                run.resting = true;
+            }
+            return true;
+        }
+        note_theta(ub >= u1 ? te : t + ub, thb);
+        return false;
+    };
+
+    // The piece from t to its end te (the record's next sample, or a step
+    // of the free rocking after the input) by its closed form, and its
+    // events; true when one ends the segment.
+    auto piece_events = [&](Real t_stop) -> bool {
+        Real te, a0, c1;
+        Real u1;
+        if (t < t_fin) {
+            // k holds t here: the quiet pieces set it (t = k dt) or left both as they were.
+            te = dt * (k + 1);
+            const Rest piece = rest_of_piece();
+            a0 = piece.a0;
+            c1 = piece.c1;
+            u1 = piece.u1;
+        } else {
+            te = t + h_free >= t_stop ? t_stop : t + h_free;
+            a0 = c1 = 0.0;
+            u1 = te - t;
+        }
+        const Real lin = a0 - sigma * alpha;
+        const Closed<Real> f{p, theta, omega, theta + lin, omega + c1};
+        const typename Closed<Real>::Point end = f.at(u1);
+        const Real th1 = end.theta, om1 = end.omega;
+        ++result.steps;
+        const Real k1 = f.k1_bound(u1);  // for rounding levels
+        // Where theta' and theta'' keep their signs, sigma theta is monotone
+        // from s0 >= 0 to s1, and two kinds of piece need none of the
+        // analysis below: those that end above noise and below the level
+        // that the first alpha or the fall would cross (nothing happens),
+        // and those that end below the ground (one impact, nothing before
+        // it; rose: the block has left the ground since the pass began,
+        // else it rests, which the analysis below decides).
+        const Real s0 = sigma * theta, s1 = sigma * th1;
+        const bool monotone = f.C * end.curvature > 0.0 && omega * om1 > 0.0 && s0 >= 0.0;
+        if (monotone && s1 > noise && s1 < upper_from(s0)) {
+            note_theta(te, th1);
+            rose = true;
+        } else if (monotone && rose && s1 < 0.0) {
+            impact_and_cascade(f.level(sigma, 0, 0, u1, s0, s1, f.theta_noise(u1, k1),
+                                       f.ground_root(0, {theta, omega, f.C})));
+            return true;
+        } else {
+            // Rounding levels of theta, theta' and theta''/p^2 on this piece.
+            const Real e_noise = f.curvature_noise(u1, k1);
+            const Real th_noise = f.theta_noise(u1, k1);
+            const Real om_noise = f.omega_noise(u1, k1);
+
+            // Where theta'' changes sign with theta' keeping its sign at both
+            // ends, or starting from 0 (the uplift from rest), theta' may
+            // vanish twice (or once more): split where theta'' = 0.
+            Real u_split = u1;
+            typename Closed<Real>::Point at_split = end;
+            const Real e0 = f.C, e1 = end.curvature;
+            const bool from_rest = omega == 0.0;
+            if ((e0 < 0) != (e1 < 0) && e0 != 0.0 && e1 != 0.0 && (from_rest || (omega < 0) == (om1 < 0))) {
+                const typename Closed<Real>::Found infl = f.inflection(0, u1, e0, e1, e_noise);
+                if (infl.u > 0.0 && infl.u < u1 && infl.q.omega != 0.0 &&
+                    (from_rest || (infl.q.omega < 0) != (omega < 0))) {
+                    u_split = infl.u;
+                    at_split = infl.q;
+                }
+            }
+            // The parts [0, u_split] and [u_split, u1], each holding one extremum at most.
+            if (part_events(f, 0.0, {theta, omega, f.C}, u_split, at_split, u1, te, th_noise, om_noise)) return true;
+            if (u_split < u1 && part_events(f, u_split, at_split, u1, end, u1, te, th_noise, om_noise)) return true;
+        }
+        t = te;
+        theta = th1;
+        omega = om1;
+        if (t < t_fin && t >= dt * (k + 1)) ++k;
+        return false;
+    };
+
+    // The run: the rules at the top of each pass (the end of the input, the
+    // uplift from rest, the free rocking's end), then the pieces to the
+    // next event.
     while (!done && rules::begin_pass(run, result, model, input, accel_at, options, t_fin, note_theta, [](Real) {})) {
         const Real t_stop = t < t_fin ? t_fin : run.t_limit;
-        bool rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
+        rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
         bool event = false;
         while (!event && t < t_stop) {
-            // Quiet whole pieces, a handful of flops each: nothing can happen
-            // inside a piece whose ends have sigma theta > noise, theta' of one
-            // sign and theta'' of one sign (theta' monotone: no extremum), sigma
-            // theta below the fall angle and no first crossing of alpha.
             if (t < t_fin) {
-                if (!(dt * k <= t && t < dt * (k + 1))) k = input.piece_index(t);
-                const Real sa = sigma * alpha;
-                const Real upper = upper_from(sigma * theta);
-                const std::size_t k0 = k;
-                Real peak = 0.0;
-                if (t == dt * k) {
-                    // The state and the record in locals: theta and omega are
-                    // the run's fields, which the loads of a[] might alias.
-                    Real th0 = theta, om0 = omega, a_k = a[k], C = th0 + (a_k - sa);
-                    const Real sg = sigma;
-                    const double* const a_end = a.data() + a.size();
-                    const double* a_next = a.data() + k + 1;
-                    for (; a_next < a_end; ++a_next) {  // t_stop = t_fin here
-                        const Real a_k1 = *a_next;
-                        const Real c1 = (a_k1 - a_k) * inv_dt, W = om0 + c1;
-                        const Real th1 = th0 + om0 * dt + C * k1_dt + W * q_dt;
-                        const Real om1 = om0 + C * ps_dt + W * k1_dt;
-                        // theta''/p^2 at the end, eq. 3 at the point: the next piece's C.
-                        const Real e1 = th1 + (a_k1 - sa);
-                        const Real s1 = sg * th1;
-                        // C e1 > 0: theta'' of one sign at both ends, so theta'
-                        // is monotone (an underflow to 0 only sends the piece
-                        // to the full analysis).
-                        if (!(s1 > noise && s1 < upper && C * e1 > 0.0)) break;
-                        if (!(om0 * om1 > 0.0)) {
-                            // theta' changes sign once: one extremum of theta.
-                            // Its value is bounded by where the tangents at the
-                            // ends meet, v = s0 + w0 (s1 - s0 + w1 dt) / (w0 + w1)
-                            // (w0 = sigma theta'(0), w1 = -sigma theta'(dt)): from
-                            // above for a maximum of sigma theta (sigma theta''
-                            // < 0), from below for a minimum.  The piece stays
-                            // quiet when the bound keeps a maximum below the
-                            // first alpha and the fall angle, or a minimum above
-                            // the ground; a maximum that may be the largest
-                            // |theta| so far is located.  The bound's margin,
-                            // 1e-9 relative, is far above its rounding.
-                            const Real s0 = sg * th0, w0 = sg * om0, w1 = -sg * om1;
-                            if (!(s0 > noise && om0 * om1 < 0.0)) break;
-                            const Real v = tangents_meet(s0, w0, s1, w1, dt);
-                            if (sg * C < 0.0) {
-                                if (!(v < upper * Real(1 - 1e-9))) break;
-                                if (!(v < std::max(peak, max_theta) * Real(1 - 1e-9))) {
-                                    peak = std::max(peak, sg * theta_at_extremum(th0, om0, C, W, om1));
-                                }
-                            } else if (!(v > 2 * noise)) {
-                                break;
-                            }
-                        }
-                        th0 = th1;
-                        om0 = om1;
-                        a_k = a_k1;
-                        C = e1;
-                        peak = std::max(peak, s1);
-                    }
-                    k = static_cast<std::size_t>(a_next - a.data()) - 1;
-                    theta = th0;
-                    omega = om0;
-                }
-                if (k != k0) {
-                    t = dt * k;
-                    rose = true;
-                    max_theta = std::max(max_theta, peak);
-                    result.steps += static_cast<long>(k - k0);
-                }
+                quiet_pieces();
                 if (!(t < t_stop)) break;
             }
-            // The piece [t, te] and its closed form.
-            Real te, a0, c1;
-            Real u1;
-            if (t < t_fin) {
-                // k holds t here: the quiet loop above set it (t = k dt) or left both as they were.
-                te = dt * (k + 1);
-                const Rest piece = rest_of_piece();
-                a0 = piece.a0;
-                c1 = piece.c1;
-                u1 = piece.u1;
-            } else {
-                te = t + h_free >= t_stop ? t_stop : t + h_free;
-                a0 = c1 = 0.0;
-                u1 = te - t;
-            }
-            const Real lin = a0 - sigma * alpha;
-            const Closed<Real> f{p, theta, omega, theta + lin, omega + c1};
-            const typename Closed<Real>::Point end = f.at(u1);
-            const Real th1 = end.theta, om1 = end.omega;
-            ++result.steps;
-            const Real k1 = f.k1_bound(u1);  // for rounding levels
-            // Where theta' and theta'' keep their signs, sigma theta is monotone
-            // from s0 >= 0 to s1, and two kinds of piece need none of the
-            // analysis below: those that end above noise and below the level
-            // that the first alpha or the fall would cross (nothing happens),
-            // and those that end below the ground (one impact, nothing before
-            // it; rose: the block has left the ground since the pass began,
-            // else it rests, which the analysis below decides).
-            const Real s0 = sigma * theta, s1 = sigma * th1;
-            const bool monotone = f.C * end.curvature > 0.0 && omega * om1 > 0.0 && s0 >= 0.0;
-            if (monotone && s1 > noise && s1 < upper_from(s0)) {
-                note_theta(te, th1);
-                rose = true;
-            } else if (monotone && rose && s1 < 0.0) {
-                impact_at(f.level(sigma, 0, 0, u1, s0, s1, f.theta_noise(u1, k1),
-                                  f.ground_root(0, {theta, omega, f.C})));
-                event = true;
-            } else {
-                // Rounding levels of theta, theta' and theta''/p^2 on this piece.
-                const Real eps4 = 4 * std::numeric_limits<Real>::epsilon();
-                const Real e_noise = f.curvature_noise(u1, k1);
-                const Real th_noise = f.theta_noise(u1, k1);
-                const Real om_noise = f.omega_noise(u1, k1);
-
-                // Where theta'' changes sign with theta' keeping its sign at both
-                // ends, or starting from 0 (the uplift from rest), theta' may
-                // vanish twice (or once more): split where theta'' = 0.
-                Real u_split = u1;
-                typename Closed<Real>::Point at_split = end;
-                const Real e0 = f.C, e1 = end.curvature;
-                const bool from_rest = omega == 0.0;
-                if ((e0 < 0) != (e1 < 0) && e0 != 0.0 && e1 != 0.0 && (from_rest || (omega < 0) == (om1 < 0))) {
-                    const typename Closed<Real>::Found infl = f.inflection(0, u1, e0, e1, e_noise);
-                    if (infl.u > 0.0 && infl.u < u1 && infl.q.omega != 0.0 &&
-                        (from_rest || (infl.q.omega < 0) != (omega < 0))) {
-                        u_split = infl.u;
-                        at_split = infl.q;
-                    }
-                }
-
-                // The part [ua, ub] and the points at its ends.
-                Real ua = 0.0;
-                typename Closed<Real>::Point at_a{theta, omega, f.C};
-                while (!event) {
-                    const Real ub = u_split;
-                    const typename Closed<Real>::Point at_b = at_split;
-                    const Real tha = at_a.theta, oma = at_a.omega, thb = at_b.theta, omb = at_b.omega;
-                    // Extremum of theta inside the part (theta' changes sign, once).
-                    typename Closed<Real>::Found ext{NAN, {NAN, NAN, NAN}};
-                    if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) ext = f.extremum(at_a, ua, ub, omb, om_noise);
-                    const Real u_ext = ext.u, th_ext = ext.q.theta;
-                    const bool has_ext = !std::isnan(u_ext);
-                    // Terminal events: impact (sigma theta reaches 0), fall.
-                    typename Closed<Real>::Found hit{INFINITY, {}}, fall{INFINITY, {}};
-                    // Next to an extremum theta is a parabola, nearly flat when the
-                    // rebound is small (the end of an impact cascade): the root finder
-                    // starts from the parabola's root, u_ext -+ sqrt(2 |theta_ext / theta''_ext|).
-                    auto beside_ext = [&](Real side) {
-                        return u_ext + side * std::sqrt(std::fabs(2 * th_ext / (p * p * ext.q.curvature)));
-                    };
-                    if (has_ext && sigma * th_ext < 0.0)
-                        hit = f.level(sigma, 0, ua, u_ext, sigma * tha, sigma * th_ext, th_noise, beside_ext(-1.0));
-                    else if (sigma * thb < 0.0)
-                        hit = has_ext ? f.level(sigma, 0, u_ext, ub, sigma * th_ext, sigma * thb, th_noise,
-                                                beside_ext(1.0))
-                                      : f.level(sigma, 0, ua, ub, sigma * tha, sigma * thb, th_noise,
-                                                f.ground_root(ua, at_a));
-                    if (sigma * thb >= options.overturn_angle)
-                        fall = f.level(sigma, options.overturn_angle, ua, ub, sigma * tha - options.overturn_angle,
-                                       sigma * thb - options.overturn_angle, th_noise + eps4 * options.overturn_angle);
-                    const Real u_impact = hit.u, u_fall = fall.u;
-                    const Real u_cut = std::min({u_impact, u_fall, ub});
-                    // First time |theta| = alpha.
-                    if (std::isnan(result.t_first_alpha) && sigma * tha < alpha) {
-                        const Real th_cut = u_cut == ub ? thb : u_cut == u_impact ? hit.q.theta : fall.q.theta;
-                        if (sigma * th_cut >= alpha)
-                            result.t_first_alpha = t + f.level(sigma, alpha, ua, u_cut, sigma * tha - alpha,
-                                                               sigma * th_cut - alpha, th_noise + eps4 * alpha)
-                                                           .u;
-                        else if (has_ext && u_ext < u_cut && sigma * th_ext >= alpha)
-                            result.t_first_alpha = t + f.level(sigma, alpha, ua, u_ext, sigma * tha - alpha,
-                                                               sigma * th_ext - alpha, th_noise + eps4 * alpha)
-                                                           .u;
-                    }
-                    if (has_ext && u_ext <= u_cut) note_theta(t + u_ext, th_ext);
-                    if (sigma * thb > noise || (has_ext && u_ext <= u_cut && sigma * th_ext > noise)) rose = true;
-
-                    if (u_fall <= u_cut && u_fall < INFINITY) {
-                        result.overturned = true;
-                        result.t_overturn = t + u_fall;
-                        result.overturned_during_input = result.t_overturn <= t_fin;
-                        note_theta(result.t_overturn, sigma * options.overturn_angle);
-                        done = event = true;
-                    } else if (u_impact <= u_cut && u_impact < INFINITY && !rose) {
-                        // Within rounding of the ground: at rest to the piece's end.
-                        t = te;
-                        theta = omega = 0.0;
-                        run.resting = true;
-                        event = true;
-                    } else if (u_impact <= u_cut && u_impact < INFINITY) {
-                        impact_at(hit);
-                        event = true;
-                    } else {
-                        note_theta(ub >= u1 ? te : t + ub, thb);
-                        if (ub >= u1) break;
-                        ua = ub;
-                        at_a = at_b;
-                        u_split = u1;
-                        at_split = end;
-                    }
-                }
-            }
-            if (!event) {
-                t = te;
-                theta = th1;
-                omega = om1;
-                if (t < t_fin && t >= dt * (k + 1)) ++k;
-            }
+            event = piece_events(t_stop);
         }
     }
     rules::decide_by_energy(run, result, model, options, t_fin);
