@@ -245,78 +245,6 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         }
     };
 
-    // The events of the part [ua, ub] of the piece from t (closed form f,
-    // ending at u1, te), between the points at_a and at_b, holding at most
-    // one extremum of theta: the extremum, the impact (sigma theta reaches
-    // 0), the fall, the first |theta| = alpha.  True when one ends the
-    // segment (a fall, a rest, an impact), which it applies to the run.
-    auto part_events = [&](const Closed<Real>& f, Real ua, const typename Closed<Real>::Point& at_a, Real ub,
-                           const typename Closed<Real>::Point& at_b, Real u1, Real te, Real th_noise,
-                           Real om_noise) __attribute__((always_inline)) -> bool {
-        const Real eps4 = 4 * std::numeric_limits<Real>::epsilon();
-        const Real tha = at_a.theta, oma = at_a.omega, thb = at_b.theta, omb = at_b.omega;
-        // Extremum of theta inside the part (theta' changes sign, once).
-        typename Closed<Real>::Found ext{NAN, {NAN, NAN, NAN}};
-        if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) ext = f.extremum(at_a, ua, ub, omb, om_noise);
-        const Real u_ext = ext.u, th_ext = ext.q.theta;
-        const bool has_ext = !std::isnan(u_ext);
-        // Terminal events: impact (sigma theta reaches 0), fall.
-        typename Closed<Real>::Found hit{INFINITY, {}}, fall{INFINITY, {}};
-        // Next to an extremum theta is a parabola, nearly flat when the
-        // rebound is small (the end of an impact cascade): the root finder
-        // starts from the parabola's root, u_ext -+ sqrt(2 |theta_ext / theta''_ext|).
-        auto beside_ext = [&](Real side) {
-            return u_ext + side * std::sqrt(std::fabs(2 * th_ext / (p * p * ext.q.curvature)));
-        };
-        if (has_ext && sigma * th_ext < 0.0)
-            hit = f.level(sigma, 0, ua, u_ext, sigma * tha, sigma * th_ext, th_noise, beside_ext(-1.0));
-        else if (sigma * thb < 0.0)
-            hit = has_ext ? f.level(sigma, 0, u_ext, ub, sigma * th_ext, sigma * thb, th_noise, beside_ext(1.0))
-                          : f.level(sigma, 0, ua, ub, sigma * tha, sigma * thb, th_noise, f.ground_root(ua, at_a));
-        if (sigma * thb >= options.overturn_angle)
-            fall = f.level(sigma, options.overturn_angle, ua, ub, sigma * tha - options.overturn_angle,
-                           sigma * thb - options.overturn_angle, th_noise + eps4 * options.overturn_angle);
-        const Real u_impact = hit.u, u_fall = fall.u;
-        const Real u_cut = std::min({u_impact, u_fall, ub});
-        // First time |theta| = alpha.
-        if (std::isnan(result.t_first_alpha) && sigma * tha < alpha) {
-            const Real th_cut = u_cut == ub ? thb : u_cut == u_impact ? hit.q.theta : fall.q.theta;
-            if (sigma * th_cut >= alpha)
-                result.t_first_alpha = t + f.level(sigma, alpha, ua, u_cut, sigma * tha - alpha, sigma * th_cut - alpha,
-                                                   th_noise + eps4 * alpha)
-                                               .u;
-            else if (has_ext && u_ext < u_cut && sigma * th_ext >= alpha)
-                result.t_first_alpha = t + f.level(sigma, alpha, ua, u_ext, sigma * tha - alpha, sigma * th_ext - alpha,
-                                                   th_noise + eps4 * alpha)
-                                               .u;
-        }
-        if (has_ext && u_ext <= u_cut) note_theta(t + u_ext, th_ext);
-        if (sigma * thb > noise || (has_ext && u_ext <= u_cut && sigma * th_ext > noise)) rose = true;
-
-        if (u_fall <= u_cut && u_fall < INFINITY) {
-            // The fall.
-            result.overturned = true;
-            result.t_overturn = t + u_fall;
-            result.overturned_during_input = result.t_overturn <= t_fin;
-            note_theta(result.t_overturn, sigma * options.overturn_angle);
-            done = true;
-            return true;
-        }
-        if (u_impact <= u_cut && u_impact < INFINITY) {
-            if (rose) {
-                impact_and_cascade(hit);
-            } else {
-                // Within rounding of the ground: at rest to the piece's end.
-                t = te;
-                theta = omega = 0.0;
-                run.resting = true;
-            }
-            return true;
-        }
-        note_theta(ub >= u1 ? te : t + ub, thb);
-        return false;
-    };
-
     // The piece from t to its end te (the record's next sample, or a step
     // of the free rocking after the input) by its closed form, and its
     // events; true when one ends the segment.
@@ -378,9 +306,86 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                     at_split = infl.q;
                 }
             }
-            // The parts [0, u_split] and [u_split, u1], each holding one extremum at most.
-            if (part_events(f, 0.0, {theta, omega, f.C}, u_split, at_split, u1, te, th_noise, om_noise)) return true;
-            if (u_split < u1 && part_events(f, u_split, at_split, u1, end, u1, te, th_noise, om_noise)) return true;
+            // part_events: the parts [0, u_split] and [u_split, u1], each
+            // holding one extremum of theta at most, and their events: the
+            // extremum, the impact (sigma theta reaches 0), the fall, the
+            // first |theta| = alpha.  An event that ends the segment (a
+            // fall, a rest, an impact) is applied to the run.  (Written in
+            // the loop, not as a lambda: as one, called for each part, it
+            // cost 0.1 us of Norcia's 16.)
+            Real ua = 0.0;
+            typename Closed<Real>::Point at_a{theta, omega, f.C};
+            for (;;) {
+                const Real ub = u_split;
+                const typename Closed<Real>::Point& at_b = at_split;
+                const Real eps4 = 4 * std::numeric_limits<Real>::epsilon();
+                const Real tha = at_a.theta, oma = at_a.omega, thb = at_b.theta, omb = at_b.omega;
+                // Extremum of theta inside the part (theta' changes sign, once).
+                typename Closed<Real>::Found ext{NAN, {NAN, NAN, NAN}};
+                if ((oma < 0) != (omb < 0) && oma != 0.0 && omb != 0.0) ext = f.extremum(at_a, ua, ub, omb, om_noise);
+                const Real u_ext = ext.u, th_ext = ext.q.theta;
+                const bool has_ext = !std::isnan(u_ext);
+                // Terminal events: impact (sigma theta reaches 0), fall.
+                typename Closed<Real>::Found hit{INFINITY, {}}, fall{INFINITY, {}};
+                // Next to an extremum theta is a parabola, nearly flat when the
+                // rebound is small (the end of an impact cascade): the root finder
+                // starts from the parabola's root, u_ext -+ sqrt(2 |theta_ext / theta''_ext|).
+                auto beside_ext = [&](Real side) {
+                    return u_ext + side * std::sqrt(std::fabs(2 * th_ext / (p * p * ext.q.curvature)));
+                };
+                if (has_ext && sigma * th_ext < 0.0)
+                    hit = f.level(sigma, 0, ua, u_ext, sigma * tha, sigma * th_ext, th_noise, beside_ext(-1.0));
+                else if (sigma * thb < 0.0)
+                    hit = has_ext ? f.level(sigma, 0, u_ext, ub, sigma * th_ext, sigma * thb, th_noise, beside_ext(1.0))
+                                  : f.level(sigma, 0, ua, ub, sigma * tha, sigma * thb, th_noise,
+                                            f.ground_root(ua, at_a));
+                if (sigma * thb >= options.overturn_angle)
+                    fall = f.level(sigma, options.overturn_angle, ua, ub, sigma * tha - options.overturn_angle,
+                                   sigma * thb - options.overturn_angle, th_noise + eps4 * options.overturn_angle);
+                const Real u_impact = hit.u, u_fall = fall.u;
+                const Real u_cut = std::min({u_impact, u_fall, ub});
+                // First time |theta| = alpha.
+                if (std::isnan(result.t_first_alpha) && sigma * tha < alpha) {
+                    const Real th_cut = u_cut == ub ? thb : u_cut == u_impact ? hit.q.theta : fall.q.theta;
+                    if (sigma * th_cut >= alpha)
+                        result.t_first_alpha = t + f.level(sigma, alpha, ua, u_cut, sigma * tha - alpha,
+                                                           sigma * th_cut - alpha, th_noise + eps4 * alpha)
+                                                       .u;
+                    else if (has_ext && u_ext < u_cut && sigma * th_ext >= alpha)
+                        result.t_first_alpha = t + f.level(sigma, alpha, ua, u_ext, sigma * tha - alpha,
+                                                           sigma * th_ext - alpha, th_noise + eps4 * alpha)
+                                                       .u;
+                }
+                if (has_ext && u_ext <= u_cut) note_theta(t + u_ext, th_ext);
+                if (sigma * thb > noise || (has_ext && u_ext <= u_cut && sigma * th_ext > noise)) rose = true;
+
+                if (u_fall <= u_cut && u_fall < INFINITY) {
+                    // The fall.
+                    result.overturned = true;
+                    result.t_overturn = t + u_fall;
+                    result.overturned_during_input = result.t_overturn <= t_fin;
+                    note_theta(result.t_overturn, sigma * options.overturn_angle);
+                    done = true;
+                    return true;
+                }
+                if (u_impact <= u_cut && u_impact < INFINITY) {
+                    if (rose) {
+                        impact_and_cascade(hit);
+                    } else {
+                        // Within rounding of the ground: at rest to the piece's end.
+                        t = te;
+                        theta = omega = 0.0;
+                        run.resting = true;
+                    }
+                    return true;
+                }
+                note_theta(ub >= u1 ? te : t + ub, thb);
+                if (ub >= u1) break;
+                ua = ub;
+                at_a = at_b;
+                u_split = u1;
+                at_split = end;
+            }
         }
         t = te;
         theta = th1;
