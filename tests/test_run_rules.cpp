@@ -129,45 +129,35 @@ TEST(RunRules, AnImpactKeepsTheRestitutionsShareOfThetaDotOnTheOtherCorner) {
 TEST(RunRules, ACascadeEndsAtARestOrAMicroBounce) {
     const Model m = block(0.2, 2.0, 0.5);
     SimulationOptions options;
+    // The state after impacts at (t, theta' before it), under the rest rule rest.
+    struct After {
+        rules::RunState<double> s;
+        SimulationResult result;
+    };
+    auto after = [&](std::vector<std::pair<double, double>> impacts, double rest) {
+        After a{rules::RunState<double>(options, 10.0), {}};
+        a.s.resting = false;
+        for (const auto& [t, om] : impacts) rules::impact(a.s, a.result, m, options, t, om, rest);
+        return a;
+    };
     // A rebound below rest * alpha * p (1e-3 * 0.4 = 4e-4 rad/s) rests.
-    {
-        rules::RunState<double> s(options, 10.0);
-        s.resting = false;
-        SimulationResult result;
-        rules::impact(s, result, m, options, 1.0, -7.9e-4, 1e-3);  // rebound 3.95e-4
-        EXPECT_TRUE(s.resting);
-        EXPECT_EQ(s.omega, 0.0);
-        EXPECT_EQ(result.rests, 1);
-    }
-    {
-        rules::RunState<double> s(options, 10.0);
-        s.resting = false;
-        SimulationResult result;
-        rules::impact(s, result, m, options, 1.0, -8.1e-4, 1e-3);  // rebound 4.05e-4
-        EXPECT_FALSE(s.resting);
-        EXPECT_EQ(s.omega, 0.5 * -8.1e-4);
-    }
+    const After slow = after({{1.0, -7.9e-4}}, 1e-3);  // rebound 3.95e-4
+    EXPECT_TRUE(slow.s.resting);
+    EXPECT_EQ(slow.s.omega, 0.0);
+    EXPECT_EQ(slow.result.rests, 1);
+    const After fast = after({{1.0, -8.1e-4}}, 1e-3);  // rebound 4.05e-4
+    EXPECT_FALSE(fast.s.resting);
+    EXPECT_EQ(fast.s.omega, 0.5 * -8.1e-4);
+    EXPECT_EQ(fast.result.rests, 0);
     // A second impact within 1e-6 / p (5e-7 s) of the last is a bounce too
     // small to resolve: the block rests, whatever its speed.
-    {
-        rules::RunState<double> s(options, 10.0);
-        s.resting = false;
-        SimulationResult result;
-        rules::impact(s, result, m, options, 1.0, -1.0, 1e-9);
-        ASSERT_FALSE(s.resting);
-        rules::impact(s, result, m, options, 1.0 + 4.9e-7, 1.0, 1e-9);
-        EXPECT_TRUE(s.resting);
-        EXPECT_EQ(result.impacts, 2);
-        EXPECT_EQ(result.rests, 1);
-    }
-    {
-        rules::RunState<double> s(options, 10.0);
-        s.resting = false;
-        SimulationResult result;
-        rules::impact(s, result, m, options, 1.0, -1.0, 1e-9);
-        rules::impact(s, result, m, options, 1.0 + 5.1e-7, 1.0, 1e-9);
-        EXPECT_FALSE(s.resting);
-    }
+    const After micro = after({{1.0, -1.0}, {1.0 + 4.9e-7, 1.0}}, 1e-9);
+    EXPECT_TRUE(micro.s.resting);
+    EXPECT_EQ(micro.result.impacts, 2);
+    EXPECT_EQ(micro.result.rests, 1);
+    const After apart = after({{1.0, -1.0}, {1.0 + 5.1e-7, 1.0}}, 1e-9);
+    EXPECT_FALSE(apart.s.resting);
+    EXPECT_EQ(apart.result.rests, 0);
 }
 
 TEST(RunRules, ImpactTimesAreKeptUpToTheirCapAndImpactsStopTheRunPastTheGuard) {
