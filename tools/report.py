@@ -4,22 +4,37 @@
 Reads the scenes' CSV files under OUT (default out/) and writes OUT/report.pdf with, for
 each figure and table of the paper, the reproduced version, the paper's claim, the
 comparison with the expected output (status, largest deviation against its tolerance), and
-the model and solver; then the errata list, the conservativeness findings, the
-work-precision diagram and the real-record results.  Debian's matplotlib (/usr/bin/python3).
+the model and solver; the findings (every erratum and tested claim, the same entries as
+docs/findings.md, from tools/findings.py); the real-record results and the
+work-precision diagram.  Debian's matplotlib (/usr/bin/python3).
+
+Layout: every page opens with its title and one sentence saying what it compares; text is
+wrapped and placed by measuring it with the renderer, figures take the height they ask
+for below it, and whatever does not fit goes on to a continuation page.  Before a page is
+saved its text blocks and axes (with their labels and legends) are checked against each
+other and the page's edges; an overlap is reported on stderr.
 """
 import csv
 import datetime
+import math
 import os
 import sys
-import textwrap
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.backends.backend_pdf import PdfPages  # noqa: E402
+from matplotlib.font_manager import FontProperties  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.patches import Rectangle  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import findings  # noqa: E402
 
 OUT = sys.argv[1] if len(sys.argv) > 1 else "out"
-A4 = (8.27, 11.69)
+A4 = (8.27, 11.69)          # inches
+LEFT, RIGHT, TOP, BOTTOM = 0.6, 0.6, 0.45, 0.45   # page margins, inches
+INK = "#1f3a5f"
 
 
 def read(scene, name):
@@ -50,6 +65,18 @@ def col(table, name, cast=float):
     return out
 
 
+def short(v, n=4):
+    try:
+        return f"{float(v):.{n}g}"
+    except ValueError:
+        return v
+
+
+def plain(s):
+    """Markdown to the page's plain text."""
+    return s.replace("`", "").replace("**", "")
+
+
 SUMMARY = {}
 s = read("", "summary.csv")
 if s:
@@ -64,144 +91,391 @@ def status_line(scene):
     return f"comparison with expected/{scene}: {r[1].upper()} ({float(r[2]):.2f} s); largest deviation: {r[3]}"
 
 
-def page(pdf, title, claim, scene, draw, extra=None, notes_from=None):
-    """A page: the title, the paper's claim, the comparison, model and solver, the figure, notes."""
-    fig = plt.figure(figsize=A4)
-    fig.text(0.06, 0.965, title, fontsize=14, weight="bold", va="top")
-    y = 0.935
-    for label, text in (("The paper", claim), ("Reproduction", status_line(scene))):
-        wrapped = textwrap.fill(f"{label}: {text}", 110)
-        fig.text(0.06, y, wrapped, fontsize=8.5, va="top")
-        y -= 0.014 * (wrapped.count("\n") + 1) + 0.006
-    if notes_from:
-        for key in ("model", "solver", "inputs", "criteria"):
-            if key in notes_from:
-                wrapped = textwrap.fill(f"{key}: {notes_from[key]}", 120)
-                fig.text(0.06, y, wrapped, fontsize=7.5, va="top", color="#333333")
-                y -= 0.012 * (wrapped.count("\n") + 1) + 0.004
-    draw(fig, y - 0.01)
-    if extra:
-        wrapped = "\n".join(textwrap.fill(t, 120) for t in extra)
-        fig.text(0.06, 0.03, wrapped, fontsize=7.5, va="bottom")
-    pdf.savefig(fig)
-    plt.close(fig)
+def run_status(scenes):
+    """This run's outputs against expected/, in words, for a sentence."""
+    got = [SUMMARY.get(sc) for sc in scenes]
+    if not all(got):
+        return "this run has no comparison with expected/ (out/summary.csv missing)"
+    bad = [r[0] for r in got if r[1] != "match"]
+    where = " and ".join(f"expected/{sc}" for sc in scenes)
+    if not bad:
+        return f"this run's outputs match {where}"
+    return f"this run's outputs DIFFER from expected/ in {', '.join(bad)} (first page)"
 
 
-def table_page(pdf, title, intro, header, rows, widths=None, fontsize=7):
-    """A table over as many pages as it needs: columns sized by `widths` (characters),
-    text wrapped to them, every row as tall as its tallest cell."""
-    widths = widths or [max(8, min(30, max([len(str(h))] + [len(str(r[i])) for r in rows]))) for i, h in enumerate(header)]
-    total = float(sum(widths))
-    col_widths = [w / total for w in widths]
-    wrap = lambda r: [textwrap.fill(str(c), w) for c, w in zip(r, widths)]
-    cells = [wrap(r) for r in rows]
-    line_h = 0.0125 * fontsize / 7.0
-    first = True
-    while cells or first:
-        fig = plt.figure(figsize=A4)
-        fig.text(0.06, 0.965, title + ("" if first else " (continued)"), fontsize=14, weight="bold", va="top")
-        top = 0.93
-        if first:
-            wrapped = "\n".join(textwrap.fill(t, 110) for t in intro)
-            fig.text(0.06, 0.93, wrapped, fontsize=8.5, va="top")
-            top = 0.93 - 0.0135 * (wrapped.count("\n") + 1) - 0.02
-        ax = fig.add_axes([0.04, 0.04, 0.92, top - 0.04])
-        ax.axis("off")
-        avail = top - 0.05
-        head = wrap(header)
-        used = line_h * (max(c.count("\n") for c in head) + 1) + 0.004
-        page_rows = []
-        while cells:
-            h = line_h * (max(c.count("\n") for c in cells[0]) + 1) + 0.004
-            if page_rows and used + h > avail:
-                break
-            page_rows.append(cells.pop(0))
-            used += h
-        if page_rows:
-            t = ax.table(cellText=page_rows, colLabels=head, colWidths=col_widths, loc="upper center",
-                         cellLoc="left", colLoc="left")
-            t.auto_set_font_size(False)
-            t.set_fontsize(fontsize)
-            axes_h = top - 0.04
-            for (i, j), cell in t.get_celld().items():
-                row = head if i == 0 else page_rows[i - 1]
-                lines = max(c.count("\n") for c in row) + 1
-                cell.set_height((line_h * lines + 0.004) / axes_h)
-                if i == 0:
-                    cell.set_text_props(weight="bold")
-        pdf.savefig(fig)
-        plt.close(fig)
-        first = False
+def short_status(scenes):
+    """This run against expected/ in a word or two."""
+    got = [SUMMARY.get(sc) for sc in scenes]
+    if not all(got):
+        return "not compared"
+    bad = [r[0] for r in got if r[1] != "match"]
+    return "match" if not bad else "differs in " + ", ".join(bad)
 
 
-def axes(fig, top, rows=1, cols=1, bottom=0.12):
-    h = (top - bottom) / rows
-    w = 0.86 / cols
-    out = []
-    for r in range(rows):
-        for c in range(cols):
-            out.append(fig.add_axes([0.09 + c * w, top - (r + 1) * h + 0.05, w - 0.08, h - 0.08]))
-    return out
+class Layout:
+    """Pages laid out from the top by measured text and requested figure heights."""
+
+    def __init__(self, pdf):
+        self.pdf = pdf
+        self.fig = None
+        self.pages = 0
+        self.problems = []
+        self._line_h = {}
+
+    # --- pages ---------------------------------------------------------------------
+    def page(self, title, compares):
+        """A new page: its title and the sentence saying what it compares."""
+        self.finish()
+        self.title, self.compares = title, compares
+        self._open(continued=False)
+
+    def _open(self, continued):
+        self.fresh = True
+        self.fig = plt.figure(figsize=A4)
+        self.renderer = self.fig.canvas.get_renderer()
+        self.dpi = self.fig.dpi
+        self.W, self.H = A4
+        self.width = self.W - LEFT - RIGHT
+        self.y = TOP
+        self.artists, self.axes = [], []
+        self.pages += 1
+        self.text(self.title + (" (continued)" if continued else ""), 14, weight="bold", gap=0.08, split=False)
+        self.text(self.compares, 9, style="italic", color=INK, gap=0.14, split=False)
+        self.fresh = True       # nothing but the header yet: never worth a new page
+
+    def continue_page(self):
+        self.finish()
+        self._open(continued=True)
+
+    @property
+    def room(self):
+        return self.H - BOTTOM - self.y
+
+    def need(self, inches):
+        """Start a continuation page unless `inches` remain on this one."""
+        if self.room < inches and not self.fresh:
+            self.continue_page()
+
+    # --- text ----------------------------------------------------------------------
+    def _prop(self, size, weight="normal", style="normal"):
+        return FontProperties(size=size, weight=weight, style=style)
+
+    def _width(self, s, prop):
+        return self.renderer.get_text_width_height_descent(s, prop, ismath=False)[0] / self.dpi
+
+    def wrap(self, s, size, width, weight="normal", style="normal"):
+        """Lines of s no wider than `width` inches, measured in the page's font."""
+        prop = self._prop(size, weight, style)
+        limit = width * 0.985
+        lines = []
+        for para in s.split("\n"):
+            cur = ""
+            for word in para.split(" "):
+                while self._width(word, prop) > limit:      # a word longer than the line
+                    k = len(word)
+                    while k > 1 and self._width(word[:k], prop) > limit:
+                        k -= 1
+                    if cur:
+                        lines.append(cur)
+                        cur = ""
+                    lines.append(word[:k])
+                    word = word[k:]
+                cand = f"{cur} {word}" if cur else word
+                if not cur or self._width(cand, prop) <= limit:
+                    cur = cand
+                else:
+                    lines.append(cur)
+                    cur = word
+            lines.append(cur)
+        return lines
+
+    def line_height(self, size):
+        if size not in self._line_h:
+            t1 = self.fig.text(0, 0, "Ag", fontsize=size)
+            t2 = self.fig.text(0, 0, "Ag\nAg", fontsize=size)
+            h1 = t1.get_window_extent(self.renderer).height / self.dpi
+            h2 = t2.get_window_extent(self.renderer).height / self.dpi
+            t1.remove()
+            t2.remove()
+            self._line_h[size] = (h2 - h1, h1)
+        return self._line_h[size]
+
+    def _place(self, x, y, s, size, **kw):
+        t = self.fig.text(x / self.W, 1 - y / self.H, s.replace("$", r"\$"), fontsize=size, va="top", ha="left", **kw)
+        self.artists.append(t)
+        self.fresh = False
+        return t, t.get_window_extent(self.renderer).height / self.dpi
+
+    def text(self, s, size=8, indent=0.0, gap=0.06, split=True, weight="normal", style="normal", color="black"):
+        """A paragraph at the cursor, wrapped to the page; what does not fit goes on."""
+        lines = self.wrap(s, size, self.width - indent, weight, style)
+        self.split_started = False
+        step, first = self.line_height(size)
+        while lines:
+            fit = 1 + int(max(0.0, self.room - first) / step) if self.room >= first else 0
+            # A short paragraph stays whole, a long one leaves at least two lines behind.
+            whole = not split or (len(lines) <= 4 and not self.split_started)
+            fresh = self.fresh
+            if (fit < len(lines) if whole else fit < min(len(lines), 2)) and not fresh:
+                self.continue_page()
+                continue
+            n = len(lines) if whole else max(1, min(len(lines), fit))
+            while True:              # the estimate checked by measuring what was placed
+                t, h = self._place(LEFT + indent, self.y, "\n".join(lines[:n]), size,
+                                   weight=weight, style=style, color=color)
+                if self.y + h <= self.H - BOTTOM + 1e-3 or (fresh and n == 1):
+                    break
+                t.remove()
+                self.artists.pop()
+                if n == 1 or (whole and not fresh):
+                    n = 0
+                    break
+                n -= 1
+            if n == 0:
+                self.fresh = fresh
+                self.continue_page()
+                continue
+            self.y += h
+            lines = lines[n:]
+            if lines:
+                self.split_started = True
+                self.continue_page()
+        self.y += gap
+
+    # --- figures ---------------------------------------------------------------------
+    def figure(self, height, draw, gap=0.12):
+        """`height` inches for draw(layout, (x, y, w, h)) at the cursor, on this page or the next."""
+        if self.room < height:
+            self.continue_page()
+            height = min(height, self.room)
+        draw(self, (LEFT, self.y, self.width, height))
+        self.fresh = False
+        self.y += height + gap
+
+    def grid(self, rect, rows, cols, pad_l=0.62, pad_r=0.12, pad_t=0.3, pad_b=0.5, **kw):
+        """rows x cols axes in rect (inches from the top-left), each cell leaving room for its
+        tick labels, axis labels and title inside the cell."""
+        x, y, w, h = rect
+        cw, ch = w / cols, h / rows
+        out = []
+        for r in range(rows):
+            for c in range(cols):
+                left = x + c * cw + pad_l
+                top = y + r * ch + pad_t
+                aw, ah = cw - pad_l - pad_r, ch - pad_t - pad_b
+                ax = self.fig.add_axes([left / self.W, 1 - (top + ah) / self.H, aw / self.W, ah / self.H], **kw)
+                self.axes.append(ax)
+                out.append(ax)
+        return out
+
+    def legend(self, handles, labels, rect, height, ncol):
+        """A legend for the whole figure in the strip of `height` inches at the bottom of rect."""
+        x, y, w, h = rect
+        leg = self.fig.legend(handles, labels, loc="center", ncol=ncol, fontsize=7, frameon=False,
+                              bbox_to_anchor=((x + w / 2) / self.W, 1 - (y + h - height / 2) / self.H))
+        self.artists.append(leg)
+        return leg
+
+    # --- tables ----------------------------------------------------------------------
+    def table(self, header, rows, widths, size=7, pad=0.035):
+        """A table at the cursor; columns in proportion to `widths`, cells wrapped by
+        measurement, every row as tall as its tallest cell; the header is repeated on
+        each page the table runs onto."""
+        total = float(sum(widths))
+        cw = [self.width * w / total for w in widths]
+        step, first = self.line_height(size)
+
+        def cells(r, weight):
+            return [self.wrap(str(c), size, w - 2 * pad, weight) for c, w in zip(r, cw)]
+
+        def height(cl):
+            n = max(len(c) for c in cl)
+            return first + (n - 1) * step + 2 * pad
+
+        head = cells(header, "bold")
+
+        def draw_row(cl, weight, shade):
+            h = height(cl)
+            if shade:
+                self.fig.add_artist(Rectangle((LEFT / self.W, 1 - (self.y + h) / self.H), self.width / self.W,
+                                              h / self.H, transform=self.fig.transFigure, color=shade, lw=0, zorder=0))
+            x = LEFT
+            for c, w in zip(cl, cw):
+                if any(c):
+                    self._place(x + pad, self.y + pad, "\n".join(c), size, weight=weight)
+                x += w
+            self.y += h
+            self.fig.add_artist(Line2D([LEFT / self.W, (LEFT + self.width) / self.W], [1 - self.y / self.H] * 2,
+                                       transform=self.fig.transFigure, lw=0.4, color="#999999"))
+
+        if self.room < height(head) + (height(cells(rows[0], "normal")) if rows else 0):
+            self.continue_page()
+        draw_row(head, "bold", "#e8e8e8")
+        for r in rows:
+            cl = cells(r, "normal")
+            if self.room < height(cl):
+                self.continue_page()
+                draw_row(head, "bold", "#e8e8e8")
+            draw_row(cl, "normal", None)
+        self.y += 0.12
+
+    # --- the check and the page's end ------------------------------------------------------
+    def finish(self):
+        if self.fig is None:
+            return
+        r = self.renderer
+        boxes = [(f"{type(t).__name__.lower()} '{t.get_text()[:40] if hasattr(t, 'get_text') else ''}'",
+                  t.get_window_extent(r)) for t in self.artists]
+        boxes += [(f"axes '{ax.get_title()[:30] or i}'", ax.get_tightbbox(r)) for i, ax in enumerate(self.axes)]
+        W, H = self.W * self.dpi, self.H * self.dpi
+        where = f"page {self.pages} ({self.title})"
+        for name, b in boxes:
+            if b.x0 < -1 or b.y0 < -1 or b.x1 > W + 1 or b.y1 > H + 1:
+                self.problems.append(f"{where}: {name} runs off the page")
+        for i in range(len(boxes)):
+            for j in range(i + 1, len(boxes)):
+                a, b = boxes[i][1], boxes[j][1]
+                if min(a.x1, b.x1) - max(a.x0, b.x0) > 1 and min(a.y1, b.y1) - max(a.y0, b.y0) > 1:
+                    self.problems.append(f"{where}: {boxes[i][0]} overlaps {boxes[j][0]}")
+        self.pdf.savefig(self.fig)
+        plt.close(self.fig)
+        self.fig = None
 
 
-def short(v, n=4):
-    try:
-        return f"{float(v):.{n}g}"
-    except ValueError:
-        return v
+def q27(x):
+    s2 = lambda v: math.sinh(v) ** 2
+    return (2 / 3 * s2(3 * x) + 1 / 3) / (s2(x) - s2(x / 2) + s2(2 * x) - s2(2.5 * x) - s2(1.5 * x) + 2 / 3 * s2(3 * x))
+
+
+ENTRIES, PROBLEMS = findings.build()
+BY_ID = {e.id: e for e in ENTRIES}
+
+
+def verdicts(ids):
+    return ", ".join(f"{i} {BY_ID[i].label}" for i in ids)
+
+
+def notes_block(L, notes):
+    for key in ("model", "solver", "inputs", "variants", "criteria"):
+        if notes and key in notes:
+            L.text(f"{key}: {notes[key]}", 7, color="#333333", gap=0.03)
+    L.y += 0.06
+
+
+def entry_verdicts(L, ids):
+    """The verdicts of these findings, as docs/findings.md gives them."""
+    L.text("Findings (docs/findings.md; details on the findings pages):", 8, weight="bold", gap=0.04)
+    for i in ids:
+        e = BY_ID[i]
+        L.text(f"{e.id} ({e.label}). {e.title}: {plain(e.verdict)}", 7.5, indent=0.15, gap=0.05)
+
+
+BENCH = os.path.join(OUT, "bench", "summary.txt")
+BENCH_LINES = open(BENCH).read().splitlines() if os.path.exists(BENCH) else []
+BENCH_KEYS = {"T1b": ["table1 search on a grid 10 times finer"],
+              "T1c": ["table1 search with the paper's setting", "table1 search, its"]}
+
+
+def render_entry(L, e):
+    colour = {"holds": "#1a7f37", "fails": "#b3261e"}.get(e.label.split(" ")[0], "#9a6700")
+    if e.label.startswith("holds only"):
+        colour = "#9a6700"
+    L.need(1.2)
+    L.text(f"{e.id}. {e.title}", 9.5, weight="bold", gap=0.03)
+    if e.flag:
+        L.text(f"REVIEW: {e.flag}", 7.5, color="#b3261e", indent=0.15, gap=0.03)
+    L.text(f"Verdict: {e.label}   (this run: {short_status(e.scenes)})", 8, weight="bold", color=colour,
+           indent=0.15, gap=0.02)
+    L.text(plain(e.verdict), 7.5, indent=0.15, gap=0.04)
+    L.text(f"Printed, {e.where}: {plain(e.printed)}", 7.5, indent=0.15, gap=0.03)
+    L.text(f"Measured: {plain(e.measured)}", 7.5, indent=0.15, gap=0.03)
+    L.text("Evidence: " + plain("; ".join(e.evidence)), 7, color="#333333", indent=0.15, gap=0.03)
+    L.text("Tests: " + (", ".join(e.tests) if e.tests else "none (see the notes)"), 7, color="#333333",
+           indent=0.15, gap=0.03)
+    L.text(f"Command: {e.command}", 7, color="#333333", indent=0.15, gap=0.03)
+    for n in e.notes + e.extra_notes:
+        L.text(f"Note: {plain(n)}", 7, color="#333333", indent=0.15, gap=0.03)
+    for key in BENCH_KEYS.get(e.id, []):
+        for line in BENCH_LINES:
+            if line.startswith(key):
+                L.text(f"This run's make bench (out/bench/summary.txt): {line}", 7, color=INK, indent=0.15, gap=0.03)
+    L.y += 0.1
 
 
 with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
-    # 1. Title and summary.
-    rows = [[r[0], r[1], f"{float(r[2]):.2f}", r[3]] for r in SUMMARY.values()]
-    table_page(pdf, "rocking-q: reproduction report",
-               ["S. Coccia, q-factor for slender masonry structures under out-of-plane seismic loading, Buildings 2025, "
-                "15, 2622.  Every figure and table the paper's text allows is recomputed from its definitions and "
-                "compared with an expected output whose provenance and tolerance are stated beside it (expected/<scene>/"
-                "PROVENANCE.md and TOLERANCES).",
-                f"Generated {datetime.date.today().isoformat()} by make report from {OUT}/.  'match' means every cell of "
-                "every output is within its tolerance; the largest deviation is given against that tolerance."],
-               ["scene", "status", "time [s]", "largest deviation"], rows, widths=[8, 8, 8, 90])
+    L = Layout(pdf)
 
-    # 2. Errata.
-    e = read("errata", "errata.csv")
-    if e:
-        table_page(pdf, "Errata: the printed formulas",
-                   ["Every printed closed form of Sections 2-3 evaluated as printed against the superposition engine "
-                    "(exact solution of the linearised equation for piecewise-constant pulses) on x = 0.05..2.",
-                    "Provenance: derivation by hand, the engine, and an independent Python re-implementation "
-                    "(expected/errata/PROVENANCE.md)."],
-                   ["equation", "quantity", "input", "verdict", "largest diff.", "corrected form"],
-                   [[r[0], r[1], r[2], r[3], short(r[4], 3), r[5]] for r in e[2]], widths=[14, 22, 10, 9, 9, 50], fontsize=6.5)
-    c = read("errata", "claims.csv")
-    if c:
-        table_page(pdf, "Errata: the paper's claims about Figures 4 and 7",
-                   ["Each textual claim measured; 'computed' is the measured quantity behind the verdict."],
-                   ["claim", "paper", "computed", "verdict", "evidence"],
-                   [[r[0], short(r[1]), short(r[2]), r[3], r[4]] for r in c[2]], widths=[30, 8, 9, 14, 52], fontsize=6.5)
+    # 1. Title and summary.
+    L.page("rocking-q: reproduction report",
+           "Compares every output of every scene (make reproduce) with its expected copy under expected/, cell by "
+           "cell, within the tolerances stated in expected/<scene>/TOLERANCES.")
+    L.text("S. Coccia, q-factor for slender masonry structures under out-of-plane seismic loading, Buildings 2025, "
+           "15, 2622.  Every figure and table the paper's text allows is recomputed from its definitions and "
+           "compared with an expected output whose provenance and tolerance are stated beside it (expected/<scene>/"
+           "PROVENANCE.md and TOLERANCES).", 8.5)
+    L.text(f"Generated {datetime.date.today().isoformat()} by make report from {OUT}/.  'match' means every cell of "
+           "every output is within its tolerance; the largest deviation is given against that tolerance.  The "
+           "pages after this one list what the paper gets wrong (the entries of docs/findings.md), then each figure "
+           "and table, the real records and the speed-accuracy trade.", 8.5, gap=0.15)
+    if SUMMARY:
+        L.table(["scene", "status", "time [s]", "largest deviation"],
+                [[r[0], r[1], f"{float(r[2]):.2f}", r[3]] for r in SUMMARY.values()], [8, 8, 8, 70], size=7.5)
+    else:
+        L.text("No comparison: make reproduce writes out/summary.csv.", 8.5)
+
+    # 2. The findings: the same entries as docs/findings.md.
+    L.page("What the paper gets wrong, and how we know",
+           "Lists every erratum and every tested claim of the paper with its verdict and number, read from expected/ "
+           "by tools/findings.py, the same entries as docs/findings.md; 'this run' compares the entry's scenes in "
+           "this run with expected/.")
+    for p in PROBLEMS:
+        L.text(f"tools/findings.py: {p}", 7.5, color="#b3261e")
+    L.table(["#", "finding", "verdict", "this run"],
+            [[e.id, e.title, findings.label_of(e), short_status(e.scenes)] for e in ENTRIES], [5, 52, 22, 14], size=7)
+    for key, title, intro in findings.SECTIONS:
+        group = [e for e in ENTRIES if e.section == key]
+        if not group:
+            continue
+        L.need(2.1)             # the heading, its intro and the start of its first entry
+        L.text(title, 11.5, weight="bold", color=INK, gap=0.04)
+        if intro:
+            L.text(plain(intro), 7.5, gap=0.08)
+        for e in group:
+            render_entry(L, e)
+    L.need(1.0)
+    L.text("Not in the findings: about the harness, not the paper", 11.5, weight="bold", color=INK, gap=0.04)
+    for n in findings.NOT_HERE:
+        L.text("- " + plain(n), 7.5, indent=0.1, gap=0.04)
 
     # 3. Figure 4.
     f4 = read("fig04", "fig04.csv")
     if f4:
-        def draw4(fig, top):
-            ax = axes(fig, top, bottom=0.2)[0]
+        def draw4(L, rect):
+            ax = L.grid(rect, 1, 1, pad_l=0.7, pad_t=0.1)[0]
             x = col(f4, "x")
             for i in range(1, 6):
                 ax.semilogy(x, col(f4, f"q{i}"), label=f"q{i} (eq. {[12, 15, 19, 22, 24][i - 1]})")
             ax.semilogy(x, col(f4, "q_min"), "k", lw=2.5, label="min")
             ax.axhline(2, ls="--", c="gray", label="q = 2 (cases 3, 5 need q ≥ 2)")
             ax.set_xlabel("x = p·to  [-]"); ax.set_ylabel("q = PGA/(α g)  [-]"); ax.set_ylim(1, 100)
-            ax.grid(True, which="both", alpha=0.3); ax.legend(fontsize=7)
+            ax.grid(True, which="both", alpha=0.3); ax.legend(fontsize=7, loc="upper right")
+        L.page("Figure 4: q1..q5 against x = p·to",
+               "Compares q1..q5 of the closed forms (eqs. 12-24) and their minimum against x = p·to with the paper's "
+               "Figure 4, whose claims are that the minimum is q4 below x = 0.51 and q2 above and that cases 3 and 5 "
+               f"need q ≥ 2 ({verdicts(['C1', 'C2'])}); {run_status(['fig04'])}.")
+        L.text("Reproduction: " + status_line("fig04"), 8)
+        notes_block(L, f4[0])
+        L.figure(5.0, draw4)
         p4 = read("fig04", "fig04_points.csv")
-        page(pdf, "Figure 4: q1..q5 against x = p·to", "the minimum of q1..q5 is q4 for x < 0.51 and q2 above; "
-             "cases 3 and 5 need q ≥ 2.", "fig04", draw4, notes_from=f4[0],
-             extra=[f"Marked points: " + "; ".join(f"{r[0]} at x = {float(r[1]):.4f}" for r in p4[2][:4])] if p4 else None)
+        if p4:
+            L.text("Marked points: " + "; ".join(f"{r[0]} at x = {float(r[1]):.4f}" for r in p4[2][:4]) + ".", 7.5)
+        entry_verdicts(L, ["C1", "C2"])
 
     # 4. Figure 5.
-    h5, t5, s5 = read("fig05", "fig05_histories.csv"), read("fig05", "fig05_table.csv"), read("fig05", "fig05_summary.csv")
+    h5, s5 = read("fig05", "fig05_histories.csv"), read("fig05", "fig05_summary.csv")
     if h5:
-        def draw5(fig, top):
-            axs = axes(fig, top, 3, 3, bottom=0.3)
+        def draw5(L, rect):
+            axs = L.grid(rect, 3, 3, pad_l=0.5, pad_t=0.25, pad_b=0.42)
             t = col(h5, "t_over_to")
             for ci, case in enumerate([1, 2, 4]):
                 for xi, xv in enumerate(["0.2", "0.5", "0.8"]):
@@ -212,25 +486,31 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                     ax.axvline(3 if case == 4 else 2, c="gray", ls=":")
                     ax.set_ylim(-2, 2); ax.set_title(f"case {case}, x = {xv}", fontsize=8)
                     ax.tick_params(labelsize=6)
-                    if ci == 2: ax.set_xlabel("t/to [-]", fontsize=7)
-                    if xi == 0: ax.set_ylabel("θ/α [-]", fontsize=7)
-            axs[0].legend(fontsize=6)
-        extra = ["Collapses below the closed-form PGA (Rd < 1), x = 0.2..0.8, all cases:"]
+                    ax.set_xlabel("t/to [-]", fontsize=7)
+                    if xi == 0:
+                        ax.set_ylabel("θ/α [-]", fontsize=7)
+            axs[0].legend(fontsize=6, loc="lower left")
+        L.page("Figure 5: θ/α below the collapse PGA (Rd < 1)",
+               "Compares θ/α against t/to under the reduced inputs PGA = q_i α g Rd (Rd < 1; exact solver with "
+               "impacts, restitution 1) with the paper's Figure 5, whose claim is no collapse for Rd < 1 "
+               f"({verdicts(['F5a', 'F5b', 'F5c', 'F5d'])}); {run_status(['fig05'])}.")
+        L.text("Reproduction: " + status_line("fig05"), 8)
+        notes_block(L, h5[0])
+        L.text("Red dashed: θ = ±α; dotted: t_fin.", 7.5)
+        L.figure(6.0, draw5)
         if s5:
-            extra += ["  " + "; ".join(f"case {r[0]} {r[1]}: {r[3]}/{r[2]}" for r in s5[2] if r[1] == crit)
-                      for crit in ("final-rotation", "peak-rotation", "overturning")]
-        w5 = read("fig05", "fig05_wide.csv")
-        if w5:
-            extra.append("Paper's criterion on x = 0.05..3: " + "; ".join(
-                f"case {r[0]}: {r[2]} of {r[1]} collapse (from x = {short(r[4], 3)})" for r in w5[2]))
-        page(pdf, "Figure 5: θ/α below the collapse PGA (Rd < 1)", "no collapse for Rd < 1 (impacts without "
-             "dissipation, x = 0.2..0.8); the closed form is conservative.", "fig05", draw5, extra=extra, notes_from=h5[0])
+            L.text("Collapses below the closed-form PGA (Rd < 1), x = 0.2..0.8 (fig05_summary.csv):", 8, gap=0.03)
+            for crit in ("final-rotation", "peak-rotation", "overturning"):
+                L.text(f"{crit}: " + "; ".join(f"case {r[0]} {r[3]}/{r[2]}" for r in s5[2] if r[1] == crit), 7.5,
+                       indent=0.15, gap=0.03)
+            L.y += 0.06
+        entry_verdicts(L, ["F5a", "F5b", "F5c", "F5d"])
 
     # 5. Figure 6.
-    f6, c6 = read("fig06", "fig06.csv"), read("fig06", "fig06_claims.csv")
+    f6 = read("fig06", "fig06.csv")
     if f6:
-        def draw6(fig, top):
-            axs = axes(fig, top, 1, 3, bottom=0.45)
+        def draw6(L, rect):
+            axs = L.grid(rect, 1, 3, pad_l=0.55, pad_t=0.28)
             a, to, H, full = col(f6, "alpha"), col(f6, "to"), col(f6, "H"), col(f6, "theta_tfin_full")
             for ax, tov in zip(axs, [0.1, 0.25, 0.5]):
                 for av in [0.05, 0.1, 0.15, 0.2, 0.25]:
@@ -239,140 +519,168 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                 ax.axhline(1, c="k", ls="--", lw=0.8)
                 ax.set_title(f"to = {tov} s", fontsize=8); ax.set_xlabel("H (half-height) [m]", fontsize=7)
                 ax.set_ylim(0.8, 1.01); ax.tick_params(labelsize=6)
-            axs[0].set_ylabel("θ(t_fin)/α [-]", fontsize=7); axs[0].legend(fontsize=6)
-        extra = [f"{r[0]}: paper {short(r[1])}, computed {short(r[2])}: {r[3]}" for r in c6[2]] if c6 else None
-        page(pdf, "Figure 6: full eq. 1 against linearised eq. 3", "eq. 1 always gives less rotation; about 16 % less at "
-             "H = 1 m and α = 0.25; negligible above H = 3 m.", "fig06", draw6, extra=extra, notes_from=f6[0])
+            axs[0].set_ylabel("θ(t_fin)/α, full eq. 1 [-]", fontsize=7); axs[0].legend(fontsize=6, loc="lower right")
+        L.page("Figure 6: full eq. 1 against linearised eq. 3",
+               "Compares θ(t_fin)/α of the full eq. 1 with the linearised eq. 3 (dashed, 1 at the collapse PGA) for "
+               "case 2 against the half-height H, as the paper's Figure 6, whose claims are that eq. 1 always gives "
+               "less rotation, about 16 % less at H = 1 m and α = 0.25, negligibly less above 3 m, with p ≈ 1.6 s⁻¹ "
+               f"at H = 1 m ({verdicts(['F6a', 'F6b', 'F6c', 'F6d'])}); {run_status(['fig06'])}.")
+        L.text("Reproduction: " + status_line("fig06"), 8)
+        notes_block(L, f6[0])
+        L.figure(3.3, draw6)
+        entry_verdicts(L, ["F6a", "F6b", "F6c", "F6d"])
 
     # 6. Figure 7.
     f7 = read("fig07", "fig07.csv")
     if f7:
-        def draw7(fig, top):
-            axs = axes(fig, top, 3, 1, bottom=0.1)
+        def draw7(L, rect):
+            axs = L.grid(rect, 3, 1, pad_l=0.7, pad_t=0.28, pad_b=0.45)
             x = col(f7, "x")
             for ax, case in zip(axs, [1, 2, 4]):
                 for n in [2, 4, 6, 8, 10, 12]:
                     ax.semilogy(x, col(f7, f"case{case}_N{n}"), lw=2.5 if n == 6 else 1, label=f"N = {n}")
                 ax.set_title(f"case {case}" + {2: " (N = 6: eq. 27)", 4: " (N = 6: eq. 28)", 1: " (N = 6: Coccia & Como)"}[case], fontsize=8)
                 ax.set_ylim(1, 100); ax.set_ylabel("q [-]", fontsize=7); ax.grid(True, alpha=0.3); ax.tick_params(labelsize=6)
-            axs[-1].set_xlabel("x = p·to [-]"); axs[0].legend(fontsize=6, ncol=3)
-        page(pdf, "Figure 7: q with N pulses", "q decreases with the number of pulses and stabilises at 6 + 1; eq. 27 is "
-             "the lowest.", "fig07", draw7, notes_from=f7[0],
-             extra=["See the errata claims: the decrease settles only for x above 0.2-0.5 (q ~ 2/(M1 x²) as x → 0)."])
+                ax.set_xlabel("x = p·to [-]", fontsize=7)
+            axs[0].legend(fontsize=6, ncol=3, loc="upper right")
+        L.page("Figure 7: q with N pulses",
+               "Compares q of cases 1, 2 and 4 repeated to N = 2..12 pulses (the superposition engine) with the "
+               "paper's Figure 7, whose claims are that q decreases with N, settles at 6 + 1 pulses and is lowest "
+               f"for eq. 27 ({verdicts(['C3', 'C4', 'C5'])}); {run_status(['fig07'])}.")
+        L.text("Reproduction: " + status_line("fig07"), 8)
+        notes_block(L, f7[0])
+        L.figure(7.2, draw7)
+        entry_verdicts(L, ["C3", "C4", "C5"])
 
     # 7. Figure 8.
     f8, s8 = read("fig08", "fig08.csv"), read("fig08", "fig08_summary.csv")
     if f8:
-        def draw8(fig, top):
-            ax = axes(fig, top, bottom=0.3)[0]
+        def draw8(L, rect):
+            ax = L.grid(rect, 1, 1, pad_l=0.7, pad_t=0.1)[0]
             w = col(f8, "wp_over_p")
             ax.semilogy(w, col(f8, "q_eq27"), "r", lw=2.5, label="eq. 27")
             ax.semilogy(w, col(f8, "q_coccia_como"), "b", label="Coccia & Como")
             ax.semilogy(w, col(f8, "makris_lin_e1"), "k.-", label="one-sine threshold, linearised, e = 1")
             ax.semilogy(w, col(f8, "makris_lin_housner_a0.10"), "k--", lw=0.8, label="linearised, Housner e (α 0.1)")
+            ax.semilogy(w, col(f8, "makris_full_e1_a0.25"), "g:", lw=1, label="full, e = 1 (α 0.25)")
             ax.semilogy(w, col(f8, "makris_full_housner_a0.25"), "m:", label="full, Housner e (α 0.25)")
             ax.semilogy(w, col(f8, "makris_fit"), c="orange", ls="-.", label="1 + ω/(6p)")
-            ax.set_xlabel("ω_p/p = π/(p·to) [-]"); ax.set_ylabel("q or a_p/(α g) [-]"); ax.set_ylim(0.9, 10)
-            ax.grid(True, which="both", alpha=0.3); ax.legend(fontsize=7)
-        extra = [f"{r[0]}: {short(r[1])}" for r in s8[2]] if s8 else None
-        page(pdf, "Figure 8: eq. 27 against the one-sine overturning curve", "eq. 27 offers a safety margin against the "
-             "procedure of Makris et al., particularly for high ω/p.", "fig08", draw8, extra=extra, notes_from=f8[0])
+            ax.set_xlabel("ω_p/p = π/(p·to) [-]"); ax.set_ylabel("q or a_p/(α g) [-]"); ax.set_ylim(0.9, 30)
+            ax.grid(True, which="both", alpha=0.3); ax.legend(fontsize=7, loc="upper left")
+        L.page("Figure 8: eq. 27 against the one-sine overturning curve",
+               "Compares eq. 27 against ω/p = π/(p·to) with the one-sine overturning threshold of Makris et al. "
+               "(computed here, four variants) and Coccia & Como, as the paper's Figure 8, whose claim is that eq. 27 "
+               f"offers a safety margin, particularly at high ω/p ({verdicts(['F8'])}); {run_status(['fig08'])}.")
+        L.text("Reproduction: " + status_line("fig08"), 8)
+        notes_block(L, f8[0])
+        L.figure(5.2, draw8)
+        if s8:
+            L.text("fig08_summary.csv: " + "; ".join(f"{r[0]}: {short(r[1])}" for r in s8[2]) + ".", 7.5)
+        entry_verdicts(L, ["F8"])
 
     # 8. Tables 1 and 2.
-    t1, t2, tc = read("table1", "table1.csv"), read("table2", "table2.csv"), read("table2", "table2_columns.csv")
+    t1, t2 = read("table1", "table1.csv"), read("table2", "table2.csv")
     if t1 and t2:
-        agree1 = sum(1 for r in t1[2] if r[5] == "yes")
-        agree2 = sum(1 for r in t2[2] if r[5] == "yes")
-        bad2 = [r for r in t2[2] if r[5] != "yes"]
-        cols_printed = sum(1 for r in tc[2] if r[7] == "yes") if tc else 0
-        cols_swapped = sum(1 for r in tc[2] if r[8] == "yes") if tc else 0
-        intro = [f"Table 1: q = PGA/(α·981) agrees with the printed q in {agree1} of {len(t1[2])} entries; p is the "
-                 "paper's (the 20 ITACA records are not available here).",
-                 f"Table 2: to_5 = π|PGV|/PGA agrees in {agree2} of {len(t2[2])} rows" +
-                 ("; " + "; ".join(f"row {r[0]}: computed {float(r[3]):.4f}, printed {float(r[4]):.3f}" for r in bad2) if bad2 else "") + ".",
-                 f"Eqs. 29-30 require to_3/to_4 = π/2: {cols_printed} of 20 printed rows satisfy it; with to_1/to_2 "
-                 f"instead, {cols_swapped} of 20: the printed columns to_1..to_4 appear swapped in pairs.",
-                 "Below: the same pipeline on the real records available here (NOT the paper's records): PGA, PGV, to_5, "
-                 "and the smallest p overturning the block for each α (linearised, exact solver, Housner restitution, "
-                 "overturning; brackets confirmed by GSL rk8pd at 1e-13 in make test)."]
+        L.page("Tables 1 and 2",
+               "Compares q = PGA/(α g) and to_5 = π PGV/PGA recomputed from Table 1's columns, and eqs. 29-30 on Table "
+               "2's columns, with the printed Tables 1 and 2, then runs the same pipeline on the real records "
+               f"available here, not the paper's ({verdicts(['T1a', 'T1b', 'T1c', 'T2a', 'T2b'])}); "
+               f"{run_status(['table1', 'table2'])}.")
+        L.text("Reproduction: " + status_line("table1"), 8, gap=0.02)
+        L.text("Reproduction: " + status_line("table2"), 8)
+        entry_verdicts(L, ["T1a", "T1b", "T1c", "T2a", "T2b"])
+        L.text("Below: the same pipeline on the real records available here (NOT the paper's records): PGA, PGV, "
+               "to_5, and the smallest p overturning the block for each α on the search's 1 % grid (linearised, exact "
+               "solver, Housner restitution, overturning; brackets confirmed by GSL rk8pd at 1e-13 in make test).",
+               8)
         r1, r2 = read("table1", "table1_records.csv"), read("table2", "table2_records.csv")
-        rows = []
         if r1 and r2:
             ps = {}
             for r in r1[2]:
                 ps.setdefault(r[1], []).append(short(r[5], 4) if not r[5].startswith("none") else "-")
-            for r in r2[2]:
-                rows.append([r[1], short(r[2], 4), short(r[3], 4), short(r[9], 3)] + ps.get(r[1], [])[:5])
+            rows = [[r[1], short(r[2], 4), short(r[3], 4), short(r[9], 3)] + ps.get(r[1], [])[:5] for r in r2[2]]
+            L.table(["record", "PGA cm/s²", "PGV cm/s", "to_5 s", "p α.05", "p α.10", "p α.15", "p α.20", "p α.25"],
+                    rows, [28, 9, 9, 8, 8, 8, 8, 8, 8], size=6.5)
         else:
-            intro.append("(records folder absent: no record rows)")
-        table_page(pdf, "Tables 1 and 2", intro, ["record", "PGA cm/s²", "PGV cm/s", "to_5 s", "p α.05", "p α.10",
-                                                  "p α.15", "p α.20", "p α.25"], rows,
-                   widths=[28, 9, 9, 8, 8, 8, 8, 8, 8], fontsize=6.5)
+            L.text("(records folder absent: no record rows)", 8)
         if r2:
-            table_page(pdf, "Table 2 on the available records: the eleven half-periods [s]",
-                       ["Definitions as in Section 4 of the paper (src/records/measures.hpp); verified on a cosine, a "
-                        "half-sine pulse and a Ricker wavelet; every value re-implemented with numpy in make test."],
-                       ["record"] + [f"to_{k}" for k in range(1, 12)],
-                       [[r[1]] + [short(v, 3) for v in r[5:16]] for r in r2[2]], widths=[26] + [6] * 11, fontsize=6)
+            L.page("Table 2 on the available records: the eleven half-periods [s]",
+                   "Compares the eleven definitions of the half-period (Section 4, src/records/measures.hpp) on the "
+                   "real records available here, not the paper's, which feed the record points of Figures 11 and 12; "
+                   f"{run_status(['table2'])}.")
+            L.text("Verified on a cosine, a half-sine pulse and a Ricker wavelet; every value re-implemented with "
+                   "numpy in make test.", 8)
+            L.table(["record"] + [f"to_{k}" for k in range(1, 12)],
+                    [[r[1]] + [short(v, 3) for v in r[5:16]] for r in r2[2]], [26] + [6] * 11, size=6.5)
 
     # 9. Figures 11 and 12.
     p11, n11, n11r = read("fig11", "fig11_points.csv"), read("fig11", "fig11_counts.csv"), read("fig11", "fig11_counts_records.csv")
     if p11:
-        def draw11(fig, top):
-            axs = axes(fig, top, 4, 3, bottom=0.1)
-            import math
-
-            def q27(x):
-                s2 = lambda v: math.sinh(v) ** 2
-                return (2 / 3 * s2(3 * x) + 1 / 3) / (s2(x) - s2(x / 2) + s2(2 * x) - s2(2.5 * x) - s2(1.5 * x) + 2 / 3 * s2(3 * x))
+        def draw11(L, rect):
+            axs = L.grid(rect, 4, 3, pad_l=0.5, pad_t=0.22, pad_b=0.4)
             xs = [0.05 + 0.01 * i for i in range(300)]
             rec = read("fig11", "fig11_records.csv")
             for k in range(1, 12):
                 ax = axs[k - 1]
                 pts = [(float(r[7]), float(r[4])) for r in p11[2] if int(r[2]) == k]
-                ax.semilogy([p[0] for p in pts], [p[1] for p in pts], "bo", ms=2, mfc="none")
+                ax.semilogy([p[0] for p in pts], [p[1] for p in pts], "bo", ms=2, mfc="none", label="paper")
                 if rec:
                     pr = [(float(r[7]), float(r[4])) for r in rec[2] if int(r[2]) == k]
-                    ax.semilogy([p[0] for p in pr], [p[1] for p in pr], "^", c="darkorange", ms=2)
-                ax.semilogy(xs, [q27(v) for v in xs], "r")
+                    ax.semilogy([p[0] for p in pr], [p[1] for p in pr], "^", c="darkorange", ms=2, label="records here")
+                ax.semilogy(xs, [q27(v) for v in xs], "r", label="eq. 27")
                 ax.set_xlim(0, 3); ax.set_ylim(1, 40); ax.set_title(f"to_{k}", fontsize=7); ax.tick_params(labelsize=5)
                 ax.set_xlabel("x = p·to_k [-]", fontsize=6); ax.set_ylabel("q [-]", fontsize=6)
             axs[11].axis("off")
-        extra = ["Non-conservative points (eq. 27 above the collapse q), paper: " +
-                 ", ".join(f"to_{r[1]}: {r[3]}/{r[2]}" for r in n11[2])]
+            h, lab = axs[0].get_legend_handles_labels()
+            axs[11].legend(h, lab, loc="center", fontsize=7)
+        L.page("Figure 11: the eleven definitions of to against eq. 27",
+               "Compares the points (p·to_k, q) of Tables 1-2 and of the real records here with eq. 27 for each "
+               "definition to_k, as the paper's Figure 11, whose claim is that with to_5 nearly all points are "
+               f"conservative ({verdicts(['F11'])}); {run_status(['fig11'])}.")
+        L.text("Reproduction: " + status_line("fig11"), 8)
+        notes_block(L, p11[0])
+        L.figure(7.4, draw11)
+        L.text("Non-conservative points (eq. 27 above the collapse q), paper: " +
+               ", ".join(f"to_{r[1]}: {r[3]}/{r[2]}" for r in n11[2]) + ".", 7.5, gap=0.03)
         if n11r:
-            extra.append("Available records: " + ", ".join(f"to_{r[1]}: {r[3]}/{r[2]}" for r in n11r[2]))
-        page(pdf, "Figure 11: the eleven definitions of to against eq. 27", "with to_5, nearly all points are conservative.",
-             "fig11", draw11, extra=extra, notes_from=p11[0])
+            L.text("Available records: " + ", ".join(f"to_{r[1]}: {r[3]}/{r[2]}" for r in n11r[2]) + ".", 7.5)
+        entry_verdicts(L, ["F11"])
     s12 = read("fig12", "fig12_summary.csv")
     if s12:
         p12 = read("fig12", "fig12_points.csv")
 
-        def draw12(fig, top):
-            ax = axes(fig, top, bottom=0.3)[0]
+        def draw12(L, rect):
+            ax = L.grid(rect, 1, 1, pad_l=0.7, pad_t=0.1)[0]
             ax.semilogy(col(p12, "x"), col(p12, "q"), "bo", mfc="none", ms=4, label="paper")
             r12 = read("fig12", "fig12_records.csv")
             if r12:
                 ax.semilogy(col(r12, "x"), col(r12, "q"), "^", c="darkorange", ms=4, label="available records")
-            xs = sorted(col(p12, "x"))
-            import math
             grid = [0.1 + 0.01 * i for i in range(190)]
-            s2 = lambda v: math.sinh(v) ** 2
-            q27 = [(2 / 3 * s2(3 * x) + 1 / 3) / (s2(x) - s2(x / 2) + s2(2 * x) - s2(2.5 * x) - s2(1.5 * x) + 2 / 3 * s2(3 * x)) for x in grid]
-            ax.semilogy(grid, q27, "r", label="eq. 27")
+            ax.semilogy(grid, [q27(x) for x in grid], "r", label="eq. 27")
             ax.axhline(2, c="k", ls="--", label="code q = 2")
             ax.set_xlabel("x = p·to_5 [-]"); ax.set_ylabel("q [-]"); ax.set_ylim(1, 40); ax.set_xlim(0, 2)
-            ax.grid(True, which="both", alpha=0.3); ax.legend(fontsize=7)
-        page(pdf, "Figure 12: to_5 and the code's q = 2", "for pto above 0.7 the Italian code's q = 2 is not conservative.",
-             "fig12", draw12, extra=[f"{r[0]}: {short(r[1])}" for r in s12[2]], notes_from=p12[0])
+            ax.grid(True, which="both", alpha=0.3); ax.legend(fontsize=7, loc="upper right")
+        L.page("Figure 12: to_5 and the code's q = 2",
+               "Compares the points (p·to_5, q) with eq. 27 and the Italian code's q = 2, as the paper's Figure 12, "
+               f"whose claim is that q = 2 is not conservative for p·to above 0.7 ({verdicts(['F12'])}); "
+               f"{run_status(['fig12'])}.")
+        L.text("Reproduction: " + status_line("fig12"), 8)
+        notes_block(L, p12[0])
+        L.figure(5.2, draw12)
+        L.text("fig12_summary.csv: " + "; ".join(f"{r[0]}: {short(r[1])}" for r in s12[2]) + ".", 7.5)
+        entry_verdicts(L, ["F12"])
 
     # 10. Work-precision.
     wp = os.path.join(OUT, "bench", "work_precision.csv")
+    compares_wp = ("Compares each solver's error against its CPU time and its right-hand-side evaluations (make bench) "
+                   "on a pulse scene with a closed-form truth and on the Amatrice 2016 record at Norcia; not a claim of "
+                   "the paper, whose integrations used MATLAB's ode45 at relative tolerance 1e-6 (T1c).")
     if os.path.exists(wp):
         rows = list(csv.reader(l for l in open(wp) if not l.startswith("#")))[1:]
 
-        def drawwp(fig, top):
-            axs = axes(fig, top, 2, 2, bottom=0.2)
+        def drawwp(L, rect):
+            x, y, w, h = rect
+            axs = L.grid((x, y, w, h - 0.3), 2, 2, pad_l=0.65, pad_t=0.3, pad_b=0.5)
             for si, scene in enumerate(["pulse", "record"]):
                 for solver in ["dopri5", "rkf78", "bulirsch-stoer", "gsl-rk8pd"]:
                     pts = [(float(r[4]), float(r[5]), max(float(r[3]), 1e-17)) for r in rows if r[0] == scene and r[1] == solver]
@@ -383,18 +691,28 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                 ex = [r for r in rows if r[0] == scene and r[1] == "exact"]
                 if ex:
                     axs[2 * si].loglog([float(ex[0][4])], [max(float(ex[0][3]), 1e-17)], "ko", label="exact")
-                axs[2 * si].set_title(f"{scene}: error/α against CPU time [s]", fontsize=8)
+                axs[2 * si].set_title(f"{scene}: error/α against CPU time", fontsize=8)
                 axs[2 * si + 1].set_title(f"{scene}: error/α against RHS evaluations", fontsize=8)
                 axs[2 * si].set_xlabel("CPU time per run [s]", fontsize=7)
                 axs[2 * si + 1].set_xlabel("right-hand-side evaluations [-]", fontsize=7)
                 for ax in axs[2 * si: 2 * si + 2]:
                     ax.set_ylabel("error / α [-]", fontsize=7)
                     ax.grid(True, which="both", alpha=0.3); ax.tick_params(labelsize=6)
-            axs[0].legend(fontsize=6)
-        summary = os.path.join(OUT, "bench", "summary.txt")
-        extra = open(summary).read().splitlines() if os.path.exists(summary) else None
-        page(pdf, "The speed-accuracy trade (make bench)", "(not a claim of the paper) MATLAB's ode45 at relative "
-             "tolerance 1e-6 was used for every integration.", "bench", drawwp, extra=extra)
+            handles, labels = axs[0].get_legend_handles_labels()
+            L.legend(handles, labels, rect, 0.3, ncol=5)
+        L.page("The speed-accuracy trade (make bench)", compares_wp)
+        L.text("Each solver swept from rtol 1e-3 to 1e-12 (atol = rtol α); the exact solver is one point. Pulse scene: "
+               "error |θ(t_fin) − (S1)|/α; record: error in max|θ|/α against the exact solver.", 8)
+        L.figure(6.8, drawwp)
+        if BENCH_LINES:
+            L.text("out/bench/summary.txt:", 8, weight="bold", gap=0.04)
+            for line in BENCH_LINES:
+                L.text(line, 7, indent=0.1, gap=0.025)
     else:
-        table_page(pdf, "The speed-accuracy trade", ["Run make bench to include the work-precision diagram."], ["-"], [["-"]])
-print(f"wrote {os.path.join(OUT, 'report.pdf')}")
+        L.page("The speed-accuracy trade", compares_wp)
+        L.text("Run make bench to include the work-precision diagram.", 8.5)
+    L.finish()
+
+for p in L.problems:
+    print(f"report: layout: {p}", file=sys.stderr)
+print(f"wrote {os.path.join(OUT, 'report.pdf')} ({L.pages} pages)")
