@@ -1020,7 +1020,7 @@ TEST(Dynamics, OnRandomInputsEverySolverAgreesWhereTheMotionIsWellConditioned) {
     // impact (expect_agreement; since 2026-11-22), the ODE ones to
     // 1e-7 alpha (their 1e-12 times 1e4; measured: rkf78 1.1e-10, rk8pd
     // 2e-11, Bulirsch-Stoer 4.7e-9).  Dormand-Prince is left out: stepping
-    // across the samples it converges slowly on records (README).  Elsewhere
+    // across the samples it converges slowly on records (docs/solvers.md).  Elsewhere
     // (the probe moves the answer) no solver's answer is the truth: rocking
     // is unstable between impacts.  Comparing the solvers at random this way
     // found two bugs of the general path that hid an excursion inside one

@@ -143,7 +143,8 @@ TEST(RecordKernel, WithinRoundingOfItsExtendedPrecisionRun) {
     // motion's sensitivity.  On these inputs theta stays within 1e-12 alpha
     // and impact times within 1e-10 s (measured: 4e-12 s; a time carries
     // theta's rounding divided by theta' at the impact, then amplified); on
-    // some records the sensitivity is far larger (README: the truth on a record).
+    // some records the sensitivity is far larger (docs/solvers.md:
+    // the truth out of reach of double precision).
     for (double scale : {0.12, 0.25})
         for (double p : {1.5, 3.0}) {
             const SampledInput rec = synthetic(0.005, 14.0, scale);

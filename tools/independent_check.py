@@ -1,4 +1,4 @@
-"""Shared helpers for the independent checks of expected/ (see README: "Expected outputs").
+"""Shared helpers for the independent checks of expected/ (see docs/verification.md).
 
 Each expected/<scene>/independent.py recomputes the scene's values with a second
 implementation (mpmath at 30+ digits, or plain Python floats for formula-by-formula
