@@ -8,7 +8,7 @@ shows it, and which CSV file, row and column hold the verdict.  The verdicts and
 are not written here: they are read from the expected outputs (expected/<scene>/*.csv)
 each time, so the document cannot drift from them.  The two findings that only `make
 bench` measures (its output is not kept in expected/) are stated with the date and file
-they come from (README.md, "Solvers and the speed-accuracy trade").
+they come from (docs/performance.md).
 
     tools/findings.py --markdown > docs/findings.md     write the document
     tools/findings.py --check docs/findings.md          exit 1 when it is out of date
@@ -816,17 +816,17 @@ def _t1b(d):
     return dict(label="fails (not a bound)",
                 verdict=f"on the grid 10 times finer the block overturns below the search's p "
                         f"in 35 of the {len(bracket)} rows with a bracket, by a median 2.4 % and at most 27 %; rk8pd "
-                        f"at rtol 1e-13 agrees at all 35 (measured 2026-11-22, README). The 27 %: under Norcia's "
+                        f"at rtol 1e-13 agrees at all 35 (measured 2026-11-22 and 2026-11-24, docs/performance.md). The 27 %: under Norcia's "
                         f"2016-08-24 02:33 NS record at α = 0.1 the search gives {g(nrc['p_collapse'], 5)} rad/s, yet "
-                        f"the block overturns at 4.0018 rad/s, at 25.5377207 s after 33 impacts, in the exact "
+                        f"the block overturns at p = 4.001751175 rad/s, at 25.5377207 s after 33 impacts, in the exact "
                         f"solver (both paths), rk8pd and rkf78. A block whose p is below a record's Table 1 value is "
                         f"therefore not shown safe by it.",
                 evidence=[ev(T1R, "row `IT.NRC HGN 20160824_023329`, `alpha = 0.10`", "p_collapse",
                              g(nrc["p_collapse"], 5)),
                           f"`out/bench/table1_finer_grid.csv` (`make bench`, not kept in expected/), columns "
                           f"`relative_drop` and `rk8pd_confirms`: 35 rows with a drop, median 0.024, at most 0.27, "
-                          f"rk8pd_confirms = 1 in all 35 (README.md, \"Table 1's p is the first collapse on a 1 % "
-                          f"grid, not a bound\", 2026-11-22)"])
+                          f"rk8pd_confirms = 1 in all 35 (2026-11-22 and 2026-11-24; docs/performance.md, \"The Table 1 "
+                          f"pipeline\")"])
 
 
 @entry(id="T1c", section="table1", scenes=["table1"],
@@ -852,13 +852,14 @@ def _t1c(d):
                 verdict=f"on these records, at the paper's setting p moves by a median 0.25 % and at most 27 % "
                         f"from the exact solver's; 64 of the {len(bracket)} rows differ by more than the search's "
                         f"1e-4, and at 61 of them rk8pd at rtol 1e-13 contradicts Dormand-Prince's own bracket (it "
-                        f"confirms 3: other boundaries of the non-interval set). The whole search costs about 13 "
-                        f"times the exact solver's CPU time (9.0 s against 0.69 s) (measured 2026-11-22, README).",
+                        f"confirms 3: other boundaries of the non-interval set). The whole search costs 13 to 14.5 "
+                        f"times the exact solver's CPU time (9.0 s against 0.69 s on 2026-11-22, 10.4 s against "
+                        f"0.73 s on 2026-11-24; docs/performance.md).",
                 evidence=[f"`out/bench/table1_paper_setting.csv` (`make bench`, not kept in expected/), columns "
                           f"`relative_difference` and `rk8pd_on_dopri5_bracket`: median 2.5e-3, at most 0.27; 64 "
                           f"rows above 1e-4, rk8pd_on_dopri5_bracket = 0 in 61 and 1 in 3; `out/bench/summary.txt`, "
-                          f"line `table1 search, its 80 searches in CPU seconds` (README.md, \"The paper's solver "
-                          f"setting does not give converged p\", 2026-11-22)"])
+                          f"line `table1 search, its 80 searches in CPU seconds` (docs/performance.md, \"The Table 1 "
+                          f"pipeline\")"])
 
 
 # --- Table 2 ----------------------------------------------------------------------------
@@ -912,8 +913,6 @@ def _t2b(d):
                         f"the largest-area pulse and of the PGA pulse would be when they are the same pulse. The "
                         f"printed columns appear swapped in pairs (to_1 ↔ to_3, to_2 ↔ to_4); the harness follows "
                         f"the text's definitions (`src/records/measures.hpp`).",
-                notes=[f"`expected/table2/PROVENANCE.md` says to_3 = to_4 in 11 rows; the transcribed table (and the "
-                       f"text of the paper) has {equal}: rows {', '.join(equal_rows)}."] if equal != 11 else [],
                 evidence=[ev(T2C, f"all {len(rows)} rows", "eqs29_30_as_printed", f"yes in {printed}"),
                           ev(T2C, f"all {len(rows)} rows", "eqs29_30_with_to1_to2", f"yes in {swapped}")])
 
@@ -1005,13 +1004,13 @@ def _f12(d):
 COVERED = [E, C, "fig04/fig04_points.csv", S5, W5, C6F, S8, T1, T2, T2C, N11, N11R, S12]
 COVERED_EXEMPT = {"fig04/fig04_points.csv": {"q1 = 2", "q2 = 2", "q4 = 2"}}  # Figure 4's marks, not claims
 
-# Findings of README.md and the PROVENANCE files that are about the harness, not the paper.
+# Findings of docs/ and the PROVENANCE files that are about the harness, not the paper.
 NOT_HERE = [
-    "The solvers and the speed-accuracy trade (README.md, \"Solvers and the speed-accuracy trade\", "
+    "The solvers and the speed-accuracy trade (docs/solvers.md, docs/performance.md, "
     "`make bench`, `out/bench/summary.txt`): the exact solver against Dormand-Prince, the record kernel, why three "
     "ODE solvers step from sample to sample, and that the truth on a record can be out of reach of any "
     "double-precision solver.",
-    "Hidden excursions and absurd inputs (README.md, \"Hidden excursions\", \"Absurd inputs\", 2026-11-21): faults "
+    "Hidden excursions and absurd inputs (docs/solvers.md, \"Hidden excursions\", \"Absurd and extreme inputs\", 2026-11-21): faults "
     "of the harness, found and fixed; no expected output changed.",
     "The history of Table 1's search on the records here (`expected/table1/PROVENANCE.md`): the record kernel's "
     "uplift fix, and the one value the move to the kernel changed (IT.AQK HNE, α = 0.05, p 1.0606 → 1.0464 "
@@ -1130,7 +1129,7 @@ def markdown(entries):
             w("")
     w("## Not in this file")
     w("")
-    w("Findings of `README.md` and the `PROVENANCE.md` files that are about the harness rather than the paper:")
+    w("Findings of `docs/` and the `PROVENANCE.md` files that are about the harness rather than the paper:")
     w("")
     for n in NOT_HERE:
         w(f"- {n}")
