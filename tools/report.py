@@ -91,12 +91,19 @@ def status_line(scene):
     return f"comparison with expected/{scene}: {r[1].upper()} ({float(r[2]):.2f} s); largest deviation: {r[3]}"
 
 
-def run_status(scenes):
-    """This run's outputs against expected/, in words, for a sentence."""
+def differing(scenes):
+    """The scenes of this run that differ from expected/; None when a scene was not compared."""
     got = [SUMMARY.get(sc) for sc in scenes]
     if not all(got):
+        return None
+    return [r[0] for r in got if r[1] != "match"]
+
+
+def run_status(scenes):
+    """This run's outputs against expected/, in words, for a sentence."""
+    bad = differing(scenes)
+    if bad is None:
         return "this run has no comparison with expected/ (out/summary.csv missing)"
-    bad = [r[0] for r in got if r[1] != "match"]
     where = " and ".join(f"expected/{sc}" for sc in scenes)
     if not bad:
         return f"this run's outputs match {where}"
@@ -105,10 +112,9 @@ def run_status(scenes):
 
 def short_status(scenes):
     """This run against expected/ in a word or two."""
-    got = [SUMMARY.get(sc) for sc in scenes]
-    if not all(got):
+    bad = differing(scenes)
+    if bad is None:
         return "not compared"
-    bad = [r[0] for r in got if r[1] != "match"]
     return "match" if not bad else "differs in " + ", ".join(bad)
 
 
