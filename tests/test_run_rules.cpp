@@ -225,3 +225,30 @@ TEST(RunRules, TheFreeRockingEndsBelowTheBarrierAndIsFollowedAboveIt) {
         EXPECT_TRUE(result.overturned);
     }
 }
+
+// A record whose sample equals the threshold exactly, rising through it,
+// lifts the block at that sample: the input exceeds alpha at once after it.
+// The scan took only crossings strictly after a piece's start and |a| > thr
+// at the start itself, so it lifted the block a sample later (0.41 s), with
+// theta(t_fin)/alpha 0.38646 where the closed form gives 0.38683.
+TEST(RunRules, ARecordReachingAlphaExactlyAtASampleLiftsTheBlockThere) {
+    const SampledInput input = ramp(0.25, 0.01, 101);  // a = 0.1 g at sample 40, t_fin = 1 s
+    ASSERT_EQ(input.samples()[40], 0.1);
+    const Model m = block(0.1, 2.0);
+    SimulationOptions options;
+    rules::RunState<double> s(options, input.t_end());
+    SimulationResult lifted;
+    auto at = [&](double t) { return input.accel(t); };
+    ASSERT_TRUE(rules::lift_from_rest(s, lifted, m, input, at, input.t_end(), no_rest));
+    EXPECT_NEAR(s.t, 0.4, 1e-15);
+    EXPECT_GT(input.accel(s.t), 0.1);
+    // The whole run against theta = c (sinh(p u)/p - u), u = t - 0.4 (c = 0.25 g/s):
+    // theta'' = p^2 (theta + c u) from rest.
+    const double u = 1.0 - 0.4, truth = 0.25 * (std::sinh(2.0 * u) / 2.0 - u);
+    for (const bool kernel : {true, false}) {
+        options.free_rocking = false;
+        options.solver.record_kernel = kernel;
+        const SimulationResult r = simulate(m, input, options);
+        EXPECT_NEAR(r.theta_at_tfin / truth, 1.0, 1e-12) << (kernel ? "record kernel" : "general path");
+    }
+}

@@ -111,6 +111,13 @@ double linear_crossing(double t0, double c0, double c1, double t, double end, do
     return best;
 }
 
+// Whether a linear piece at a (rate c1) is at or beyond +-thr and moving
+// away from 0: it exceeds thr at once after this point.  A sample exactly at
+// the threshold, rising through it, is such a point; the strict tests (|a| >
+// thr there, a crossing strictly after it) passed it by, and the uplift came
+// a sample later (RunRules.ARecordReachingAlphaExactlyAtASampleLiftsTheBlockThere).
+bool leaving(double a, double c1, double thr) { return std::fabs(a) >= thr && a * c1 > 0.0; }
+
 }  // namespace
 
 double GroundInput::first_above(double t, double t_end, double thr) const {
@@ -119,6 +126,7 @@ double GroundInput::first_above(double t, double t_end, double thr) const {
         const double end = std::min(piece.t1, t_end);
         if (std::fabs(piece.at(t)) > thr) return t;
         if (piece.s == 0.0) {
+            if (leaving(piece.at(t), piece.c1, thr)) return t;
             const double tc = linear_crossing(piece.t0, piece.c0, piece.c1, t, end, thr);
             if (tc < end) return tc;
         } else {
@@ -149,7 +157,7 @@ double SampledInput::first_above(double t, double t_end, double thr) const {
     for (;;) {
         const double t0 = dt_ * k, end = std::min(dt_ * (k + 1), t_end);
         const double c0 = samples_[k], c1 = (samples_[k + 1] - samples_[k]) / dt_;
-        if (std::fabs(c0 + c1 * (t - t0)) > thr) return t;
+        if (std::fabs(c0 + c1 * (t - t0)) > thr || leaving(c0 + c1 * (t - t0), c1, thr)) return t;
         const double tc = linear_crossing(t0, c0, c1, t, end, thr);
         if (tc < end) return tc;
         if (!(end < t_end) || k + 1 >= last) return INFINITY;
