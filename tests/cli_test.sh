@@ -32,6 +32,9 @@ check "bad x is named"               "--x: 'abc' is not a number" "$rocking" q -
 check "negative x is refused"        "--x: must be > 0"  "$rocking" q --case 2 --x -1
 check "bad case is named"            "--case: must be 1, 2, 3, 4 or 5" "$rocking" q --case 7 --x 1
 check "impossible train explained"   "cannot bring theta(t_fin) to alpha" "$rocking" q --train 1:1,-5:1 --x 1
+check "a pulse too short is refused"  "below 1e-150" "$rocking" q --train 1:1e-160 --x 1
+check_not "a pulse too short: no inf" "q = inf" "$rocking" q --train 1:1e-160 --x 1
+status "a pulse too short exits 1"    1 "$rocking" q --train 1:1e-300 --x 1
 status "bad x exits 2"               2 "$rocking" q --case 2 --x abc
 status "unknown option exits 2"      2 "$rocking" q --case 2 --x 1 --frobnicate 3
 status "no command exits 2"          2 "$rocking"

@@ -141,3 +141,24 @@ TEST(Engine, ExcursionOfTheCasesOfFigure3) {
     // A q too small to start rocking is flagged.
     EXPECT_FALSE(excursion(pulse_case(3), 0.5, 1.5).onset);
 }
+
+// The 1e-150 guard holds for p times each pulse's duration, not only for x:
+// a pulse of x d = 1e-160 gave q = inf, and one of 1e-300 "no q brings
+// theta(t_fin) to alpha", false for a positive pulse (the sum underflowed).
+TEST(Engine, PulsesTooShortForDoubleAreRefusedNotAnsweredWrong) {
+    for (const char* train : {"1:1e-160", "1:1e-300", "1:1e-151,-0.5:1e-152"}) {
+        try {
+            const QFactor q = q_factor(parse_train(train), 1.0);
+            ADD_FAILURE() << train << " gave q = " << q.q;
+        } catch (const std::domain_error& e) {
+            EXPECT_NE(std::string(e.what()).find("below 1e-150"), std::string::npos) << train << ": " << e.what();
+        }
+    }
+    // Just above the guard q is finite and right: one pulse of x d gives
+    // (1 + e^{-2 x d}) / expm1(-x d)^2 = 2 / (x d)^2 (1 + O(x d)).
+    for (const double d : {1e-149, 1e-120, 1e-100}) {
+        const PulseTrain one({{1.0, d}});
+        const QFactor q = q_factor(one, 1.0);
+        EXPECT_NEAR(q.q / (2.0 / (d * d)), 1.0, 1e-14) << d;
+    }
+}

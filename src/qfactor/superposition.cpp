@@ -55,6 +55,12 @@ QFactor q_factor(const PulseTrain& train, double x) {
         sum += term;
         magnitude += std::fabs(term);
     }
+    // Each term is ~ dA (x s)^2 for small x s: below (1e-150)^2 they leave
+    // the normal range, the sum rounds to a denormal or to 0, and q to inf
+    // or to "no q" (a pulse of x d = 1e-160 or 1e-300), as for x itself.
+    if (magnitude < kSmallestX * kSmallestX)
+        throw std::domain_error("train '" + train.name() + "' at x = " + describe_x(x) +
+                                ": p times its pulses' durations is below 1e-150, where q ~ 2/(M1 x^2) overflows");
     if (!(sum > 0.0))
         throw std::domain_error("train '" + train.name() + "' cannot bring theta(t_fin) to alpha at x = " +
                                 describe_x(x) + " for any q > 0 (denominator of (S2) is <= 0)");
