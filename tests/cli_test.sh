@@ -58,9 +58,16 @@ check "full model needs an ODE solver" "exact solver handles the linearised equa
 check "simulate geometry required"   "give exactly one of --p, --half-height and --height" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15
 check "simulate bad solver"          "unknown solver 'rk4'" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver rk4
 check "simulate restitution range"   "--restitution: must be in [0, 1] or housner (got 1.5)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --restitution 1.5
-check "collapse rtol range (before reading the file)" "--rtol: must be in [2.2e-14, 1), 100 eps and above (got 2)" "$rocking" collapse no-such-file --alpha 0.15 --rtol 2
+check "collapse rtol range (before reading the file)" "--rtol: must be in [100 eps, 1) = [2.2204460492503131e-14, 1) (got 2)" "$rocking" collapse no-such-file --alpha 0.15 --rtol 2
+status "the rtol bound as printed is accepted" 0 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver rkf78 --rtol 2.2204460492503131e-14
+check "x below 1e-150 names --x"      "--x: must be >= 1e-150" "$rocking" q --case 2 --x 1e-300
+status "x below 1e-150 exits 2"       2 "$rocking" q --case 2 --x 1e-300
+check "an unknown unit names --unit"  "--unit: 'furlong' is not a unit" "$rocking" record info no-such-file --unit furlong
+status "an unknown unit exits 2"      2 "$rocking" record info no-such-file --unit furlong
+check "FILE after the options is named" "FILE comes first, before '--alpha'" "$rocking" collapse --alpha 0.15 no-such-file
+status "FILE after the options exits 2" 2 "$rocking" assess --alpha 0.15 --height 3 no-such-file
 # Below 100 eps rounding decides the steps: Bulirsch-Stoer gave up at 1e-17, Dormand-Prince ran over a minute at 1e-30.
-check "rtol below 100 eps refused"   "--rtol: must be in [2.2e-14, 1), 100 eps and above (got 1e-30)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-30
+check "rtol below 100 eps refused"   "--rtol: must be in [100 eps, 1) = [2.2204460492503131e-14, 1) (got 1e-30)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-30
 status "rtol below 100 eps exits 2"  2 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-30
 status "rtol at 100 eps runs"        0 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver bulirsch-stoer --rtol 2.3e-14
 check "tolerances printed plainly"   "solver: dopri5 (rtol 1e-06, atol 1e-06 alpha = 1.5e-07 rad)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5
@@ -77,7 +84,7 @@ check_not "and moves the answer" "theta(t_fin)/alpha = 0.8456919365" \
     "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-12 --atol 1e-3
 check "atol in the JSON, in rad" '"rtol": 9.9999999999999998e-13, "atol_rad": 1e-13' \
     "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --rtol 1e-12 --atol 1e-13 --json
-check "atol range in rad and alpha" "--atol: must be in [3.33e-15, 0.15) rad, [2.2e-14, 1) alpha at alpha = 0.15 (got 0.2)" \
+check "atol range in rad and alpha" "--atol: must be in [3.3306690738754696e-15, 0.15) rad, [100 eps, 1) alpha at alpha = 0.15 (got 0.2)" \
     "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver dopri5 --atol 0.2
 status "atol out of range exits 2" 2 "$rocking" collapse no-such-file --alpha 0.15 --atol 1e-20
 status "collapse bad restitution exits 2" 2 "$rocking" collapse no-such-file --alpha 0.15 --restitution x
@@ -158,6 +165,16 @@ if [ -d "$records" ]; then
     check "collapse below uplift says so" "the record never lifts the block at all (PGA 0.359399 g <= alpha = 0.5)" \
         "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.5
     check "collapse json" '"found": true' "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15 --json
+    # Nothing found: no p and no safe p, rather than "p": 0.
+    check "collapse json with nothing found" '"found": false, "p": null, "p_safe": null' \
+        "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.5 --json
+    # Table 1's search finds the first collapse on its grid, not the smallest (docs/findings.md, T1b).
+    check "collapse says its p is not a bound" "Not a bound" \
+        "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15
+    check_not "collapse does not claim the smallest p" "the smallest pulsation" \
+        "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15
+    check "assess: a height whose p underflows is named" "--height: the block's p" \
+        "$rocking" assess "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15 --height 1e308
 else
     echo "skipped: record commands (no shared records folder at $records)"
 fi

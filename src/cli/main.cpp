@@ -41,7 +41,7 @@ const char* kUsage =
     "  --case I     input of Figure 3, I = 1..5 (amplitudes in PGA, durations in to)\n"
     "  --pulses N   repeat the case's pattern to N pulses (case 2, N = 6 is eq. 27)\n"
     "  --train ...  any train: amplitude:duration pairs, in units of PGA and to\n"
-    "  --x X        x = p*to, X > 0\n"
+    "  --x X        x = p*to, X >= 1e-150\n"
     "  --q Q        response at this q instead of the collapse q\n"
     "  --steps K    number of time steps over [0, t_fin] (default 20)\n"
     "  --json       machine-readable output\n"
@@ -54,19 +54,21 @@ const char* kUsage =
     "  samples, as recorded or scaled to --pga G (in g) or --q Q (PGA = Q alpha g).\n"
     "  GEOMETRY is --alpha A with --p P (rad/s), --half-height h (m, the H of eq. 2) or --height H (m).\n"
     "  --model linearised|full (default linearised); --solver exact|dopri5|rkf78|bulirsch-stoer|gsl-rk8pd\n"
-    "  (default exact for linearised, dopri5 for full); --rtol in [2.2e-14, 1) (default 1e-6);\n"
+    "  (default exact for linearised, dopri5 for full); --rtol in [100 eps, 1) (default 1e-6);\n"
     "  --atol in rad on theta and rad/s on theta', as ode45's AbsTol (default rtol times alpha; ode45's\n"
-    "  default is 1e-6), in [2.2e-14, 1) alpha; the ODE solvers' tolerances, stated in every output;\n"
+    "  default is 1e-6), in [100 eps, 1) alpha; the ODE solvers' tolerances, stated in every output;\n"
     "  --criterion final-rotation|peak-rotation|overturning (default final-rotation, the paper's);\n"
     "  --restitution on angular velocity at impact (default 1) or housner (1 - 1.5 sin^2 alpha);\n"
     "  --output FILE writes t,theta/alpha,theta'/(alpha p) every --dt seconds (default 0.01).\n"
     "\n"
     "record FILE: ESM/ITACA ASCII or PEER AT2 (by content); a one-column (add --dt DT --unit U) or\n"
     "  two-column time,acceleration file (add --unit U), U = g, m/s2 or cm/s2.\n"
-    "collapse: the smallest p (rad/s) at which the record overturns a block of slenderness A\n"
-    "  (defaults: linearised, exact solver, Housner restitution, overturning; Table 1's search).\n"
+    "collapse: the first p (rad/s), raising p from 0.3 by 1 %, at which the record overturns a block of\n"
+    "  slenderness A (Table 1's search; not a bound: a lower p may overturn it too). Defaults:\n"
+    "  linearised, exact solver, Housner restitution, overturning.\n"
     "assess: the block's p (eqs. 2, 4), the record's to_5 (eq. 31), q from eq. 27, the record's\n"
-    "  q = PGA/(alpha g), and the check: the record is safe for the block when its q < eq. 27's.\n";
+    "  q = PGA/(alpha g), and the paper's check: it passes when the record's q < eq. 27's (not a proof\n"
+    "  of safety: eq. 27 is not conservative everywhere; simulate --record follows the block).\n";
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -93,11 +95,19 @@ double restitution_option(const std::string& text) {
     return e;
 }
 
+// The tolerances' floor, 100 eps, to every digit: "2.2e-14" read back is
+// below it, and a user who typed the bound the message gave was refused.
+std::string smallest_tolerance() {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", dynamics::kSmallestTolerance);
+    return text;
+}
+
 // --rtol: a relative tolerance in [100 eps, 1), used as the absolute one in units of alpha too.
 double rtol_option(const std::string& text) {
     const double r = number("--rtol", text);
     if (!(r >= dynamics::kSmallestTolerance && r < 1))
-        throw UsageError("--rtol: must be in [2.2e-14, 1), 100 eps and above (got " + text + ")");
+        throw UsageError("--rtol: must be in [100 eps, 1) = [" + smallest_tolerance() + ", 1) (got " + text + ")");
     return r;
 }
 
@@ -111,8 +121,8 @@ void tolerance_options(const std::map<std::string, std::string>& values, double 
     const std::string& text = values.at("--atol");
     const double atol = number("--atol", text), in_alpha = atol / alpha;
     if (!(in_alpha >= dynamics::kSmallestTolerance && in_alpha < 1)) {
-        char range[160];
-        std::snprintf(range, sizeof range, "[%.3g, %.3g) rad, [2.2e-14, 1) alpha at alpha = %g",
+        char range[200];
+        std::snprintf(range, sizeof range, "[%.17g, %g) rad, [100 eps, 1) alpha at alpha = %g",
                       dynamics::kSmallestTolerance * alpha, alpha, alpha);
         throw UsageError("--atol: must be in " + std::string(range) + " (got " + text + ")");
     }
@@ -123,6 +133,15 @@ int integer(const std::string& flag, const std::string& text) {
     const double v = number(flag, text);
     if (v != std::floor(v) || std::fabs(v) > 1e6) throw UsageError(flag + ": '" + text + "' is not a whole number");
     return static_cast<int>(v);
+}
+
+// The FILE a subcommand takes first: an option there (rocking collapse
+// --alpha 0.15 FILE) was read as the file, and its value as an unknown option.
+std::string file_argument(int argc, char** argv, int at, const std::string& usage) {
+    if (argc <= at) throw UsageError(usage);
+    const std::string path = argv[at];
+    if (path.rfind("--", 0) == 0) throw UsageError("FILE comes first, before '" + path + "': " + usage);
+    return path;
 }
 
 struct Args {
@@ -174,6 +193,8 @@ double x_from(const Args& a) {
     if (!a.values.count("--x")) throw UsageError("--x is required");
     const double x = number("--x", a.values.at("--x"));
     if (!(x > 0)) throw UsageError("--x: must be > 0 (got " + a.values.at("--x") + ")");
+    if (x < kSmallestX)
+        throw UsageError("--x: must be >= 1e-150, below which q ~ 2/(M1 x^2) overflows (got " + a.values.at("--x") + ")");
     return x;
 }
 
@@ -288,6 +309,8 @@ records::Record load_record(const std::string& path, const Args& a, const std::s
     if (a.values.count("--unit") || a.values.count(dt_flag)) {
         if (!a.values.count("--unit")) throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2)");
         const std::string unit = a.values.at("--unit");
+        if (unit != "g" && unit != "m/s2" && unit != "cm/s2")
+            throw UsageError("--unit: '" + unit + "' is not a unit it knows (g, m/s2, cm/s2)");
         const double dt = a.values.count(dt_flag) ? number(dt_flag, a.values.at(dt_flag)) : 0.0;
         // 0 would read as "not given" (a two-column file), and a negative
         // step was reported against the file's line 0.
@@ -474,7 +497,7 @@ int cmd_simulate(int argc, char** argv) {
 
 int cmd_record(int argc, char** argv) {
     if (argc < 4 || std::string(argv[2]) != "info") throw UsageError("usage: rocking record info FILE [--json]");
-    const std::string path = argv[3];
+    const std::string path = file_argument(argc, argv, 3, "usage: rocking record info FILE [--json]");
     const Args a = parse(argc, argv, 4, {"--unit", "--dt"});
     const records::Record r = load_record(path, a);
     const records::HalfPeriods h = half_periods_of(r, path);
@@ -502,8 +525,7 @@ int cmd_record(int argc, char** argv) {
 
 int cmd_collapse(int argc, char** argv) {
     using namespace rocking::dynamics;
-    if (argc < 3) throw UsageError("usage: rocking collapse FILE --alpha A [options]");
-    const std::string path = argv[2];
+    const std::string path = file_argument(argc, argv, 2, "usage: rocking collapse FILE --alpha A [options]");
     const Args a = parse(argc, argv, 3,
                          {"--alpha", "--model", "--solver", "--criterion", "--restitution", "--rtol", "--atol", "--unit", "--dt"});
     if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
@@ -534,8 +556,9 @@ int cmd_collapse(int argc, char** argv) {
     const records::CollapseResult c = records::smallest_collapse_p(input, alpha, o);
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
-                  << ", \"found\": " << (c.found ? "true" : "false") << ", \"p\": " << harness::format_number(c.p)
-                  << ", \"p_safe\": " << (c.below_range() ? std::string("null") : harness::format_number(c.p_safe))
+                  << ", \"found\": " << (c.found ? "true" : "false")
+                  << ", \"p\": " << (c.found ? harness::format_number(c.p) : std::string("null"))
+                  << ", \"p_safe\": " << (c.found && !c.below_range() ? harness::format_number(c.p_safe) : std::string("null"))
                   << ", \"below_range\": " << (c.below_range() ? "true" : "false") << ", \"simulations\": " << c.simulations
                   << ", \"search\": " << json_string(o.describe()) << "}\n";
     } else {
@@ -544,8 +567,10 @@ int cmd_collapse(int argc, char** argv) {
                         "pulsation; the smallest one that overturns it lies at or below that, outside the search\n",
                         c.p, r.name.c_str(), alpha);
         else if (c.found)
-            std::printf("p = %.6f rad/s: the smallest pulsation at which %s overturns the block (alpha = %g); "
-                        "safe at %.6f\n", c.p, r.name.c_str(), alpha, c.p_safe);
+            std::printf("p = %.6f rad/s: the first pulsation of the search at which %s overturns the block "
+                        "(alpha = %g); it does not at %.6f. Not a bound: the overturning p do not form an interval, "
+                        "and a lower p may overturn it too (docs/findings.md, T1b)\n",
+                        c.p, r.name.c_str(), alpha, c.p_safe);
         else {
             // Below the uplift threshold no p can move the block: say so, or the
             // scan's "up to 30 rad/s" reads as if a larger p might.
@@ -566,8 +591,8 @@ int cmd_collapse(int argc, char** argv) {
 
 int cmd_assess(int argc, char** argv) {
     using namespace rocking::dynamics;
-    if (argc < 3) throw UsageError("usage: rocking assess FILE --alpha A (--height H | --half-height h)");
-    const std::string path = argv[2];
+    const std::string path =
+        file_argument(argc, argv, 2, "usage: rocking assess FILE --alpha A (--height H | --half-height h)");
     const Args a = parse(argc, argv, 3, {"--alpha", "--height", "--half-height", "--unit", "--dt"});
     if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
     const double alpha = number("--alpha", a.values.at("--alpha"));
@@ -582,7 +607,14 @@ int cmd_assess(int argc, char** argv) {
     }
     const records::Record r = load_record(path, a);
     const records::HalfPeriods h = half_periods_of(r, path);
-    const double to5 = h.to[4], x = b.p * to5, q27 = q2_n6(x), q_record = h.pga / (alpha * kGravity);
+    const double to5 = h.to[4], x = b.p * to5;
+    if (!(x >= kSmallestX)) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
+                      "1e-150, where eq. 27 overflows", a.values.count("--height") ? "--height" : "--half-height", b.p, to5);
+        throw UsageError(text);
+    }
+    const double q27 = q2_n6(x), q_record = h.pga / (alpha * kGravity);
     const bool safe = q_record < q27;
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
