@@ -63,6 +63,9 @@ TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
         {"unit.asc", esm("3", "2.0", "g", ok), ":5: UNITS is 'g', expected cm/s^2"},
         {"empty.asc", "", ":0: empty file"},
         {"peer_npts.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nDT= .01 SEC\n0.1 0.2\n", ":4: expected 'NPTS= n, DT= dt SEC'"},
+        // "UNITS OF GAL" (cm/s^2) contains "UNITS OF G": it was read as g, 981 times too strong.
+        {"peer_gal.at2", "H1\nH2\nACCELERATION IN UNITS OF GAL\nNPTS= 2, DT= .01 SEC\n0.1 0.2\n",
+         ":1: neither ESM ASCII (its header lines are 'KEY: value') nor PEER AT2 ('UNITS OF G' on line 3)"},
         {"peer_count.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 3, DT= .01 SEC\n0.1 0.2\n", ":4: NPTS says 3 samples, the file has 2"},
         {"peer_sample.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 x\n", ":5: sample 'x' is not a number"},
         {"peer_range.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 1e400\n",

@@ -1,6 +1,7 @@
 #include "records/record.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -49,9 +50,14 @@ std::string refused(const std::string& token) {
 }
 
 // PEER AT2's third header line names its unit: "... UNITS OF G".
+// "UNITS OF G" as a word: "UNITS OF GAL" (cm/s^2) is another unit, which
+// the samples, read as g, would turn 981 times too strong.
 bool peer_units_line(std::string line) {
     std::transform(line.begin(), line.end(), line.begin(), ::toupper);
-    return line.find("UNITS OF G") != std::string::npos;
+    const auto at = line.find("UNITS OF G");
+    if (at == std::string::npos) return false;
+    const std::size_t after = at + 10;
+    return after == line.size() || !std::isalnum(static_cast<unsigned char>(line[after]));
 }
 
 std::ifstream open(const std::string& path) {
