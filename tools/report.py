@@ -368,6 +368,12 @@ def notes_block(L, notes):
     L.y += 0.06
 
 
+def scene_status(L, scene, notes):
+    """Under a figure page's opening sentence: the comparison with expected/, then the CSV's model, solver, inputs."""
+    L.text("Reproduction: " + status_line(scene), 8)
+    notes_block(L, notes)
+
+
 def entry_verdicts(L, ids):
     """The verdicts of these findings, as docs/findings.md gives them."""
     L.text("Findings (docs/findings.md; details on the findings pages):", 8, weight="bold", gap=0.04)
@@ -469,8 +475,7 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                "Compares q1..q5 of the closed forms (eqs. 12-24) and their minimum against x = p·to with the paper's "
                "Figure 4, whose claims are that the minimum is q4 below x = 0.51 and q2 above and that cases 3 and 5 "
                f"need q ≥ 2 ({verdicts(['C1', 'C2'])}); {run_status(['fig04'])}.")
-        L.text("Reproduction: " + status_line("fig04"), 8)
-        notes_block(L, f4[0])
+        scene_status(L, "fig04", f4[0])
         L.figure(5.0, draw4)
         p4 = read("fig04", "fig04_points.csv")
         if p4:
@@ -500,8 +505,7 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                "Compares θ/α against t/to under the reduced inputs PGA = q_i α g Rd (Rd < 1; exact solver with "
                "impacts, restitution 1) with the paper's Figure 5, whose claim is no collapse for Rd < 1 "
                f"({verdicts(['F5a', 'F5b', 'F5c', 'F5d'])}); {run_status(['fig05'])}.")
-        L.text("Reproduction: " + status_line("fig05"), 8)
-        notes_block(L, h5[0])
+        scene_status(L, "fig05", h5[0])
         L.text("Red dashed: θ = ±α; dotted: t_fin.", 7.5)
         L.figure(6.0, draw5)
         if s5:
@@ -531,8 +535,7 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                "case 2 against the half-height H, as the paper's Figure 6, whose claims are that eq. 1 always gives "
                "less rotation, about 16 % less at H = 1 m and α = 0.25, negligibly less above 3 m, with p ≈ 1.6 s⁻¹ "
                f"at H = 1 m ({verdicts(['F6a', 'F6b', 'F6c', 'F6d'])}); {run_status(['fig06'])}.")
-        L.text("Reproduction: " + status_line("fig06"), 8)
-        notes_block(L, f6[0])
+        scene_status(L, "fig06", f6[0])
         L.figure(3.3, draw6)
         entry_verdicts(L, ["F6a", "F6b", "F6c", "F6d"])
 
@@ -553,8 +556,7 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                "Compares q of cases 1, 2 and 4 repeated to N = 2..12 pulses (the superposition engine) with the "
                "paper's Figure 7, whose claims are that q decreases with N, settles at 6 + 1 pulses and is lowest "
                f"for eq. 27 ({verdicts(['C3', 'C4', 'C5'])}); {run_status(['fig07'])}.")
-        L.text("Reproduction: " + status_line("fig07"), 8)
-        notes_block(L, f7[0])
+        scene_status(L, "fig07", f7[0])
         L.figure(7.2, draw7)
         entry_verdicts(L, ["C3", "C4", "C5"])
 
@@ -577,8 +579,7 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                "Compares eq. 27 against ω/p = π/(p·to) with the one-sine overturning threshold of Makris et al. "
                "(computed here, four variants) and Coccia & Como, as the paper's Figure 8, whose claim is that eq. 27 "
                f"offers a safety margin, particularly at high ω/p ({verdicts(['F8'])}); {run_status(['fig08'])}.")
-        L.text("Reproduction: " + status_line("fig08"), 8)
-        notes_block(L, f8[0])
+        scene_status(L, "fig08", f8[0])
         L.figure(5.2, draw8)
         if s8:
             L.text("fig08_summary.csv: " + "; ".join(f"{r[0]}: {short(r[1])}" for r in s8[2]) + ".", 7.5)
@@ -643,8 +644,7 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                "Compares the points (p·to_k, q) of Tables 1-2 and of the real records here with eq. 27 for each "
                "definition to_k, as the paper's Figure 11, whose claim is that with to_5 nearly all points are "
                f"conservative ({verdicts(['F11'])}); {run_status(['fig11'])}.")
-        L.text("Reproduction: " + status_line("fig11"), 8)
-        notes_block(L, p11[0])
+        scene_status(L, "fig11", p11[0])
         L.figure(7.4, draw11)
         L.text("Non-conservative points (eq. 27 above the collapse q), paper: " +
                ", ".join(f"to_{r[1]}: {r[3]}/{r[2]}" for r in n11[2]) + ".", 7.5, gap=0.03)
@@ -670,8 +670,7 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
                "Compares the points (p·to_5, q) with eq. 27 and the Italian code's q = 2, as the paper's Figure 12, "
                f"whose claim is that q = 2 is not conservative for p·to above 0.7 ({verdicts(['F12'])}); "
                f"{run_status(['fig12'])}.")
-        L.text("Reproduction: " + status_line("fig12"), 8)
-        notes_block(L, p12[0])
+        scene_status(L, "fig12", p12[0])
         L.figure(5.2, draw12)
         L.text("fig12_summary.csv: " + "; ".join(f"{r[0]}: {short(r[1])}" for r in s12[2]) + ".", 7.5)
         entry_verdicts(L, ["F12"])
