@@ -124,9 +124,10 @@ double GroundInput::first_above(double t, double t_end, double thr) const {
     while (t < t_end) {
         const InputPiece piece = piece_at(t);
         const double end = std::min(piece.t1, t_end);
-        if (std::fabs(piece.at(t)) > thr) return t;
+        const double a = piece.at(t);
+        if (std::fabs(a) > thr) return t;
         if (piece.s == 0.0) {
-            if (leaving(piece.at(t), piece.c1, thr)) return t;
+            if (leaving(a, piece.c1, thr)) return t;
             const double tc = linear_crossing(piece.t0, piece.c0, piece.c1, t, end, thr);
             if (tc < end) return tc;
         } else {
@@ -157,7 +158,8 @@ double SampledInput::first_above(double t, double t_end, double thr) const {
     for (;;) {
         const double t0 = dt_ * k, end = std::min(dt_ * (k + 1), t_end);
         const double c0 = samples_[k], c1 = (samples_[k + 1] - samples_[k]) / dt_;
-        if (std::fabs(c0 + c1 * (t - t0)) > thr || leaving(c0 + c1 * (t - t0), c1, thr)) return t;
+        const double a = c0 + c1 * (t - t0);
+        if (std::fabs(a) > thr || leaving(a, c1, thr)) return t;
         const double tc = linear_crossing(t0, c0, c1, t, end, thr);
         if (tc < end) return tc;
         if (!(end < t_end) || k + 1 >= last) return INFINITY;

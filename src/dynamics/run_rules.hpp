@@ -151,8 +151,8 @@ void apply_impact(RunState<Real>& s, SimulationResult& result, const Model& mode
 // (record_impact), then applied (apply_impact) with the rest rule rest.
 // Always inline: a call on every rebound of the kernel's cascades.
 template <class Real>
-__attribute__((always_inline)) inline void impact(RunState<Real>& s, SimulationResult& result, const Model& model, const SimulationOptions& options,
-            Real t_impact, Real om_i, Real rest) {
+__attribute__((always_inline)) inline void impact(RunState<Real>& s, SimulationResult& result, const Model& model,
+                                                  const SimulationOptions& options, Real t_impact, Real om_i, Real rest) {
     const bool micro = record_impact(result, t_impact, options, Real(model.block.p));
     apply_impact(s, result, model, t_impact, om_i, micro, rest);
 }
