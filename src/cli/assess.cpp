@@ -1,0 +1,60 @@
+// rocking assess: the paper's check of a block against a record (eq. 27).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "qfactor/closed_forms.hpp"
+#include "harness/table.hpp"
+
+namespace rocking::cli {
+
+int cmd_assess(int argc, char** argv) {
+    using namespace rocking::dynamics;
+    const std::string path =
+        file_argument(argc, argv, 2, "usage: rocking assess FILE --alpha A (--height H | --half-height h)");
+    const Args a = parse(argc, argv, 3, {"--alpha", "--height", "--half-height", "--unit", "--dt"});
+    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
+    const double alpha = number("--alpha", a.values.at("--alpha"));
+    if (a.values.count("--height") + a.values.count("--half-height") != 1)
+        throw UsageError("give exactly one of --height and --half-height");
+    Block b{};
+    try {
+        b = a.values.count("--height") ? Block::from_full_height(number("--height", a.values.at("--height")), alpha)
+                                       : Block::from_half_height(number("--half-height", a.values.at("--half-height")), alpha);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    const records::Record r = load_record(path, a);
+    const records::HalfPeriods h = half_periods_of(r, path);
+    const double to5 = h.to[4], x = b.p * to5;
+    if (!(x >= kSmallestX)) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
+                      "1e-150, where eq. 27 overflows", a.values.count("--height") ? "--height" : "--half-height", b.p, to5);
+        throw UsageError(text);
+    }
+    const double q27 = q2_n6(x), q_record = h.pga / (alpha * kGravity);
+    const bool safe = q_record < q27;
+    if (a.json) {
+        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
+                  << ", \"p\": " << harness::format_number(b.p) << ", \"to5\": " << harness::format_number(to5)
+                  << ", \"x\": " << harness::format_number(x) << ", \"q_eq27\": " << harness::format_number(q27)
+                  << ", \"q_record\": " << harness::format_number(q_record) << ", \"passes\": " << (safe ? "true" : "false")
+                  << "}\n";
+    } else {
+        std::printf("%s: %s\n", r.name.c_str(), safe ? "PASSES (the record's q is below eq. 27's)" : "FAILS");
+        std::printf("  block: alpha = %g, p = %.4f rad/s (eqs. 2, 4, half-height %.3f m)\n", alpha, b.p, b.R * std::cos(alpha));
+        std::printf("  record: PGA = %s g, to_5 = pi PGV/PGA = %.4f s; x = p to_5 = %.4f\n", four(h.pga / kGravity).c_str(),
+                    to5, x);
+        std::printf("  q from eq. 27 = %s; the record's q = PGA/(alpha g) = %s\n", four(q27).c_str(), four(q_record).c_str());
+    }
+    return 0;
+}
+
+}  // namespace rocking::cli

@@ -1,0 +1,83 @@
+// rocking collapse: Table 1's search for the first overturning p.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "records/collapse.hpp"
+#include "harness/table.hpp"
+
+namespace rocking::cli {
+
+int cmd_collapse(int argc, char** argv) {
+    using namespace rocking::dynamics;
+    const std::string path = file_argument(argc, argv, 2, "usage: rocking collapse FILE --alpha A [options]");
+    const Args a = parse(argc, argv, 3,
+                         {"--alpha", "--model", "--solver", "--criterion", "--restitution", "--rtol", "--atol", "--unit", "--dt"});
+    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
+    const double alpha = number("--alpha", a.values.at("--alpha"));
+    if (!(alpha > 0 && alpha < 0.7)) throw UsageError("--alpha: must be in (0, 0.7)");
+    records::CollapseOptions o;
+    if (a.values.count("--model")) {
+        const std::string m = a.values.at("--model");
+        if (m == "full") o.equation = Equation::full, o.solver.kind = SolverKind::dopri5;
+        else if (m != "linearised") throw UsageError("--model: linearised or full");
+    }
+    try {
+        if (a.values.count("--solver")) o.solver.kind = parse_solver(a.values.at("--solver"));
+        if (a.values.count("--criterion")) o.criterion = parse_criterion(a.values.at("--criterion"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    tolerance_options(a.values, alpha, o.solver);
+    if (a.values.count("--restitution")) {
+        const double e = restitution_option(a.values.at("--restitution"));
+        o.housner_restitution = std::isnan(e);
+        if (!o.housner_restitution) o.restitution = e;
+    }
+    if (o.equation == Equation::full && o.solver.kind == SolverKind::exact)
+        throw UsageError("the exact solver handles the linearised equation only");
+    const records::Record r = load_record(path, a);
+    const SampledInput input(r.in_g(kGravity), r.dt, r.name);
+    const records::CollapseResult c = records::smallest_collapse_p(input, alpha, o);
+    if (a.json) {
+        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
+                  << ", \"found\": " << (c.found ? "true" : "false")
+                  << ", \"p\": " << (c.found ? harness::format_number(c.p) : std::string("null"))
+                  << ", \"p_safe\": " << (c.found && !c.below_range() ? harness::format_number(c.p_safe) : std::string("null"))
+                  << ", \"below_range\": " << (c.below_range() ? "true" : "false") << ", \"simulations\": " << c.simulations
+                  << ", \"search\": " << json_string(o.describe()) << "}\n";
+    } else {
+        if (c.below_range())
+            std::printf("p <= %.6f rad/s: %s overturns the block (alpha = %g) already at the search's lowest "
+                        "pulsation; the smallest one that overturns it lies at or below that, outside the search\n",
+                        c.p, r.name.c_str(), alpha);
+        else if (c.found)
+            std::printf("p = %.6f rad/s: the first pulsation of the search at which %s overturns the block "
+                        "(alpha = %g); it does not at %.6f. Not a bound: the overturning p do not form an interval, "
+                        "and a lower p may overturn it too (docs/findings.md, T1b)\n",
+                        c.p, r.name.c_str(), alpha, c.p_safe);
+        else {
+            // Below the uplift threshold no p can move the block: say so, or the
+            // scan's "up to 30 rad/s" reads as if a larger p might.
+            Model m;  // any p: the threshold depends on alpha and the equation only
+            m.equation = o.equation;
+            m.block = Block::from_p(1.0, alpha);
+            const double pga_g = r.pga() / kGravity, thr = m.uplift_threshold();
+            if (pga_g <= thr)
+                std::printf("no collapse for p up to %g rad/s: the record never lifts the block at all (PGA %.6g g <= "
+                            "%s = %.6g)\n",
+                            o.p_max, pga_g, o.equation == Equation::full ? "tan alpha" : "alpha", thr);
+            else std::printf("no collapse for p up to %g rad/s\n", o.p_max);
+        }
+        std::printf("  %s; %d simulations\n", o.describe().c_str(), c.simulations);
+    }
+    return 0;
+}
+
+}  // namespace rocking::cli

@@ -1,0 +1,179 @@
+// The command line's shared pieces (options.hpp).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "harness/table.hpp"
+
+namespace rocking::cli {
+
+double number(const std::string& flag, const std::string& text) {
+    std::size_t used = 0;
+    double v;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        throw UsageError(flag + ": '" + text + "' is not a number");
+    }
+    if (used != text.size() || !std::isfinite(v)) throw UsageError(flag + ": '" + text + "' is not a finite number");
+    return v;
+}
+
+// --restitution: "housner" (1 - 1.5 sin^2 alpha) or a factor in [0, 1];
+// NaN stands for housner.
+double restitution_option(const std::string& text) {
+    if (text == "housner") return NAN;
+    const double e = number("--restitution", text);
+    if (!(e >= 0 && e <= 1)) throw UsageError("--restitution: must be in [0, 1] or housner (got " + text + ")");
+    return e;
+}
+
+// The tolerances' floor, 100 eps, to every digit: "2.2e-14" read back is
+// below it, and a user who typed the bound the message gave was refused.
+std::string smallest_tolerance() {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", dynamics::kSmallestTolerance);
+    return text;
+}
+
+// --rtol: a relative tolerance in [100 eps, 1), used as the absolute one in units of alpha too.
+double rtol_option(const std::string& text) {
+    const double r = number("--rtol", text);
+    if (!(r >= dynamics::kSmallestTolerance && r < 1))
+        throw UsageError("--rtol: must be in [100 eps, 1) = [" + smallest_tolerance() + ", 1) (got " + text + ")");
+    return r;
+}
+
+// --rtol and --atol into the solver's options: --atol in rad (and rad/s on
+// theta', one number for the whole state, as ode45's AbsTol), kept in units
+// of alpha and held to the same range as --rtol there.
+void tolerance_options(const std::map<std::string, std::string>& values, double alpha,
+                       dynamics::SolverOptions& solver) {
+    if (values.count("--rtol")) solver.rtol = solver.atol_alpha = rtol_option(values.at("--rtol"));
+    if (!values.count("--atol")) return;
+    const std::string& text = values.at("--atol");
+    const double atol = number("--atol", text), in_alpha = atol / alpha;
+    if (!(in_alpha >= dynamics::kSmallestTolerance && in_alpha < 1)) {
+        char range[200];
+        std::snprintf(range, sizeof range, "[%.17g, %g) rad, [100 eps, 1) alpha at alpha = %g",
+                      dynamics::kSmallestTolerance * alpha, alpha, alpha);
+        throw UsageError("--atol: must be in " + std::string(range) + " (got " + text + ")");
+    }
+    solver.atol_alpha = in_alpha;
+}
+
+int integer(const std::string& flag, const std::string& text) {
+    const double v = number(flag, text);
+    if (v != std::floor(v) || std::fabs(v) > 1e6) throw UsageError(flag + ": '" + text + "' is not a whole number");
+    return static_cast<int>(v);
+}
+
+// The FILE a subcommand takes first: an option there (rocking collapse
+// --alpha 0.15 FILE) was read as the file, and its value as an unknown option.
+std::string file_argument(int argc, char** argv, int at, const std::string& usage) {
+    if (argc <= at) throw UsageError(usage);
+    const std::string path = argv[at];
+    if (path.rfind("--", 0) == 0) throw UsageError("FILE comes first, before '" + path + "': " + usage);
+    return path;
+}
+
+Args parse(int argc, char** argv, int first, const std::vector<std::string>& allowed) {
+    Args a;
+    for (int i = first; i < argc; ++i) {
+        const std::string flag = argv[i];
+        if (flag == "--json") {
+            a.json = true;
+            continue;
+        }
+        bool ok = false;
+        for (const auto& f : allowed) ok = ok || f == flag;
+        if (!ok) throw UsageError("unknown option '" + flag + "'");
+        if (i + 1 >= argc) throw UsageError(flag + " needs a value");
+        if (a.values.count(flag)) throw UsageError(flag + " given twice");
+        a.values[flag] = argv[++i];
+    }
+    return a;
+}
+
+PulseTrain train_from(const Args& a, std::string& equation) {
+    const bool has_case = a.values.count("--case"), has_train = a.values.count("--train");
+    if (has_case == has_train) throw UsageError("give exactly one of --case and --train");
+    if (has_train) {
+        if (a.values.count("--pulses")) throw UsageError("--pulses goes with --case");
+        equation = "superposition (S2)";
+        try {
+            return parse_train(a.values.at("--train"));
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--train: ") + e.what());
+        }
+    }
+    const int which = integer("--case", a.values.at("--case"));
+    if (which < 1 || which > 5) throw UsageError("--case: must be 1, 2, 3, 4 or 5 (got " + a.values.at("--case") + ")");
+    const int n = a.values.count("--pulses") ? integer("--pulses", a.values.at("--pulses")) : 2;
+    if (n < 1 || n > 1000) throw UsageError("--pulses: must be between 1 and 1000");
+    static const char* eq[] = {"", "eq. 12", "eq. 15", "eq. 19", "eq. 22", "eq. 24"};
+    equation = n == 2 ? eq[which] : (n == 6 && which == 2) ? "eq. 27" : (n == 6 && which == 4) ? "eq. 28 (corrected)"
+                                                                                             : "superposition (S2)";
+    return repeated_case(which, n);
+}
+
+double x_from(const Args& a) {
+    if (!a.values.count("--x")) throw UsageError("--x is required");
+    const double x = number("--x", a.values.at("--x"));
+    if (!(x > 0)) throw UsageError("--x: must be > 0 (got " + a.values.at("--x") + ")");
+    if (x < kSmallestX)
+        throw UsageError("--x: must be >= 1e-150, below which q ~ 2/(M1 x^2) overflows (got " + a.values.at("--x") + ")");
+    return x;
+}
+
+// A value to 4 decimals, in exponent form from 1e9 on (a record scaled
+// absurdly printed 300 digits).
+std::string four(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, std::fabs(v) < 1e9 ? "%.4f" : "%.4e", v);
+    return buf;
+}
+
+// The record's half-periods; a record they cannot be measured on is refused
+// with its file's name.
+records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path) {
+    try {
+        return records::half_periods(r);
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(path + ": " + e.what());
+    }
+}
+
+std::string json_string(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+// A record file by content, or a plain-text one when --unit (and, for one
+// column, the sampling step under dt_flag) is given.
+records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag) {
+    if (a.values.count("--unit") || a.values.count(dt_flag)) {
+        if (!a.values.count("--unit")) throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2)");
+        const std::string unit = a.values.at("--unit");
+        if (unit != "g" && unit != "m/s2" && unit != "cm/s2")
+            throw UsageError("--unit: '" + unit + "' is not a unit it knows (g, m/s2, cm/s2)");
+        const double dt = a.values.count(dt_flag) ? number(dt_flag, a.values.at(dt_flag)) : 0.0;
+        // 0 would read as "not given" (a two-column file), and a negative
+        // step was reported against the file's line 0.
+        if (a.values.count(dt_flag) && !(dt > 0)) throw UsageError(dt_flag + ": must be > 0 (got " + a.values.at(dt_flag) + ")");
+        return records::read_plain(path, unit, dt);
+    }
+    return records::read_any(path);
+}
+
+}  // namespace rocking::cli

@@ -1,0 +1,53 @@
+// The command line's shared pieces: options, their errors, the inputs they
+// name, and JSON text.  Each subcommand is one file (q.cpp, response.cpp, ...)
+// over the library; main.cpp only dispatches.
+#pragma once
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "pulse/pulse_train.hpp"
+#include "dynamics/simulate.hpp"
+#include "records/measures.hpp"
+#include "records/record.hpp"
+#include "qfactor/superposition.hpp"
+
+namespace rocking::cli {
+
+// A bad argument: main() prints it on one line and exits 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct Args {
+    std::map<std::string, std::string> values;
+    bool json = false;
+};
+
+double number(const std::string& flag, const std::string& text);
+double restitution_option(const std::string& text);
+std::string smallest_tolerance();
+double rtol_option(const std::string& text);
+void tolerance_options(const std::map<std::string, std::string>& values, double alpha,
+                       dynamics::SolverOptions& solver);
+int integer(const std::string& flag, const std::string& text);
+std::string file_argument(int argc, char** argv, int at, const std::string& usage);
+Args parse(int argc, char** argv, int first, const std::vector<std::string>& allowed);
+PulseTrain train_from(const Args& a, std::string& equation);
+double x_from(const Args& a);
+std::string four(double v);
+records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path);
+std::string json_string(const std::string& s);
+records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag = "--dt");
+
+// The subcommands, one file each; argv[1] is the subcommand's name.
+int cmd_q(int argc, char** argv);
+int cmd_response(int argc, char** argv);
+int cmd_simulate(int argc, char** argv);
+int cmd_record(int argc, char** argv);
+int cmd_collapse(int argc, char** argv);
+int cmd_assess(int argc, char** argv);
+
+}  // namespace rocking::cli

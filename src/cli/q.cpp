@@ -1,0 +1,40 @@
+// rocking q: the closed-form q of a case or a train (eqs. 12-28, (S2)).
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "cli/validity.hpp"
+#include "harness/table.hpp"
+
+namespace rocking::cli {
+
+int cmd_q(int argc, char** argv) {
+    const Args a = parse(argc, argv, 2, {"--case", "--train", "--x", "--pulses"});
+    std::string equation;
+    const PulseTrain train = train_from(a, equation);
+    const double x = x_from(a);
+    const QFactor r = q_factor(train, x);
+    const Excursion e = excursion(train, x, r.q);
+    if (a.json) {
+        std::cout << "{\"input\": " << json_string(train.name()) << ", \"pulses\": " << train.size()
+                  << ", \"x\": " << harness::format_number(x) << ", \"q\": " << harness::format_number(r.q)
+                  << ", \"condition\": " << harness::format_number(r.condition)
+                  << ", \"equation\": " << json_string(equation) << ", \"model\": " << json_string(kModel)
+                  << json_validity(e) << "}\n";
+    } else {
+        std::printf("q = %.10g\n", r.q);
+        std::printf("  input %s (%zu pulses, t_fin = %g to), x = p*to = %g, %s\n", train.name().c_str(), train.size(),
+                    train.t_fin(), x, equation.c_str());
+        std::printf("  model: %s\n", kModel);
+        print_validity(e, "  ");
+    }
+    return 0;
+}
+
+}  // namespace rocking::cli

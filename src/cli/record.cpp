@@ -1,0 +1,44 @@
+// rocking record info: a record's PGA, PGV and its eleven half-periods.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "harness/table.hpp"
+
+namespace rocking::cli {
+
+int cmd_record(int argc, char** argv) {
+    if (argc < 4 || std::string(argv[2]) != "info") throw UsageError("usage: rocking record info FILE [--json]");
+    const std::string path = file_argument(argc, argv, 3, "usage: rocking record info FILE [--json]");
+    const Args a = parse(argc, argv, 4, {"--unit", "--dt"});
+    const records::Record r = load_record(path, a);
+    const records::HalfPeriods h = half_periods_of(r, path);
+    if (a.json) {
+        std::cout << "{\"file\": " << json_string(path) << ", \"format\": " << json_string(r.format)
+                  << ", \"name\": " << json_string(r.name) << ", \"samples\": " << r.accel.size()
+                  << ", \"dt\": " << harness::format_number(r.dt) << ", \"pga_ms2\": " << harness::format_number(h.pga)
+                  << ", \"pgv_ms\": " << harness::format_number(h.pgv) << ", \"amax_ms\": " << harness::format_number(h.amax)
+                  << ", \"to\": [";
+        for (int k = 0; k < 11; ++k) std::cout << (k ? ", " : "") << harness::format_number(h.to[k]);
+        std::cout << "]}\n";
+    } else {
+        std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,
+                    r.duration());
+        std::printf("  PGA = %s m/s^2 (%s g), PGV = %s m/s, Amax = %s m/s\n", four(h.pga).c_str(),
+                    four(h.pga / dynamics::kGravity).c_str(), four(h.pgv).c_str(), four(h.amax).c_str());
+        static const char* what[] = {"largest-area pulse", "pulse holding the PGA", "sine of same PGA and area (eq. 29)",
+                                     "constant of same PGA and area (eq. 30)", "pi PGV / PGA (eq. 31)",
+                                     "Fourier peak, acceleration", "Fourier peak, velocity", "CWT max amplitude, acceleration",
+                                     "CWT mean amplitude, velocity", "CWT energy, acceleration", "CWT energy, velocity"};
+        for (int k = 0; k < 11; ++k) std::printf("  to_%-2d = %.4f s  %s\n", k + 1, h.to[k], what[k]);
+    }
+    return 0;
+}
+
+}  // namespace rocking::cli

@@ -1,0 +1,193 @@
+// rocking simulate: one block under a pulse, a one-sine pulse or a record.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "dynamics/ground_input.hpp"
+#include "qfactor/closed_forms.hpp"
+#include "harness/table.hpp"
+
+namespace rocking::cli {
+
+int cmd_simulate(int argc, char** argv) {
+    using namespace rocking::dynamics;
+    // --one-sine takes no value: handle it before the generic parser.
+    std::vector<char*> args(argv, argv + argc);
+    bool one_sine = false;
+    for (auto it = args.begin() + 2; it != args.end();)
+        if (std::string(*it) == "--one-sine") one_sine = true, it = args.erase(it);
+        else ++it;
+    const Args a = parse(static_cast<int>(args.size()), args.data(), 2,
+                         {"--case", "--train", "--pulses", "--x", "--to", "--pga", "--q", "--rd", "--ap", "--wp",
+                          "--alpha", "--p", "--half-height", "--height", "--model", "--solver", "--rtol", "--atol", "--criterion",
+                          "--restitution", "--output", "--dt", "--record", "--unit", "--record-dt"});
+    auto has = [&](const char* f) { return a.values.count(f) > 0; };
+    auto num = [&](const char* f) { return number(f, a.values.at(f)); };
+    if (!has("--alpha")) throw UsageError("--alpha is required");
+    const double alpha = num("--alpha");
+    const int geometry = has("--p") + has("--half-height") + has("--height");
+    if (geometry != 1) throw UsageError("give exactly one of --p, --half-height and --height");
+    Model model;
+    try {
+        model.block = has("--p") ? Block::from_p(num("--p"), alpha)
+                                 : has("--half-height") ? Block::from_half_height(num("--half-height"), alpha)
+                                                        : Block::from_full_height(num("--height"), alpha);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    const std::string model_name = has("--model") ? a.values.at("--model") : "linearised";
+    if (model_name == "full") model.equation = Equation::full;
+    else if (model_name != "linearised") throw UsageError("--model: linearised or full (got " + model_name + ")");
+    if (has("--restitution")) {
+        const double e = restitution_option(a.values.at("--restitution"));
+        model.restitution = std::isnan(e) ? housner_restitution(alpha) : e;
+    }
+    SimulationOptions options;
+    try {
+        options.solver.kind = has("--solver") ? parse_solver(a.values.at("--solver"))
+                                              : (model.equation == Equation::full ? SolverKind::dopri5 : SolverKind::exact);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--solver: ") + e.what());
+    }
+    tolerance_options(a.values, alpha, options.solver);
+    Criterion criterion = Criterion::final_rotation;
+    try {
+        if (has("--criterion")) criterion = parse_criterion(a.values.at("--criterion"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--criterion: ") + e.what());
+    }
+    // The amplitude as --pga G (in g) or --q Q (PGA = Q alpha g).
+    auto pga_or_q = [&] { return has("--pga") ? num("--pga") : num("--q") * alpha; };
+    std::unique_ptr<GroundInput> input;
+    if (one_sine + has("--record") + (has("--case") || has("--train")) != 1)
+        throw UsageError("give exactly one input: --case or --train, --one-sine, or --record");
+    if (!has("--record") && (has("--unit") || has("--record-dt")))
+        throw UsageError("--unit and --record-dt go with --record");
+    if (has("--record")) {
+        for (const char* f : {"--rd", "--to", "--x", "--pulses", "--ap", "--wp"})
+            if (has(f)) throw UsageError(std::string(f) + " does not apply to --record");
+        if (has("--pga") && has("--q")) throw UsageError("give at most one of --pga and --q");
+        records::Record r = load_record(a.values.at("--record"), a, "--record-dt");
+        std::vector<double> g = r.in_g(kGravity);
+        const double peak = r.pga() / kGravity;
+        auto brief = [](double v) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.6g", v);
+            return std::string(text);
+        };
+        std::string name = r.name + " (" + std::to_string(g.size()) + " samples, dt = " + brief(r.dt) + " s, PGA " +
+                           brief(peak) + " g";
+        if (has("--pga") || has("--q")) {
+            const double pga = pga_or_q();
+            if (!(pga > 0)) throw UsageError("the PGA must be > 0");
+            if (!(peak > 0)) throw UsageError(a.values.at("--record") + ": the record is zero throughout and cannot be scaled");
+            for (double& v : g) v *= pga / peak;
+            name += ", scaled to " + brief(pga) + " g";
+        }
+        input = std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
+    } else if (one_sine) {
+        if (!has("--ap") || !has("--wp")) throw UsageError("--one-sine needs --ap and --wp");
+        // simulate() refuses a pulse slower than OneSinePulse::slowest_wp_over_p
+        // times p (why: ground_input.hpp); said here in the option's terms.
+        const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
+        if (num("--wp") > 0 && num("--wp") < slowest) {
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "--wp: must be at least 1e-6 p = %.3g rad/s (got %g): slower pulses lift the block by less "
+                          "than the rounding of the input",
+                          slowest, num("--wp"));
+            throw UsageError(text);
+        }
+        try {
+            input = std::make_unique<OneSinePulse>(num("--ap"), num("--wp"), model.uplift_threshold());
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(e.what());
+        }
+    } else {
+        std::string equation;
+        const PulseTrain train = train_from(a, equation);
+        if (has("--to") == has("--x")) throw UsageError("give exactly one of --to and --x");
+        const double to = has("--to") ? num("--to") : num("--x") / model.block.p;
+        if (!(to > 0)) throw UsageError("--to/--x: must be > 0");
+        const int amplitude = has("--pga") + has("--q") + has("--rd");
+        if (amplitude != 1) throw UsageError("give exactly one of --pga, --q and --rd");
+        const double pga = has("--rd") ? num("--rd") * q_factor(train, model.block.p * to).q * alpha : pga_or_q();
+        if (!(pga > 0)) throw UsageError("the PGA must be > 0");
+        input = std::make_unique<PulseInput>(train, pga, to);
+    }
+    if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
+    if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
+    const SimulationResult r = simulate(model, *input, options);
+    char atol_rad[48];
+    std::snprintf(atol_rad, sizeof atol_rad, " = %g rad", options.solver.atol_alpha * alpha);
+    const std::string tolerance = options.solver.kind == SolverKind::exact
+                                      ? std::string(" (closed form between events)")
+                                      : " (" + tolerance_text(options.solver) + atol_rad + ")";
+    if (has("--output")) {
+        harness::Table table({"t", "theta_over_alpha", "omega_over_alpha_p"});
+        table.note("model", model.describe());
+        table.note("input", input->describe());
+        table.note("solver", solver_name(options.solver.kind) + tolerance);
+        table.note("criterion", criterion_name(criterion));
+        for (const Sample& s : r.samples)
+            table.row().add(s.t).add(s.theta / alpha).add(s.omega / (alpha * model.block.p));
+        table.write(a.values.at("--output"));
+    }
+    const bool collapse = r.collapse(criterion, alpha);
+    // The block starts at rest and rocks only once |a| > the threshold (eq. 3: alpha g; eq. 1: g tan alpha).
+    const bool lifts = input->peak() > model.uplift_threshold();
+    if (a.json) {
+        auto b = [](bool v) { return v ? "true" : "false"; };
+        std::cout << "{\"model\": " << json_string(model.describe()) << ", \"input\": " << json_string(input->describe())
+                  << ", \"solver\": " << json_string(solver_name(options.solver.kind))
+                  << ", \"rtol\": " << harness::format_number(options.solver.rtol)
+                  << ", \"atol_rad\": " << harness::format_number(options.solver.atol_alpha * alpha)
+                  << ", \"criterion\": " << json_string(criterion_name(criterion)) << ", \"collapse\": " << b(collapse)
+                  << ", \"t_fin\": " << harness::format_number(r.t_fin)
+                  << ", \"theta_tfin_over_alpha\": "
+                  << (r.overturned_during_input ? "null" : harness::format_number(r.theta_at_tfin / alpha))
+                  << ", \"max_theta_input_over_alpha\": " << harness::format_number(r.max_abs_theta_input / alpha)
+                  << ", \"input_lifts_block\": " << b(lifts)
+                  << ", \"impacts\": " << r.impacts << ", \"overturned\": " << b(r.overturned)
+                  << ", \"overturned_during_input\": " << b(r.overturned_during_input)
+                  << ", \"t_overturn\": " << (std::isnan(r.t_overturn) ? "null" : harness::format_number(r.t_overturn))
+                  << ", \"collapse_final_rotation\": " << b(r.collapse(Criterion::final_rotation, alpha))
+                  << ", \"collapse_peak_rotation\": " << b(r.collapse(Criterion::peak_rotation, alpha))
+                  << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
+    } else {
+        std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
+        std::printf("  model:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(), input->describe().c_str(),
+                    solver_name(options.solver.kind).c_str(), tolerance.c_str());
+        // A block that fell during the input has no theta(t_fin) to print: it lies on the ground.
+        if (r.overturned_during_input)
+            std::printf("  fell at t = %.10g s, before t_fin = %g s: |theta| reached the fall angle, %.10g alpha\n",
+                        r.t_overturn, r.t_fin, options.overturn_angle / alpha);
+        else
+            std::printf("  theta(t_fin)/alpha = %.10g at t_fin = %g s; max |theta|/alpha during the input = %.10g\n",
+                        r.theta_at_tfin / alpha, r.t_fin, r.max_abs_theta_input / alpha);
+        const std::string when = !r.overturned ? ""
+                                 : std::isnan(r.t_overturn)
+                                     ? " (the free rocking followed, 200/p, ended before the fall; decided from its energy and side of the top)"
+                                     : " (at t = " + harness::format_number(r.t_overturn) + " s)";
+        // Without this line a zero theta reads like a result of the dynamics;
+        // it is the input that stays at or below the uplift threshold.
+        if (!lifts)
+            std::printf("  the input never lifts the block: its peak, %.6g g, is at or below the uplift threshold %s = %.6g g\n",
+                        input->peak(), model.equation == Equation::full ? "tan alpha" : "alpha", model.uplift_threshold());
+        std::printf("  impacts: %d; overturns (free rocking included): %s%s\n", r.impacts, r.overturned ? "yes" : "no",
+                    when.c_str());
+        std::printf("  final-rotation: %s; peak-rotation: %s; overturning: %s\n",
+                    r.collapse(Criterion::final_rotation, alpha) ? "collapse" : "safe",
+                    r.collapse(Criterion::peak_rotation, alpha) ? "collapse" : "safe",
+                    r.collapse(Criterion::overturning, alpha) ? "collapse" : "safe");
+    }
+    return 0;
+}
+
+}  // namespace rocking::cli

@@ -1,0 +1,14 @@
+// Where the closed forms hold at a q (Excursion), as q and response print it.
+#pragma once
+
+#include <string>
+
+#include "qfactor/superposition.hpp"
+
+namespace rocking::cli {
+
+extern const char* kModel;
+void print_validity(const Excursion& e, const char* prefix);
+std::string json_validity(const Excursion& e);
+
+}  // namespace rocking::cli
