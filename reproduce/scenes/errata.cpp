@@ -209,7 +209,7 @@ void run_errata(SceneContext& ctx) {
         double lowest_phi = INFINITY, lowest_dphi = INFINITY, highest_phi = -INFINITY;
         double x_reversal = NAN, x_above = NAN;
         for (double x : x_grid()) {
-            const Excursion e = excursion(train, x, q_factor(train, x).q);
+            const Excursion e = collapse_excursion(train, x);
             lowest_phi = std::fmin(lowest_phi, e.min_phi);
             lowest_dphi = std::fmin(lowest_dphi, e.min_dphi);
             highest_phi = std::fmax(highest_phi, e.max_phi);

@@ -20,7 +20,7 @@ int cmd_q(int argc, char** argv) {
     const PulseTrain train = train_from(a, equation);
     const double x = x_from(a);
     const QFactor r = q_factor(train, x);
-    const Excursion e = excursion(train, x, r.q);
+    const Excursion e = collapse_excursion(train, x);
     if (a.json) {
         std::cout << "{\"input\": " << json_string(train.name()) << ", \"pulses\": " << train.size()
                   << ", \"x\": " << harness::format_number(x) << ", \"q\": " << harness::format_number(r.q)

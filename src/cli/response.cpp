@@ -19,23 +19,41 @@ int cmd_response(int argc, char** argv) {
     std::string equation;
     const PulseTrain train = train_from(a, equation);
     const double x = x_from(a);
-    const double q = a.values.count("--q") ? number("--q", a.values.at("--q")) : q_factor(train, x).q;
+    // Without --q, the response at the collapse q itself: its rounding to
+    // double alone would move theta(t_fin) off alpha by eps cosh(x t_fin).
+    const bool at_collapse = !a.values.count("--q");
+    const double q = at_collapse ? q_factor(train, x).q : number("--q", a.values.at("--q"));
     if (!(q > 0)) throw UsageError("--q: must be > 0");
     const int steps = a.values.count("--steps") ? integer("--steps", a.values.at("--steps")) : 20;
     if (steps < 1 || steps > 1000000) throw UsageError("--steps: must be between 1 and 1000000");
-    const Excursion e = excursion(train, x, q);
+    const Excursion e = at_collapse ? collapse_excursion(train, x) : excursion(train, x, q);
+    auto state = [&](double tau) { return at_collapse ? collapse_response(train, x, tau) : response(train, x, q, tau); };
+    // A q off the collapse q makes theta grow like e^{x t/to}: past the double
+    // range the rows stop, and the output says where, rather than print inf.
+    int last = steps;
+    for (int k = 0; k <= steps && last == steps; ++k) {
+        const ResponseState s = state(train.t_fin() * k / steps);
+        if (!std::isfinite(s.phi) || !std::isfinite(s.dphi)) last = k - 1;
+    }
+    const double t_end = last < steps ? train.t_fin() * (last + 1) / steps : NAN;
+    const std::string why = "theta/alpha leaves the double range (beyond 1.8e308) on the linearised equation";
     if (a.json) {
         std::cout << "{\"input\": " << json_string(train.name()) << ", \"x\": " << harness::format_number(x)
-                  << ", \"q\": " << harness::format_number(q) << ", \"model\": " << json_string(kModel)
-                  << json_validity(e) << ", \"samples\": [";
+                  << ", \"q\": " << harness::format_number(q) << ", \"at_collapse_q\": " << (at_collapse ? "true" : "false")
+                  << ", \"model\": " << json_string(kModel) << json_validity(e) << ", \"rows_end_at\": "
+                  << (last < steps ? harness::format_number(t_end) : std::string("null"))
+                  << ", \"rows_end_reason\": " << (last < steps ? json_string(why) : std::string("null"))
+                  << ", \"samples\": [";
     } else {
-        std::printf("# %s, x = %g, q = %.10g; %s\n", train.name().c_str(), x, q, kModel);
+        std::printf("# %s, x = %g, q = %.10g%s; %s\n", train.name().c_str(), x, q,
+                    at_collapse ? " (the collapse q, evaluated exactly)" : "", kModel);
         print_validity(e, "# ");
+        if (last < steps) std::printf("# rows end before t/to = %.6g: %s\n", t_end, why.c_str());
         std::printf("# t/to,theta/alpha,theta'/(alpha p)\n");
     }
-    for (int k = 0; k <= steps; ++k) {
+    for (int k = 0; k <= last; ++k) {
         const double tau = train.t_fin() * k / steps;
-        const ResponseState s = response(train, x, q, tau);
+        const ResponseState s = state(tau);
         if (a.json)
             std::cout << (k ? ", " : "") << "[" << harness::format_number(tau) << ", " << harness::format_number(s.phi)
                       << ", " << harness::format_number(s.dphi) << "]";
@@ -44,6 +62,5 @@ int cmd_response(int argc, char** argv) {
     if (a.json) std::cout << "]}\n";
     return 0;
 }
-
 
 }  // namespace rocking::cli

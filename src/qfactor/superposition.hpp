@@ -42,20 +42,27 @@ double first_moment(const PulseTrain& train);
 double q_large_x_limit(const PulseTrain& train);
 
 struct ResponseState {
-    double phi;   // theta / alpha
-    double dphi;  // (dtheta/dt) / (alpha p)
-    double ddphi; // (d2theta/dt2) / (alpha p^2)
+    double phi;       // theta / alpha
+    double dphi;      // (dtheta/dt) / (alpha p)
+    double ddphi;     // (d2theta/dt2) / (alpha p^2)
+    double magnitude; // sum of the |pieces| phi is summed from: its rounding
+                      // error is at most a few (N + 4) eps times this
 };
 
-// (S1) and its derivative at tau = t/to for a given q.  After t_fin the
-// input is zero (free rocking, still linearised and without impact).  Each
-// is a sum of terms dF_j f(x (tau - tau_j)), accurate to a few eps of the
-// sum of their absolute values (its condition): for phi, with cosh u - 1
-// taken without cancellation, of order 1 where x is small (q ~ 1/x^2 against
-// cosh u - 1 ~ x^2) and growing like e^{x tau}, the instability's, where x
-// is large (test: ResponsePhiIsAccurateToTheConditionOfItsSum); for ddphi,
-// about q e^{x tau}.
+// (S1) and its derivatives at tau = t/to for a given q.  After t_fin the
+// input is zero (free rocking, still linearised and without impact).  Up to
+// t_fin, at the collapse q, (S1)'s terms grow like e^{x(T + tau)} and cancel
+// to O(e^{xT}); response() sums instead the per-jump forms (R1)-(R3) of
+// superposition.cpp, where that cancellation is done exactly, scaled by
+// 2 e^{-xT} as (S3): no overflow for any x, and an error of a few (N + 4) eps
+// times magnitude (tests: ResponseAgreesWithMultiprecisionAtTheExtremes).
+// At another q = r q_c it adds (r - 1)(cosh(x tau) - 1), the response's true
+// growth; a value beyond the double range comes back as +-inf.
 ResponseState response(const PulseTrain& train, double x, double q, double tau);
+// The same at the collapse q itself, not at its rounding to double: at large
+// x that rounding alone moves phi(t_fin) away from 1 by eps cosh(x t_fin).
+// Throws std::domain_error where the train has no collapse q (as q_factor).
+ResponseState collapse_response(const PulseTrain& train, double x, double tau);
 
 // The lowest phi and phi' from the end of the first pulse to t_fin, and the
 // highest phi before t_fin, found exactly (pulse ends and stationary points
@@ -72,8 +79,12 @@ struct Excursion {
                         // motion reverses before t_fin (the paper assumes it does not)
     double max_phi;     // highest theta/alpha on (0, t_fin): >= 1 means theta passed
                         // alpha before the instant where the paper imposes it
+    double tau_at_max;  // where it occurs, in units of to
     bool stays_positive() const { return onset && min_phi > 0.0; }
+    bool passes_alpha() const { return max_phi >= 1.0; }
 };
 Excursion excursion(const PulseTrain& train, double x, double q);
+// At the collapse q itself, as collapse_response.
+Excursion collapse_excursion(const PulseTrain& train, double x);
 
 }  // namespace rocking
