@@ -28,6 +28,20 @@ check "response ends at alpha"       $'\n2,1,'   "$rocking" response --case 2 --
 check "response below onset warns"   "the input does not lift the block" "$rocking" response --case 2 --x 0.5 --q 0.5
 check "response past an impact warns" "the block hits the ground before t_fin" "$rocking" response --case 2 --x 0.5 --q 1.5
 check "response json validity"       '"rocking_starts": false, "impact_free": false' "$rocking" response --case 2 --x 0.5 --q 0.5 --json
+# Issue 31, item 1: at the collapse q theta(t_fin)/alpha is 1 at any x (it printed -593.2, and nan at x = 700).
+check "response at x = 15 ends at alpha"  $'\n3,1,'  "$rocking" response --case 4 --x 15 --steps 4
+check "response at x = 700 ends at alpha" $'\n2,1,'  "$rocking" response --case 2 --x 700 --steps 4
+check_not "response at x = 700: no nan"   "nan" "$rocking" response --case 2 --x 700 --steps 40
+check "400 pulses end at alpha"           $'\n400,1,' "$rocking" response --case 1 --pulses 400 --x 2 --steps 4
+# Off the collapse q the response leaves the double range: the rows stop there, saying so.
+check "response past the double range"    "# rows end before t/to = 0.75" "$rocking" response --case 2 --x 1000 --q 5 --steps 8
+check_not "response past the range: no inf" "inf" "$rocking" response --case 2 --x 1000 --q 5 --steps 8
+# Item 2: the flags come from the same evaluation (it said theta went down to -1.84e9 alpha at x = 20).
+check "flags at x = 20"                   "impact-free up to t_fin: yes; motion reverses before t_fin: yes; theta passes alpha before t_fin: yes" "$rocking" q --case 2 --x 20
+check_not "no impact warning at x = 20"   "hits the ground" "$rocking" q --case 2 --x 20
+check "x = 700 lifts the block"           "rocking starts: yes" "$rocking" q --case 2 --x 700
+check "passing alpha is a json flag"      '"passes_alpha_before_t_fin": true' "$rocking" q --case 4 --x 15 --json
+check "small x: alpha not passed"         '"passes_alpha_before_t_fin": false' "$rocking" q --case 2 --x 1e-8 --json
 check "bad x is named"               "--x: 'abc' is not a number" "$rocking" q --case 2 --x abc
 check "negative x is refused"        "--x: must be > 0"  "$rocking" q --case 2 --x -1
 check "bad case is named"            "--case: must be 1, 2, 3, 4 or 5" "$rocking" q --case 7 --x 1

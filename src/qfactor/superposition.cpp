@@ -44,11 +44,14 @@ std::string describe_x(double x) {
 // 1 - e^{-u} for u >= 0, without cancellation as u -> 0.
 double one_minus_exp(double u) { return -std::expm1(-u); }
 
-// k e^u / 2 without overflow in e^u where k e^u / 2 itself is finite.
+// k e^u / 2 without overflow in e^u where k e^u / 2 itself is finite.  As
+// (k/2 e^{u/2}) e^{u/2}, each factor to an ulp: exp(u + log(k/2)) would
+// round its argument, an error of u eps (1.5e-13 at u = 700).
 double half_exp_times(double k, double u) {
     if (k == 0.0) return 0.0;
     if (u < 700.0) return 0.5 * k * std::exp(u);
-    return std::copysign(std::exp(u + std::log(0.5 * std::fabs(k))), k);
+    const double half = std::exp(0.5 * u);
+    return 0.5 * k * half * half;
 }
 
 // The denominator of (S3), sum_j dA_j e^{-x tau_j} (1 - e^{-x s_j})^2,
@@ -123,7 +126,8 @@ namespace {
 // denominator they give phi, phi' and phi'' at the collapse q.
 struct Numerators {
     double phi = 0.0, dphi = 0.0, ddphi = 0.0;
-    double magnitude = 0.0;  // sum over the jumps of |dA_j| (P_j + Q_j) of phi's pieces
+    double magnitude = 0.0;   // sum over the jumps of |dA_j| (P_j + Q_j) of phi's pieces
+    double dmagnitude = 0.0;  // the same for phi'
 };
 Numerators collapse_numerators(const std::vector<Jump>& jumps, double x, double T, double tau) {
     const double g = one_minus_exp(x * tau), g2 = one_minus_exp(2.0 * x * tau), gt = one_minus_exp(x * T);
@@ -143,12 +147,14 @@ Numerators collapse_numerators(const std::vector<Jump>& jumps, double x, double 
             n.dphi += j.dA * (dP - dQ);
             n.ddphi += j.dA * (ddP + ddQ);
             n.magnitude += std::fabs(j.dA) * (P + Q);
+            n.dmagnitude += std::fabs(j.dA) * (dP + dQ);
         } else {
             const double e_j = 0.5 * std::exp(x * (tau - j.tau)) * gc * gc;
             n.phi -= j.dA * e_j * g * g;
             n.dphi -= j.dA * e_j * g2;
             n.ddphi -= j.dA * e_j * (1.0 + back);
             n.magnitude += std::fabs(j.dA * e_j * g * g);
+            n.dmagnitude += std::fabs(j.dA * e_j * g2);
         }
     }
     return n;
@@ -159,7 +165,7 @@ Numerators collapse_numerators(const std::vector<Jump>& jumps, double x, double 
 // e^{-x tau_j} (1 - e^{-u})^2, u = x(tau - tau_j)) and scaled back at the end:
 // the response comes out as +-inf only where it is beyond the double range.
 ResponseState direct_response(const std::vector<Jump>& jumps, double x, double q, double tau) {
-    double phi = 0.0, dphi = 0.0, ddphi = 0.0, magnitude = 0.0;
+    double phi = 0.0, dphi = 0.0, ddphi = 0.0, magnitude = 0.0, dmagnitude = 0.0;
     for (std::size_t k = 0; k < jumps.size() && jumps[k].tau <= tau; ++k) {
         const double dF = (k == 0) ? q * jumps[k].dA - 1.0 : q * jumps[k].dA;
         const double u = x * (tau - jumps[k].tau), e = std::exp(-x * jumps[k].tau), g = one_minus_exp(u);
@@ -168,17 +174,20 @@ ResponseState direct_response(const std::vector<Jump>& jumps, double x, double q
         dphi += dF * e * one_minus_exp(2.0 * u);
         ddphi += dF * e * (1.0 + back);
         magnitude += std::fabs(dF) * e * g * g;
+        dmagnitude += std::fabs(dF) * e * one_minus_exp(2.0 * u);
     }
     const double u = x * tau;
-    return {half_exp_times(phi, u), half_exp_times(dphi, u), half_exp_times(ddphi, u), half_exp_times(magnitude, u)};
+    return {half_exp_times(phi, u), half_exp_times(dphi, u), half_exp_times(ddphi, u), half_exp_times(magnitude, u),
+            half_exp_times(dmagnitude, u)};
 }
 
 // (r - 1)(cosh u - 1), (r - 1) sinh u and (r - 1) cosh u, finite wherever they can be.
 ResponseState off_collapse(double r_minus_1, double u) {
     if (u < 700.0)
-        return {r_minus_1 * cosh_m1(u), r_minus_1 * std::sinh(u), r_minus_1 * std::cosh(u), std::fabs(r_minus_1) * cosh_m1(u)};
+        return {r_minus_1 * cosh_m1(u), r_minus_1 * std::sinh(u), r_minus_1 * std::cosh(u),
+                std::fabs(r_minus_1) * cosh_m1(u), std::fabs(r_minus_1 * std::sinh(u))};
     const double v = half_exp_times(r_minus_1, u);
-    return {v, v, v, std::fabs(v)};
+    return {v, v, v, std::fabs(v), std::fabs(v)};
 }
 
 // The response to one train at one x, at the exact collapse q or at a given q.
@@ -213,19 +222,33 @@ public:
     }
 
     ResponseState at(double tau) const {
-        if (tau <= 0.0) return ResponseState{0.0, 0.0, 0.0, 0.0};
+        if (tau <= 0.0) return ResponseState{0.0, 0.0, 0.0, 0.0, 0.0};
         if (tau < T_) return up_to_t_fin(tau);
         // After t_fin the input is zero: psi = phi - 1 and phi' leave t_fin as
         //   psi = psi_T cosh u + w_T sinh u,  u = x (tau - T),
-        // written as (psi_T + w_T) e^u / 2 + (psi_T - w_T) e^{-u} / 2 so that a
-        // large u gives the response's true (possibly infinite) size, not inf - inf.
+        // from u = 1 on written as (psi_T + w_T) e^u / 2 + (psi_T - w_T) e^{-u} / 2,
+        // so that a large u gives the response's true (possibly infinite) size,
+        // not inf - inf; below 1 as printed, where that split would cancel.
         const ResponseState end = up_to_t_fin(T_);
-        const double psi = end.phi - 1.0, w = end.dphi, u = x_ * (tau - T_), decay = 0.5 * std::exp(-u);
+        const double psi = end.phi - 1.0, w = end.dphi, u = x_ * (tau - T_);
+        // Beyond the double range at t_fin already: it only grows from there.
+        if (!std::isfinite(psi) || !std::isfinite(w)) return end;
         ResponseState s;
-        s.ddphi = half_exp_times(psi + w, u) + (psi - w) * decay;
+        double grows, decays;  // cosh u and sinh u are (grows + decays), (grows - decays) of 1
+        if (u < 1.0) {
+            s.ddphi = psi * std::cosh(u) + w * std::sinh(u);
+            s.dphi = psi * std::sinh(u) + w * std::cosh(u);
+            grows = 0.5 * std::exp(u), decays = 0.5 * std::exp(-u);
+        } else {
+            const double decay = 0.5 * std::exp(-u);
+            s.ddphi = half_exp_times(psi + w, u) + (psi - w) * decay;
+            s.dphi = half_exp_times(psi + w, u) - (psi - w) * decay;
+            grows = half_exp_times(1.0, u), decays = decay;
+        }
         s.phi = 1.0 + s.ddphi;
-        s.dphi = half_exp_times(psi + w, u) - (psi - w) * decay;
-        s.magnitude = 1.0 + half_exp_times(end.magnitude + std::fabs(psi) + std::fabs(w), u);
+        const double on_psi = end.magnitude + std::fabs(psi), on_w = end.dmagnitude + std::fabs(w);
+        s.magnitude = 1.0 + on_psi * (grows + decays) + on_w * (grows - decays);
+        s.dmagnitude = on_psi * (grows - decays) + on_w * (grows + decays);
         return s;
     }
 
@@ -243,11 +266,13 @@ private:
         const double phi_c = n.phi / d_.sum;
         // phi_c carries the rounding of its sum and of the denominator's.
         const double magnitude_c = (n.magnitude + std::fabs(n.phi) * d_.magnitude / d_.sum) / d_.sum;
-        if (collapse_) return {phi_c, n.dphi / d_.sum, n.ddphi / d_.sum, magnitude_c};
+        const double dmagnitude_c = (n.dmagnitude + std::fabs(n.dphi) * d_.magnitude / d_.sum) / d_.sum;
+        if (collapse_) return {phi_c, n.dphi / d_.sum, n.ddphi / d_.sum, magnitude_c, dmagnitude_c};
         const double r = q_ / qc_, u = x_ * tau;
         const ResponseState off = off_collapse((q_ - qc_) / qc_, u);
         ResponseState s{r * phi_c + off.phi, r * n.dphi / d_.sum + off.dphi, r * n.ddphi / d_.sum + off.ddphi,
-                        r * magnitude_c + off.magnitude + r * (d_.magnitude / d_.sum) * std::fabs(off_collapse(1.0, u).phi)};
+                        r * magnitude_c + off.magnitude + r * (d_.magnitude / d_.sum) * std::fabs(off_collapse(1.0, u).phi),
+                        r * dmagnitude_c + off.dmagnitude + r * (d_.magnitude / d_.sum) * std::fabs(off_collapse(1.0, u).dphi)};
         const ResponseState direct = direct_response(jumps_, x_, q_, tau);
         return direct.magnitude < s.magnitude ? direct : s;
     }
@@ -265,8 +290,8 @@ Excursion excursion_of(const PulseTrain& train, double x, const Evaluator& respo
     Excursion out{response.onset(), INFINITY, 0.0, INFINITY, -INFINITY, 0.0};
     // Within a pulse of level F = q A - 1 and length U = x d, psi = phi + F and
     // w = phi' move as psi = A e^u + B e^{-u}, w = A e^u - B e^{-u}, so
-    //   psi is stationary at e^{2u} = B/A (A B > 0), where psi = 2 sgn(A) sqrt(AB),
-    //   w   is stationary at e^{2u} = -B/A (A B < 0), where w = 2 sgn(A) sqrt(-AB).
+    //   psi is stationary at e^{2u} = B/A (A B > 0),
+    //   w   is stationary at e^{2u} = -B/A (A B < 0).
     // A = (psi + w)/2 and B = (psi - w)/2 at the pulse's start, or A e^U and
     // B e^{-U} at its end, whichever end knows each better: near an
     // equilibrium A is far below the start's rounding (case 2 at x = 700
@@ -305,15 +330,17 @@ Excursion excursion_of(const PulseTrain& train, double x, const Evaluator& respo
         const bool B_from_start = error0 <= error1 * std::exp(U);
         const double B = B_from_start ? 0.5 * (psi0 - w0) : 0.5 * (psi1 - w1);
         const double log_B = std::log(std::fabs(B)) + (B_from_start ? 0.0 : U);
+        // The value at the stationary point from the evaluator too: 2 sgn(A)
+        // sqrt(AB) - F would cancel where x is small (F ~ q ~ 1/x^2).
         if (A != 0.0 && B != 0.0) {
             const double u = 0.5 * (log_B - log_A), where = tau0 + u / x;
-            const double size = 2.0 * std::copysign(std::exp(0.5 * (log_A + log_B)), A);
             if (u > 0.0 && u < U) {
+                const ResponseState there = response.at(where);
                 if ((A > 0.0) == (B > 0.0)) {
-                    if (!first) consider(size - F, where);
-                    consider_max(size - F, where);
+                    if (!first) consider(there.phi, where);
+                    consider_max(there.phi, where);
                 } else {
-                    out.min_dphi = std::fmin(out.min_dphi, size);
+                    out.min_dphi = std::fmin(out.min_dphi, there.dphi);
                 }
             }
         }

@@ -47,6 +47,7 @@ struct ResponseState {
     double ddphi;     // (d2theta/dt2) / (alpha p^2)
     double magnitude; // sum of the |pieces| phi is summed from: its rounding
                       // error is at most a few (N + 4) eps times this
+    double dmagnitude; // the same for dphi
 };
 
 // (S1) and its derivatives at tau = t/to for a given q.  After t_fin the
