@@ -40,12 +40,16 @@ int cmd_assess(int argc, char** argv) {
         throw UsageError(text);
     }
     const double q27 = q2_n6(x), q_record = h.pga / (alpha * kGravity);
+    // A PGA near the largest double over a tiny alpha printed "q_record": inf.
+    if (!std::isfinite(q_record))
+        throw std::runtime_error(path + ": the record's q = PGA/(alpha g) overflows a double at --alpha " +
+                                 a.values.at("--alpha") + " (PGA = " + four(h.pga) + " m/s^2)");
     const bool safe = q_record < q27;
     if (a.json) {
-        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
-                  << ", \"p\": " << harness::format_number(b.p) << ", \"to5\": " << harness::format_number(to5)
-                  << ", \"x\": " << harness::format_number(x) << ", \"q_eq27\": " << harness::format_number(q27)
-                  << ", \"q_record\": " << harness::format_number(q_record) << ", \"passes\": " << (safe ? "true" : "false")
+        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << json_number(alpha)
+                  << ", \"p\": " << json_number(b.p) << ", \"to5\": " << json_number(to5)
+                  << ", \"x\": " << json_number(x) << ", \"q_eq27\": " << json_number(q27)
+                  << ", \"q_record\": " << json_number(q_record) << ", \"passes\": " << (safe ? "true" : "false")
                   << "}\n";
     } else {
         std::printf("%s: %s\n", r.name.c_str(), safe ? "PASSES (the record's q is below eq. 27's)" : "FAILS");

@@ -46,10 +46,10 @@ int cmd_collapse(int argc, char** argv) {
     const SampledInput input(r.in_g(kGravity), r.dt, r.name);
     const records::CollapseResult c = records::smallest_collapse_p(input, alpha, o);
     if (a.json) {
-        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << harness::format_number(alpha)
+        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << json_number(alpha)
                   << ", \"found\": " << (c.found ? "true" : "false")
-                  << ", \"p\": " << (c.found ? harness::format_number(c.p) : std::string("null"))
-                  << ", \"p_safe\": " << (c.found && !c.below_range() ? harness::format_number(c.p_safe) : std::string("null"))
+                  << ", \"p\": " << (c.found ? json_number(c.p) : std::string("null"))
+                  << ", \"p_safe\": " << (c.found && !c.below_range() ? json_number(c.p_safe) : std::string("null"))
                   << ", \"below_range\": " << (c.below_range() ? "true" : "false") << ", \"simulations\": " << c.simulations
                   << ", \"search\": " << json_string(o.describe()) << "}\n";
     } else {

@@ -140,24 +140,120 @@ std::string four(double v) {
     return buf;
 }
 
+namespace {
+
+// The first of the half-periods' measures that is not finite, or null.
+const char* first_not_finite(const records::HalfPeriods& h) {
+    if (!std::isfinite(h.pga)) return "PGA";
+    if (!std::isfinite(h.pgv)) return "PGV";
+    if (!std::isfinite(h.amax)) return "Amax";
+    static const char* to[] = {"to_1", "to_2", "to_3", "to_4", "to_5", "to_6", "to_7", "to_8", "to_9", "to_10", "to_11"};
+    for (int k = 0; k < 11; ++k)
+        if (!std::isfinite(h.to[k])) return to[k];
+    return nullptr;
+}
+
+}  // namespace
+
 // The record's half-periods; a record they cannot be measured on is refused
-// with its file's name.
+// with its file's name.  Samples near the largest double overflow once
+// integrated: PGV and to_4 came out inf and to_3 nan, and with a longer step
+// the measures crashed; the sum of |a| dt bounds the velocity and every
+// pulse's area, so it is checked before and each measure after.
 records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path) {
+    double bound = 0;
+    for (double a : r.accel) bound += std::fabs(a) * r.dt;
+    if (!std::isfinite(bound))
+        throw std::runtime_error(path + ": the record's velocity overflows a double (the sum of |a| dt exceeds "
+                                        "1.8e308 m/s); scale the record down");
+    records::HalfPeriods h;
     try {
-        return records::half_periods(r);
+        h = records::half_periods(r);
     } catch (const std::invalid_argument& e) {
         throw std::runtime_error(path + ": " + e.what());
     }
+    if (const char* which = first_not_finite(h))
+        throw std::runtime_error(path + ": the record's " + which +
+                                 " overflows a double; its samples are too large to measure (scale the record down)");
+    return h;
 }
 
+namespace {
+
+// How many bytes the UTF-8 sequence at s[i] spans when it is well formed;
+// 0 when it is not, with `bad` set to its maximal subpart (Unicode 15, 3.9):
+// the bytes one U+FFFD stands for, as Python's decode(errors="replace") counts.
+std::size_t utf8_length(const std::string& s, std::size_t i, std::size_t& bad) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c < 0x80) return 1;
+    std::size_t need = 0;
+    unsigned char low = 0x80, high = 0xBF;  // the second byte's range; overlongs and surrogates narrow it
+    if (c >= 0xC2 && c <= 0xDF) need = 2;
+    else if (c >= 0xE0 && c <= 0xEF) need = 3, low = c == 0xE0 ? 0xA0 : 0x80, high = c == 0xED ? 0x9F : 0xBF;
+    else if (c >= 0xF0 && c <= 0xF4) need = 4, low = c == 0xF0 ? 0x90 : 0x80, high = c == 0xF4 ? 0x8F : 0xBF;
+    else {
+        bad = 1;
+        return 0;
+    }
+    std::size_t k = 1;
+    for (; k < need && i + k < s.size(); ++k) {
+        const unsigned char d = static_cast<unsigned char>(s[i + k]);
+        if (d < (k == 1 ? low : 0x80) || d > (k == 1 ? high : 0xBF)) break;
+    }
+    if (k == need) return need;
+    bad = k;
+    return 0;
+}
+
+// The code point of a well-formed sequence of 1 or 2 bytes (enough to find the controls).
+unsigned short_code_point(const std::string& s, std::size_t i, std::size_t length) {
+    const unsigned c = static_cast<unsigned char>(s[i]);
+    return length == 1 ? c : ((c & 0x1F) << 6) | (static_cast<unsigned char>(s[i + 1]) & 0x3F);
+}
+
+void escape_control(unsigned code, std::string& out) {
+    static const char* named[] = {"\\b", "\\t", "\\n", nullptr, "\\f", "\\r"};
+    if (code >= 0x08 && code <= 0x0D && named[code - 0x08]) {
+        out += named[code - 0x08];
+        return;
+    }
+    char text[8];
+    std::snprintf(text, sizeof text, "\\u%04x", code);
+    out += text;
+}
+
+}  // namespace
+
+// File names, ESM header values and PEER titles are bytes, not text: JSON
+// must be valid UTF-8 without raw control characters.  Each ill-formed
+// sequence becomes U+FFFD, one per maximal subpart (as Python decodes with
+// errors="replace"), rather than \u00XX: that escape names a character, so a
+// byte 0xFF would come back as a real "ÿ" that was never in the name.  The
+// C0 and C1 controls and DEL are \u-escaped (or \n, \t, ...), so that a name
+// cannot break a line-oriented reader or a terminal either.
 std::string json_string(const std::string& s) {
     std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
+    for (std::size_t i = 0; i < s.size();) {
+        std::size_t bad = 0;
+        const std::size_t length = utf8_length(s, i, bad);
+        if (length == 0) {
+            out += "\xEF\xBF\xBD";  // U+FFFD
+            i += bad;
+            continue;
+        }
+        const unsigned code = length <= 2 ? short_code_point(s, i, length) : 0x100;
+        if (code == '"' || code == '\\') out += '\\', out += static_cast<char>(code);
+        else if (code < 0x20 || (code >= 0x7F && code <= 0x9F)) escape_control(code, out);
+        else out.append(s, i, length);
+        i += length;
     }
     return out + "\"";
 }
+
+// JSON has no NaN or infinity, and a bare nan or inf makes the whole output
+// unreadable: a value that is not finite is written null, and the output says
+// why beside it (a flag or a reason field) or the command refuses the input.
+std::string json_number(double v) { return std::isfinite(v) ? harness::format_number(v) : "null"; }
 
 // A record file by content, or a plain-text one when --unit (and, for one
 // column, the sampling step under dt_flag) is given.

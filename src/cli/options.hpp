@@ -40,6 +40,7 @@ double x_from(const Args& a);
 std::string four(double v);
 records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path);
 std::string json_string(const std::string& s);
+std::string json_number(double v);
 records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag = "--dt");
 
 // The subcommands, one file each; argv[1] is the subcommand's name.

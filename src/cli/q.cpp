@@ -23,8 +23,8 @@ int cmd_q(int argc, char** argv) {
     const Excursion e = collapse_excursion(train, x);
     if (a.json) {
         std::cout << "{\"input\": " << json_string(train.name()) << ", \"pulses\": " << train.size()
-                  << ", \"x\": " << harness::format_number(x) << ", \"q\": " << harness::format_number(r.q)
-                  << ", \"condition\": " << harness::format_number(r.condition)
+                  << ", \"x\": " << json_number(x) << ", \"q\": " << json_number(r.q)
+                  << ", \"condition\": " << json_number(r.condition)
                   << ", \"equation\": " << json_string(equation) << ", \"model\": " << json_string(kModel)
                   << json_validity(e) << "}\n";
     } else {

@@ -22,10 +22,10 @@ int cmd_record(int argc, char** argv) {
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"format\": " << json_string(r.format)
                   << ", \"name\": " << json_string(r.name) << ", \"samples\": " << r.accel.size()
-                  << ", \"dt\": " << harness::format_number(r.dt) << ", \"pga_ms2\": " << harness::format_number(h.pga)
-                  << ", \"pgv_ms\": " << harness::format_number(h.pgv) << ", \"amax_ms\": " << harness::format_number(h.amax)
+                  << ", \"dt\": " << json_number(r.dt) << ", \"pga_ms2\": " << json_number(h.pga)
+                  << ", \"pgv_ms\": " << json_number(h.pgv) << ", \"amax_ms\": " << json_number(h.amax)
                   << ", \"to\": [";
-        for (int k = 0; k < 11; ++k) std::cout << (k ? ", " : "") << harness::format_number(h.to[k]);
+        for (int k = 0; k < 11; ++k) std::cout << (k ? ", " : "") << json_number(h.to[k]);
         std::cout << "]}\n";
     } else {
         std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,

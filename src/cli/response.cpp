@@ -38,10 +38,10 @@ int cmd_response(int argc, char** argv) {
     const double t_end = last < steps ? train.t_fin() * (last + 1) / steps : NAN;
     const std::string why = "theta/alpha leaves the double range (beyond 1.8e308) on the linearised equation";
     if (a.json) {
-        std::cout << "{\"input\": " << json_string(train.name()) << ", \"x\": " << harness::format_number(x)
-                  << ", \"q\": " << harness::format_number(q) << ", \"at_collapse_q\": " << (at_collapse ? "true" : "false")
+        std::cout << "{\"input\": " << json_string(train.name()) << ", \"x\": " << json_number(x)
+                  << ", \"q\": " << json_number(q) << ", \"at_collapse_q\": " << (at_collapse ? "true" : "false")
                   << ", \"model\": " << json_string(kModel) << json_validity(e) << ", \"rows_end_at\": "
-                  << (last < steps ? harness::format_number(t_end) : std::string("null"))
+                  << (last < steps ? json_number(t_end) : std::string("null"))
                   << ", \"rows_end_reason\": " << (last < steps ? json_string(why) : std::string("null"))
                   << ", \"samples\": [";
     } else {
@@ -55,8 +55,8 @@ int cmd_response(int argc, char** argv) {
         const double tau = train.t_fin() * k / steps;
         const ResponseState s = state(tau);
         if (a.json)
-            std::cout << (k ? ", " : "") << "[" << harness::format_number(tau) << ", " << harness::format_number(s.phi)
-                      << ", " << harness::format_number(s.dphi) << "]";
+            std::cout << (k ? ", " : "") << "[" << json_number(tau) << ", " << json_number(s.phi)
+                      << ", " << json_number(s.dphi) << "]";
         else std::printf("%.6g,%.12g,%.12g\n", tau, s.phi, s.dphi);
     }
     if (a.json) std::cout << "]}\n";

@@ -15,6 +15,25 @@
 
 namespace rocking::cli {
 
+namespace {
+
+// Rotations are printed in units of alpha: at alpha = 1e-300 under 1e300 g
+// max |theta|/alpha overflowed and printed inf.  The run is refused, naming
+// the value, rather than printed with a hole in it.
+void refuse_overflow(const dynamics::SimulationResult& r, double alpha) {
+    auto check = [&](const char* what, double value, double in_rad) {
+        if (std::isfinite(value)) return;
+        char text[240];
+        std::snprintf(text, sizeof text, "%s overflows a double (%.6g rad at alpha = %g): the rotation is beyond "
+                      "what this output can express", what, in_rad, alpha);
+        throw std::runtime_error(text);
+    };
+    check("max |theta|/alpha during the input", r.max_abs_theta_input / alpha, r.max_abs_theta_input);
+    if (!r.overturned_during_input) check("theta(t_fin)/alpha", r.theta_at_tfin / alpha, r.theta_at_tfin);
+}
+
+}  // namespace
+
 int cmd_simulate(int argc, char** argv) {
     using namespace rocking::dynamics;
     // --one-sine takes no value: handle it before the generic parser.
@@ -124,6 +143,7 @@ int cmd_simulate(int argc, char** argv) {
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
     const SimulationResult r = simulate(model, *input, options);
+    refuse_overflow(r, alpha);
     char atol_rad[48];
     std::snprintf(atol_rad, sizeof atol_rad, " = %g rad", options.solver.atol_alpha * alpha);
     const std::string tolerance = options.solver.kind == SolverKind::exact
@@ -146,17 +166,17 @@ int cmd_simulate(int argc, char** argv) {
         auto b = [](bool v) { return v ? "true" : "false"; };
         std::cout << "{\"model\": " << json_string(model.describe()) << ", \"input\": " << json_string(input->describe())
                   << ", \"solver\": " << json_string(solver_name(options.solver.kind))
-                  << ", \"rtol\": " << harness::format_number(options.solver.rtol)
-                  << ", \"atol_rad\": " << harness::format_number(options.solver.atol_alpha * alpha)
+                  << ", \"rtol\": " << json_number(options.solver.rtol)
+                  << ", \"atol_rad\": " << json_number(options.solver.atol_alpha * alpha)
                   << ", \"criterion\": " << json_string(criterion_name(criterion)) << ", \"collapse\": " << b(collapse)
-                  << ", \"t_fin\": " << harness::format_number(r.t_fin)
+                  << ", \"t_fin\": " << json_number(r.t_fin)
                   << ", \"theta_tfin_over_alpha\": "
-                  << (r.overturned_during_input ? "null" : harness::format_number(r.theta_at_tfin / alpha))
-                  << ", \"max_theta_input_over_alpha\": " << harness::format_number(r.max_abs_theta_input / alpha)
+                  << (r.overturned_during_input ? "null" : json_number(r.theta_at_tfin / alpha))
+                  << ", \"max_theta_input_over_alpha\": " << json_number(r.max_abs_theta_input / alpha)
                   << ", \"input_lifts_block\": " << b(lifts)
                   << ", \"impacts\": " << r.impacts << ", \"overturned\": " << b(r.overturned)
                   << ", \"overturned_during_input\": " << b(r.overturned_during_input)
-                  << ", \"t_overturn\": " << (std::isnan(r.t_overturn) ? "null" : harness::format_number(r.t_overturn))
+                  << ", \"t_overturn\": " << (std::isnan(r.t_overturn) ? "null" : json_number(r.t_overturn))
                   << ", \"collapse_final_rotation\": " << b(r.collapse(Criterion::final_rotation, alpha))
                   << ", \"collapse_peak_rotation\": " << b(r.collapse(Criterion::peak_rotation, alpha))
                   << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
