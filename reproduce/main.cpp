@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/atomic_file.hpp"
 #include "harness/compare.hpp"
 #include "scene.hpp"
 
@@ -58,12 +59,18 @@ std::string describe(const harness::Deviation& d) {
 std::string quote(const std::string& s) { return "'" + s + "'"; }
 
 // Plots with gnuplot when a script exists; a missing gnuplot is said, not fatal.
+// gnuplot draws into a temporary file (its script's png variable) that
+// replaces <scene>.png only once gnuplot has succeeded, as the CSVs are
+// written (harness/atomic_file.hpp): a failed or killed plot left half a PNG.
 std::string plot(const Options& o, const std::string& scene, const std::string& dir) {
     const std::string script = o.plots + "/" + scene + ".gp";
     if (!o.plot || !fs::exists(script)) return "";
     if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return "plot skipped: gnuplot not installed (make deps)";
-    const std::string cmd = "gnuplot -e \"dir='" + dir + "'\" " + quote(script) + " 2>" + quote(dir + "/gnuplot.log");
+    harness::AtomicFile png(dir + "/" + scene + ".png");
+    const std::string cmd = "gnuplot -e \"dir='" + dir + "'; png='" + png.temporary_path() + "'\" " + quote(script) +
+                            " 2>" + quote(dir + "/gnuplot.log");
     if (std::system(cmd.c_str()) != 0) return "plot failed: see " + dir + "/gnuplot.log";
+    png.commit();
     return "";
 }
 
@@ -178,9 +185,7 @@ int bless(const Options& o) {
     return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -282,8 +287,15 @@ int main(int argc, char** argv) {
         try {
             summary.write(o.out + "/summary.csv");
         } catch (const std::exception& e) {
-            std::cerr << e.what() << "\n";
+            // The scenes matched, but the report would read a summary that is not there.
+            std::cerr << "reproduce: " << e.what() << "\n";
+            ok = false;
         }
     }
     return ok ? 0 : 1;
 }
+
+}  // namespace
+
+// A summary that never reached a full disk (reproduce > FILE) exited 0.
+int main(int argc, char** argv) { return harness::finish_standard_output("reproduce", run(argc, argv)); }

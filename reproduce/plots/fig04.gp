@@ -1,7 +1,7 @@
 # Figure 4: q1..q5 against x = p*to.  Called as: gnuplot -e "dir='out/fig04'" fig04.gp
 set datafile separator ","
 set terminal pngcairo size 1000,700 font "DejaVu Sans,12"
-set output dir."/fig04.png"
+set output (exists("png") ? png : dir."/fig04.png")  # png: reproduce's temporary file
 set title "Figure 4: q-factor of the five step inputs (linearised eq. 3, collapse θ(t_{fin}) = α)"
 set xlabel "x = p·t_o  [-]"
 set ylabel "q = PGA / (α g)  [-]"

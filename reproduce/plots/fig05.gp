@@ -2,7 +2,7 @@
 set datafile separator ","
 set datafile missing "fallen"
 set terminal pngcairo size 1500,1150 font "DejaVu Sans,10"
-set output dir."/fig05.png"
+set output (exists("png") ? png : dir."/fig05.png")  # png: reproduce's temporary file
 set multiplot layout 3,3 title "Figure 5: θ/α against t/t_o at PGA = q_i α g R_d (linearised eq. 3, impacts with restitution 1; the input ends at the dotted line)"
 set xlabel "t / t_o  [-]"
 set ylabel "θ / α  [-]"

@@ -1,7 +1,7 @@
 # Figure 6: theta(t_fin)/alpha, full eq. 1 against linearised eq. 3.  gnuplot -e "dir='out/fig06'" fig06.gp
 set datafile separator ","
 set terminal pngcairo size 1500,520 font "DejaVu Sans,10"
-set output dir."/fig06.png"
+set output (exists("png") ? png : dir."/fig06.png")  # png: reproduce's temporary file
 set multiplot layout 1,3 title "Figure 6: θ(t_{fin})/α from the full eq. 1 (solid) and the linearised eq. 3 (= 1, dashed); case 2 at PGA = q_2 α g; H = half-height (eq. 2)"
 set xlabel "H  [m]"
 set ylabel "θ(t_{fin}) / α  [-]"

@@ -1,7 +1,7 @@
 # Figure 7: q against x for cases 1, 2, 4 with N pulses.  gnuplot -e "dir='out/fig07'" fig07.gp
 set datafile separator ","
 set terminal pngcairo size 1500,560 font "DejaVu Sans,11"
-set output dir."/fig07.png"
+set output (exists("png") ? png : dir."/fig07.png")  # png: reproduce's temporary file
 set multiplot layout 1,3 title "Figure 7: q-factor with N pulses (collapse at the onset of pulse N+1; N = 6 is the paper's 6 + 1)"
 set xlabel "x = p·t_o  [-]"
 set ylabel "q = PGA / (α g)  [-]"

@@ -1,7 +1,7 @@
 # Figure 8: eq. 27 against w/p with Makris' one-sine curve and Coccia & Como.  gnuplot -e "dir='out/fig08'" fig08.gp
 set datafile separator ","
 set terminal pngcairo size 1100,750 font "DejaVu Sans,11"
-set output dir."/fig08.png"
+set output (exists("png") ? png : dir."/fig08.png")  # png: reproduce's temporary file
 set title "Figure 8: q (eq. 27, case 2 with 6+1 pulses) against ω/p = π/(p·t_o), beside the one-sine overturning threshold a_p/(α g)"
 set xlabel "ω_p / p = π / (p·t_o)  [-]"
 set ylabel "q = PGA/(α g)  or  a_p/(α g)  [-]"

@@ -4,7 +4,7 @@ set datafile separator ","
 q27(x) = (2./3*sinh(3*x)**2 + 1./3) / (sinh(x)**2 - sinh(x/2)**2 + sinh(2*x)**2 - sinh(2.5*x)**2 - sinh(1.5*x)**2 + 2./3*sinh(3*x)**2)
 set samples 400
 set terminal pngcairo size 1600,1200 font "DejaVu Sans,9"
-set output dir."/fig11.png"
+set output (exists("png") ? png : dir."/fig11.png")  # png: reproduce's temporary file
 set multiplot layout 3,4 title "Figure 11: points (p·t_{o,k}, q) of Tables 1-2 (paper, circles) and of the available records (triangles) against eq. 27 (line); below the line = non-conservative"
 set xlabel "x = p·t_o  [-]"
 set ylabel "q  [-]"

@@ -6,7 +6,7 @@ set samples 400
 stats dir."/fig12_summary.csv" every ::1::1 using 2 nooutput
 x2 = STATS_min
 set terminal pngcairo size 1000,700 font "DejaVu Sans,11"
-set output dir."/fig12.png"
+set output (exists("png") ? png : dir."/fig12.png")  # png: reproduce's temporary file
 set title "Figure 12: q against x = p·t_{o,5} (t_{o,5} = π PGV/PGA, eq. 31), eq. 27 and the code's q = 2"
 set xlabel "x = p·t_o  [-]"
 set ylabel "q  [-]"

@@ -1,5 +1,7 @@
 #include "harness/table.hpp"
 
+#include "harness/atomic_file.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -45,19 +47,22 @@ std::string csv_cell(const std::string& cell) {
 }
 }  // namespace
 
+// Atomically (AtomicFile): two runs writing the same path mixed their lines,
+// and a full disk or a SIGTERM left half a table at the path.
 void Table::write(const std::string& path) const {
     if (!rows_.empty() && rows_.back().size() != columns_.size())
         throw std::runtime_error("table for " + path + ": last row is incomplete");
-    std::ofstream out(path);
-    if (!out) throw std::runtime_error("cannot write " + path);
-    for (const auto& [key, value] : notes_) out << "# " << key << ": " << value << "\n";
-    for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << columns_[c];
-    out << "\n";
+    AtomicFile out(path);
+    for (const auto& [key, value] : notes_) out.write("# " + key + ": " + value + "\n");
+    std::string line;
+    for (std::size_t c = 0; c < columns_.size(); ++c) line += (c ? "," : "") + columns_[c];
+    out.write(line + "\n");
     for (const auto& r : rows_) {
-        for (std::size_t c = 0; c < r.size(); ++c) out << (c ? "," : "") << csv_cell(r[c]);
-        out << "\n";
+        line.clear();
+        for (std::size_t c = 0; c < r.size(); ++c) line += (c ? "," : "") + csv_cell(r[c]);
+        out.write(line + "\n");
     }
-    if (!out) throw std::runtime_error("error while writing " + path);
+    out.commit();
 }
 
 namespace {

@@ -1,0 +1,177 @@
+#!/usr/bin/env bash
+# Files are never left half-written or mixed, and a failed write is an error
+# (issue 31, item 5): simulate --output and reproduce's tables go through a
+# temporary file renamed into place (src/harness/atomic_file.hpp), and a
+# failed write to standard output exits non-zero.
+#
+#   tests/output_test.sh ROCKING REPRODUCE
+set -u
+rocking="$1"
+reproduce="$2"
+tmp=$(mktemp -d) || exit 1
+trap 'chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
+fail=0
+ok() { echo "ok: $1"; }
+bad() { echo "FAIL: $1"; fail=1; }
+
+# expect_error WHAT STATUS MESSAGE... -- COMMAND...: COMMAND exits STATUS and
+# what it prints holds every MESSAGE (the file and the problem).
+expect_error() {
+    local what="$1" want="$2"; shift 2
+    local messages=()
+    while [[ "$1" != -- ]]; do messages+=("$1"); shift; done
+    shift
+    "$@" >"$tmp/err" 2>&1
+    local got=$?
+    local err; err=$(cat "$tmp/err")
+    if [[ $got != "$want" ]]; then bad "$what: exit $got, wanted $want ($err)"; return; fi
+    for m in "${messages[@]}"; do
+        if [[ "$err" != *"$m"* ]]; then bad "$what: wanted '$m' in: $err"; return; fi
+    done
+    ok "$what (exit $got: $(grep -F -m1 -- "${messages[0]}" "$tmp/err"))"
+}
+
+# No temporary file may remain beside a target, whatever happened.
+no_leftovers() {  # what, folder
+    local left; left=$(find "$2" -name '.*.tmp*' 2>/dev/null)
+    if [[ -n "$left" ]]; then bad "$1: temporary files left: $left"; else ok "$1: no temporary file left"; fi
+}
+
+block=(--case 2 --x 0.5 --alpha 0.15 --p 2)
+
+# --- Two runs writing the same --output at once: one complete file, never a mix.
+# Their headers and bodies differ (the PGA), so a mix matches neither.
+"$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/a.csv" --dt 1e-4 >/dev/null || bad "simulate --output a"
+"$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/b.csv" --dt 1e-4 >/dev/null || bad "simulate --output b"
+mixed=0
+for k in $(seq 1 30); do
+    "$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/same.csv" --dt 1e-4 >/dev/null 2>&1 &
+    "$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/same.csv" --dt 1e-4 >/dev/null 2>&1 &
+    wait
+    cmp -s "$tmp/same.csv" "$tmp/a.csv" || cmp -s "$tmp/same.csv" "$tmp/b.csv" || mixed=$((mixed + 1))
+    rm -f "$tmp/same.csv"
+done
+if [[ $mixed == 0 ]]; then ok "30 pairs of runs on one --output: each left one run's complete file"
+else bad "30 pairs of runs on one --output: $mixed left a file that is neither run's"; fi
+no_leftovers "concurrent runs" "$tmp"
+
+# --- Standard output on a full disk, or a closed pipe.
+expect_error "q to a full disk"          1 "rocking: error writing standard output" "No space left on device" -- \
+    sh -c '"$0" q --case 2 --x 1 >/dev/full' "$rocking"
+expect_error "q --json to a full disk"   1 "rocking: error writing standard output" -- \
+    sh -c '"$0" q --case 2 --x 1 --json >/dev/full' "$rocking"
+expect_error "response to a full disk"   1 "rocking: error writing standard output" -- \
+    sh -c '"$0" response --case 2 --x 0.5 --steps 100000 >/dev/full' "$rocking"
+expect_error "a usage error keeps exit 2 on a full disk" 2 "--x: 'abc' is not a number" -- \
+    sh -c '"$0" q --case 2 --x abc >/dev/full' "$rocking"
+expect_error "reproduce to a full disk"  1 "reproduce: error writing standard output" -- \
+    sh -c '"$0" --no-plot --out "$1" fig04 >/dev/full' "$reproduce" "$tmp/reproduced"
+# A closed pipe ends rocking by SIGPIPE, quietly (exit 141 in the shell), as
+# other tools end; with SIGPIPE ignored, the write error is reported, exit 1.
+first=$("$rocking" response --case 2 --x 0.5 --steps 100000 | head -1)
+[[ "$first" == "# case 2, N = 2, x = 0.5"* ]] && ok "response | head -1: the first line, whole" || bad "response | head -1 printed: $first"
+"$rocking" response --case 2 --x 0.5 --steps 100000 2>"$tmp/err" | head -1 >/dev/null
+status=${PIPESTATUS[0]}
+if [[ ( $status == 141 && ! -s "$tmp/err" ) || ( $status == 1 && "$(cat "$tmp/err")" == *"error writing standard output"* ) ]]; then
+    ok "response | head -1: ends by SIGPIPE quietly or reports the error (exit $status)"
+else bad "response | head -1: exit $status, stderr: $(cat "$tmp/err")"; fi
+(trap '' PIPE; "$rocking" response --case 2 --x 0.5 --steps 100000 2>"$tmp/err" | head -1 >/dev/null; echo "${PIPESTATUS[0]}" >"$tmp/status")
+status=$(cat "$tmp/status")
+if [[ $status == 1 && "$(cat "$tmp/err")" == "rocking: error writing standard output: Broken pipe" ]]; then
+    ok "response | head -1 with SIGPIPE ignored: exit 1, 'Broken pipe' reported once"
+else bad "response | head -1 with SIGPIPE ignored: exit $status, stderr: $(cat "$tmp/err")"; fi
+
+# --- --output that cannot be written: exit 1, the file and the problem named, nothing left.
+expect_error "--output to a full disk"   1 "/dev/full" "No space left on device" -- \
+    "$rocking" simulate "${block[@]}" --rd 0.9 --output /dev/full
+expect_error "--output in a missing folder" 1 "$tmp/missing/o.csv" "No such file or directory" -- \
+    "$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/missing/o.csv"
+[[ ! -e "$tmp/missing" ]] && ok "the missing folder is not created" || bad "the missing folder was created"
+mkdir "$tmp/folder.csv"
+expect_error "--output naming a folder" 1 "$tmp/folder.csv" "is a folder" -- \
+    "$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/folder.csv"
+mkdir "$tmp/ro" && chmod 555 "$tmp/ro"
+# root writes anywhere: the check runs as nobody then (setpriv), or is skipped.
+as_user=()
+if [[ $(id -u) == 0 ]]; then
+    if command -v setpriv >/dev/null && setpriv --reuid=65534 --regid=65534 --clear-groups true 2>/dev/null &&
+       setpriv --reuid=65534 --regid=65534 --clear-groups test -x "$rocking"; then
+        as_user=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+        chmod 755 "$tmp"
+    else as_user=(skip); fi
+fi
+if [[ "${as_user[*]}" == skip ]]; then
+    echo "skipped: an unwritable folder (running as root without setpriv, or nobody cannot run $rocking)"
+else
+    expect_error "--output in an unwritable folder" 1 "$tmp/ro/o.csv" "Permission denied" -- \
+        "${as_user[@]}" "$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/ro/o.csv"
+    [[ -z "$(ls -A "$tmp/ro")" ]] && ok "the unwritable folder stays empty" || bad "files in the unwritable folder: $(ls -A "$tmp/ro")"
+fi
+# A disk that fills during the write (a file size limit, SIGXFSZ ignored so
+# that write() fails with EFBIG): the previous file stays whole.
+cp "$tmp/a.csv" "$tmp/limited.csv"
+expect_error "a write that fails half-way" 1 "$tmp/limited.csv" "File too large" -- \
+    sh -c 'trap "" XFSZ; ulimit -f 64; exec "$@"' sh "$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/limited.csv" --dt 1e-4
+cmp -s "$tmp/limited.csv" "$tmp/a.csv" && ok "after it, the previous file is whole" || bad "after a failed write the previous file changed"
+no_leftovers "failed writes" "$tmp"
+
+# --- SIGTERM while the file is being written: the target keeps the previous
+# file, whole, and the temporary file is removed.  The signal is sent as soon
+# as the write shows: a temporary file appears, or the target changes.
+"$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/big.csv" --dt 1e-5 >/dev/null || bad "simulate --output big"
+cp "$tmp/big.csv" "$tmp/big.ref"
+size=$(stat -c %s "$tmp/big.ref")
+landed=0 broken=0
+for k in 1 2 3 4 5; do
+    "$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/big.csv" --dt 1e-5 >/dev/null 2>&1 &
+    pid=$!
+    while kill -0 $pid 2>/dev/null; do
+        if compgen -G "$tmp/.big.csv.tmp*" >/dev/null || [[ $(stat -c %s "$tmp/big.csv" 2>/dev/null) != "$size" ]]; then
+            kill -TERM $pid 2>/dev/null && landed=$((landed + 1))
+            break
+        fi
+    done
+    wait $pid 2>/dev/null
+    cmp -s "$tmp/big.csv" "$tmp/big.ref" || broken=$((broken + 1))
+    cp "$tmp/big.ref" "$tmp/big.csv"
+done
+if [[ $landed == 0 ]]; then bad "SIGTERM never landed during a write: the test proved nothing"
+elif [[ $broken != 0 ]]; then bad "SIGTERM during $landed of 5 writes: $broken left a target that is not the previous file"
+else ok "SIGTERM during $landed of 5 writes: the target stayed the previous file, whole"; fi
+no_leftovers "SIGTERM" "$tmp"
+
+# --- What the temporary file must not change: a device is written in place
+# (as root, a rename would replace /dev/null), a link stays a link, and a
+# file keeps its permissions.
+"$rocking" simulate "${block[@]}" --rd 0.9 --output /dev/null >/dev/null 2>&1 && [[ -c /dev/null ]] &&
+    ok "--output /dev/null: written in place, still a device" || bad "--output /dev/null"
+ln -s a.csv "$tmp/link.csv"
+"$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/link.csv" --dt 1e-4 >/dev/null
+[[ -L "$tmp/link.csv" ]] && cmp -s "$tmp/a.csv" "$tmp/b.csv" && ok "--output through a link: the link stays, its file is replaced" ||
+    bad "--output through a link"
+chmod 640 "$tmp/b.csv"
+"$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/b.csv" --dt 1e-4 >/dev/null
+[[ $(stat -c %a "$tmp/b.csv") == 640 ]] && ok "a replaced file keeps its permissions" || bad "permissions now $(stat -c %a "$tmp/b.csv")"
+
+# --- reproduce: its tables and plots are written the same way.
+"$reproduce" --out "$tmp/reproduced" fig04 >/dev/null 2>&1 && [[ -s "$tmp/reproduced/fig04/fig04.csv" ]] &&
+    ok "reproduce fig04 writes its files" || bad "reproduce fig04"
+no_leftovers "reproduce" "$tmp/reproduced"
+# A plot that fails half-way (a script whose data file is missing) leaves the previous PNG.
+if command -v gnuplot >/dev/null; then
+    mkdir "$tmp/plots"
+    printf '%s\n' 'set terminal pngcairo' 'set output (exists("png") ? png : dir."/fig04.png")' \
+        'plot dir."/no-such-file.csv" using 1:2' >"$tmp/plots/fig04.gp"
+    cp "$tmp/reproduced/fig04/fig04.png" "$tmp/fig04.png.ref"
+    "$reproduce" --out "$tmp/reproduced" --plots "$tmp/plots" fig04 >"$tmp/err" 2>&1
+    grep -q "plot failed" "$tmp/err" && cmp -s "$tmp/reproduced/fig04/fig04.png" "$tmp/fig04.png.ref" &&
+        ok "reproduce: a failed plot leaves the previous PNG whole" || bad "reproduce: after a failed plot: $(cat "$tmp/err")"
+    no_leftovers "a failed plot" "$tmp/reproduced"
+else
+    echo "skipped: a failed plot (gnuplot is not installed)"
+fi
+mkdir -p "$tmp/blocked/fig04/fig04.csv"
+expect_error "reproduce: a table it cannot write" 1 "fig04/fig04.csv" "is a folder" -- \
+    "$reproduce" --no-plot --out "$tmp/blocked" fig04
+
+exit $fail
