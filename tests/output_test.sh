@@ -140,6 +140,14 @@ elif [[ $broken != 0 ]]; then bad "SIGTERM during $landed of 5 writes: $broken l
 else ok "SIGTERM during $landed of 5 writes: the target stayed the previous file, whole"; fi
 no_leftovers "SIGTERM" "$tmp"
 
+# --- A record named with a newline: its name goes into a '# input:' note,
+# which must stay one line, or its second half reads as the header row.
+printf '0 0.5\n0.01 -0.3\n0.02 0.1\n0.03 0\n' >"$tmp/"$'two\nlines.txt'
+"$rocking" simulate --record "$tmp/"$'two\nlines.txt' --unit g --alpha 0.15 --p 2 --output "$tmp/named.csv" >/dev/null
+header=$(grep -v '^#' "$tmp/named.csv" | head -1)
+[[ "$header" == "t,theta_over_alpha,omega_over_alpha_p" ]] && ok "a record name with a newline stays in its note" ||
+    bad "a record name with a newline: the first line after the notes is '$header'"
+
 # --- What the temporary file must not change: a device is written in place
 # (as root, a rename would replace /dev/null), a link stays a link, and a
 # file keeps its permissions.

@@ -47,13 +47,23 @@ std::string csv_cell(const std::string& cell) {
 }
 }  // namespace
 
+namespace {
+// A note is one '# key: value' line: a record's name with a newline in it
+// (simulate --output's input note) made its second half read as the header.
+std::string one_line(const std::string& text) {
+    std::string out;
+    for (char c : text) out += c == '\n' ? std::string("\\n") : c == '\r' ? std::string("\\r") : std::string(1, c);
+    return out;
+}
+}  // namespace
+
 // Atomically (AtomicFile): two runs writing the same path mixed their lines,
 // and a full disk or a SIGTERM left half a table at the path.
 void Table::write(const std::string& path) const {
     if (!rows_.empty() && rows_.back().size() != columns_.size())
         throw std::runtime_error("table for " + path + ": last row is incomplete");
     AtomicFile out(path);
-    for (const auto& [key, value] : notes_) out.write("# " + key + ": " + value + "\n");
+    for (const auto& [key, value] : notes_) out.write("# " + one_line(key) + ": " + one_line(value) + "\n");
     std::string line;
     for (std::size_t c = 0; c < columns_.size(); ++c) line += (c ? "," : "") + columns_[c];
     out.write(line + "\n");
