@@ -44,6 +44,8 @@ NULL_REASONS = {
     "t_overturn": lambda o: o.get("overturned") is False or o.get("overturned_during_input") is False,
     "p": lambda o: o.get("found") is False,
     "p_safe": lambda o: o.get("found") is False or o.get("below_range") is True,
+    "rows_end_at": lambda o: o.get("rows_complete") is True,
+    "rows_end_reason": lambda o: o.get("rows_complete") is True,
 }
 
 def unexplained(value, top, where):
@@ -162,8 +164,9 @@ json_case "response case 2 at x = 1e-8"  either "$samples_finite" "$rocking" res
 json_case "response case 5 at x = 1e-150" either "$samples_finite" "$rocking" response --case 5 --x 1e-150 --json
 json_case "response at q = 1e300"        either "$samples_finite" "$rocking" response --case 2 --x 1 --q 1e300 --json
 json_case "response case 4 at x = 15"    either "$samples_finite" "$rocking" response --case 4 --x 15 --json
-# depends on the response fix (src/qfactor/superposition.cpp, issue 31 item 1):
-# these printed nan and inf samples, now null, which is no better.
+# These printed nan and inf samples before the response's per-jump forms
+# (src/qfactor/superposition.cpp); a q off the collapse q now ends its rows
+# where theta leaves the double range, and says so (rows_complete false).
 json_case "response case 2 at x = 700"   either "$samples_finite" "$rocking" response --case 2 --x 700 --json
 json_case "response case 2, x = 1000, q = 5" either "$samples_finite" "$rocking" response --case 2 --x 1000 --q 5 --json
 json_case "response 400 pulses at x = 2" either "$samples_finite" "$rocking" response --case 1 --pulses 400 --x 2 --json

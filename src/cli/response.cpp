@@ -40,7 +40,8 @@ int cmd_response(int argc, char** argv) {
     if (a.json) {
         std::cout << "{\"input\": " << json_string(train.name()) << ", \"x\": " << json_number(x)
                   << ", \"q\": " << json_number(q) << ", \"at_collapse_q\": " << (at_collapse ? "true" : "false")
-                  << ", \"model\": " << json_string(kModel) << json_validity(e) << ", \"rows_end_at\": "
+                  << ", \"model\": " << json_string(kModel) << json_validity(e)
+                  << ", \"rows_complete\": " << (last < steps ? "false" : "true") << ", \"rows_end_at\": "
                   << (last < steps ? json_number(t_end) : std::string("null"))
                   << ", \"rows_end_reason\": " << (last < steps ? json_string(why) : std::string("null"))
                   << ", \"samples\": [";
