@@ -36,6 +36,9 @@ check "400 pulses end at alpha"           $'\n400,1,' "$rocking" response --case
 # Off the collapse q the response leaves the double range: the rows stop there, saying so.
 check "response past the double range"    "# rows end before t/to = 0.75" "$rocking" response --case 2 --x 1000 --q 5 --steps 8
 check_not "response past the range: no inf" "inf" "$rocking" response --case 2 --x 1000 --q 5 --steps 8
+# Item 8: a one-sine pulse above 1e9 times the threshold fell off its closed form (6e-6 at 1e20 g).
+check "one-sine too strong is named"      "--ap: must be at most 1e9 times the uplift threshold" "$rocking" simulate --one-sine --ap 1e20 --wp 10 --alpha 0.1 --p 2
+status "one-sine too strong exits 2"      2 "$rocking" simulate --one-sine --ap 1e20 --wp 10 --alpha 0.1 --p 2
 # Item 2: the flags come from the same evaluation (it said theta went down to -1.84e9 alpha at x = 20).
 check "flags at x = 20"                   "impact-free up to t_fin: yes; motion reverses before t_fin: yes; theta passes alpha before t_fin: yes" "$rocking" q --case 2 --x 20
 check_not "no impact warning at x = 20"   "hits the ground" "$rocking" q --case 2 --x 20

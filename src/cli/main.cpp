@@ -34,7 +34,7 @@ const char* kUsage =
     "\n"
     "simulate: INPUT is --case I [--pulses N] or --train A:d,...  with --to T (s) or --x X, and the\n"
     "  amplitude as --pga G (in g), --q Q (PGA = Q alpha g) or --rd R (PGA = q_I(x) R alpha g);\n"
-    "  or --one-sine --ap A (in g) --wp W (rad/s);\n"
+    "  or --one-sine --ap A (in g, at most 1e9 times the uplift threshold) --wp W (rad/s);\n"
     "  or --record FILE (as for record FILE, with --record-dt for --dt), piecewise linear between\n"
     "  samples, as recorded or scaled to --pga G (in g) or --q Q (PGA = Q alpha g).\n"
     "  GEOMETRY is --alpha A with --p P (rad/s), --half-height h (m, the H of eq. 2) or --height H (m).\n"

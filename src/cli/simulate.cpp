@@ -123,6 +123,15 @@ int cmd_simulate(int argc, char** argv) {
                           slowest, num("--wp"));
             throw UsageError(text);
         }
+        const double strongest = OneSinePulse::strongest_ap_over_threshold * model.uplift_threshold();
+        if (num("--ap") > strongest) {
+            char text[240];
+            std::snprintf(text, sizeof text,
+                          "--ap: must be at most 1e9 times the uplift threshold, %.6g g (got %g): above it the fall "
+                          "time drifts from the closed form (ground_input.hpp)",
+                          strongest, num("--ap"));
+            throw UsageError(text);
+        }
         try {
             input = std::make_unique<OneSinePulse>(num("--ap"), num("--wp"), model.uplift_threshold());
         } catch (const std::invalid_argument& e) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -191,6 +192,14 @@ OneSinePulse::OneSinePulse(double ap_g, double wp, double threshold_g) : ap_(ap_
     if (!(std::isfinite(wp_) && wp_ > 0)) throw std::invalid_argument("one-sine pulse: w_p must be > 0");
     if (!(std::isfinite(ap_) && ap_ > threshold_g))
         throw std::invalid_argument("one-sine pulse: a_p must exceed the uplift threshold (a_p/g > alpha or tan alpha)");
+    if (!(ap_ <= strongest_ap_over_threshold * threshold_g)) {
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "one-sine pulse: a_p must be at most 1e9 times the uplift threshold, %.6g g (got %.6g g): "
+                      "above it the closed form between events cancels and the fall time drifts from it",
+                      strongest_ap_over_threshold * threshold_g, ap_);
+        throw std::invalid_argument(text);
+    }
     psi_ = std::asin(threshold_g / ap_);
     end_ = (2.0 * M_PI - psi_) / wp_;
 }
