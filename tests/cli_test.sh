@@ -39,6 +39,9 @@ check_not "response past the range: no inf" "inf" "$rocking" response --case 2 -
 # Item 8: a one-sine pulse above 1e9 times the threshold fell off its closed form (6e-6 at 1e20 g).
 check "one-sine too strong is named"      "--ap: must be at most 1e9 times the uplift threshold" "$rocking" simulate --one-sine --ap 1e20 --wp 10 --alpha 0.1 --p 2
 status "one-sine too strong exits 2"      2 "$rocking" simulate --one-sine --ap 1e20 --wp 10 --alpha 0.1 --p 2
+# A positive amplitude whose PGA overflows read "the PGA must be > 0".
+check "an overflowing PGA is named"       "--rd: the PGA it gives, inf g, is outside the range of double" "$rocking" simulate --case 2 --rd 1e300 --x 1e-100 --alpha 0.15 --p 2
+check "a negative --rd is named"          "--rd: must be > 0" "$rocking" simulate --case 2 --rd -1 --x 1 --alpha 0.15 --p 2
 # Item 2: the flags come from the same evaluation (it said theta went down to -1.84e9 alpha at x = 20).
 check "flags at x = 20"                   "impact-free up to t_fin: yes; motion reverses before t_fin: yes; theta passes alpha before t_fin: yes" "$rocking" q --case 2 --x 20
 check_not "no impact warning at x = 20"   "hits the ground" "$rocking" q --case 2 --x 20

@@ -141,12 +141,22 @@ int cmd_simulate(int argc, char** argv) {
         std::string equation;
         const PulseTrain train = train_from(a, equation);
         if (has("--to") == has("--x")) throw UsageError("give exactly one of --to and --x");
+        const char* to_flag = has("--to") ? "--to" : "--x";
+        if (!(num(to_flag) > 0)) throw UsageError(std::string(to_flag) + ": must be > 0");
         const double to = has("--to") ? num("--to") : num("--x") / model.block.p;
-        if (!(to > 0)) throw UsageError("--to/--x: must be > 0");
+        // x / p leaving the double range read "must be > 0" for a positive x.
+        if (!(to > 0) || !std::isfinite(to))
+            throw UsageError(std::string("--x: x / p = ") + a.values.at("--x") + " / " + harness::format_number(model.block.p) +
+                             " s is outside the range of double");
         const int amplitude = has("--pga") + has("--q") + has("--rd");
         if (amplitude != 1) throw UsageError("give exactly one of --pga, --q and --rd");
+        const char* amplitude_flag = has("--rd") ? "--rd" : has("--q") ? "--q" : "--pga";
+        if (!(num(amplitude_flag) > 0)) throw UsageError(std::string(amplitude_flag) + ": must be > 0");
         const double pga = has("--rd") ? num("--rd") * q_factor(train, model.block.p * to).q * alpha : pga_or_q();
-        if (!(pga > 0)) throw UsageError("the PGA must be > 0");
+        // A positive amplitude whose PGA overflows or underflows read "must be > 0".
+        if (!(pga > 0) || !std::isfinite(pga))
+            throw UsageError(std::string(amplitude_flag) + ": the PGA it gives, " + harness::format_number(pga) +
+                             " g, is outside the range of double");
         input = std::make_unique<PulseInput>(train, pga, to);
     }
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
