@@ -2,10 +2,16 @@
 // signals whose answers are known in closed form, and the collapse search.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <thread>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "dynamics/ground_input.hpp"
 #include "records/collapse.hpp"
@@ -29,6 +35,63 @@ std::string esm(const std::string& ndata, const std::string& pga, const std::str
                 bool with_dt = true) {
     return std::string("EVENT_ID: TEST\nSTATION_CODE: X\n") + (with_dt ? "SAMPLING_INTERVAL_S: 0.010000\n" : "") +
            "NDATA: " + ndata + "\nUNITS: " + units + "\nPGA_CM/S^2: " + pga + "\n" + samples;
+}
+
+// A pipe that a thread writes `text` into, `piece` bytes at a time, then keeps
+// open and silent for `linger` before closing it; read by name (/dev/fd/N), as
+// a shell's <(cat f) or /dev/stdin is.
+class Pipe {
+  public:
+    Pipe(const std::string& text, std::size_t piece, std::chrono::milliseconds linger = {}) {
+        std::signal(SIGPIPE, SIG_IGN);  // a reader that gives up makes write() fail, not the test die
+        int fds[2];
+        if (::pipe(fds) != 0) throw std::runtime_error("pipe() failed");
+        read_end_ = fds[0];
+        writer_ = std::thread([text, piece, linger, out = fds[1]] {
+            for (std::size_t at = 0; at < text.size(); at += piece) {
+                if (::write(out, text.data() + at, std::min(piece, text.size() - at)) < 0) break;
+                std::this_thread::sleep_for(std::chrono::microseconds(200));
+            }
+            std::this_thread::sleep_for(linger);
+            ::close(out);
+        });
+    }
+    ~Pipe() {
+        ::close(read_end_);  // a writer still writing then gets EPIPE instead of blocking the join
+        writer_.join();
+    }
+    std::string path() const { return "/dev/fd/" + std::to_string(read_end_); }
+
+  private:
+    int read_end_ = -1;
+    std::thread writer_;
+};
+
+// An ESM record of n samples that passes every check of the reader.
+std::string esm_of(int n) {
+    std::string samples;
+    double peak = 0;
+    for (int k = 0; k < n; ++k) {
+        char line[32];
+        const double a = 100 * std::sin(0.01 * k) * std::exp(-1e-4 * k);
+        std::snprintf(line, sizeof line, "%.6f\n", a);
+        samples += line;
+        peak = std::max(peak, std::fabs(std::strtod(line, nullptr)));
+    }
+    char pga[32];
+    std::snprintf(pga, sizeof pga, "%.6f", peak);
+    return "NETWORK: XX\nSTATION_CODE: PIPE\nSTREAM: HNE\n" + esm(std::to_string(n), pga, "cm/s^2", samples);
+}
+
+const std::string kPeer = "PEER NGA STRONG MOTION DATABASE RECORD\nTEST 1999, PIPE, 180\n"
+                          "ACCELERATION TIME SERIES IN UNITS OF G\nNPTS=    7, DT=   .0050 SEC\n"
+                          "  .1E-02  .2E-02 -.3E-02  .4E-02 -.5E-02\n  .6E-02 -.1E-02\n";
+
+void expect_same(const Record& a, const Record& b, const std::string& what) {
+    EXPECT_EQ(a.format, b.format) << what;
+    EXPECT_EQ(a.dt, b.dt) << what;
+    EXPECT_EQ(a.accel, b.accel) << what;
+    EXPECT_EQ(a.header, b.header) << what;
 }
 }  // namespace
 
@@ -104,6 +167,122 @@ TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
     const std::string overflow = write_file("overflow.txt", "0 0.1\n0.01 1e308\n");
     EXPECT_NE(error_of([&] { read_plain(overflow, "g", 0); }).find(":2: '1e308' g is out of range for a double in m/s^2"),
               std::string::npos);
+}
+
+// Every reader works on the text read once: the same record from a file's
+// text as from the file, a last line without its newline included.
+TEST(Readers, EveryReaderParsesTheTextReadOnce) {
+    const std::string esm_text = esm_of(500), plain1 = "# a\n0.1\n-0.2\n0.3", plain2 = "0,0.1\n0.01,-0.2\n0.02,0.3";
+    const std::string esm_file = write_file("text.asc", esm_text), peer_file = write_file("text.at2", kPeer);
+    const std::string one_file = write_file("text1.txt", plain1), two_file = write_file("text2.txt", plain2);
+    EXPECT_EQ(read_text(esm_file), esm_text);
+    expect_same(parse_esm(esm_text, "x"), read_esm(esm_file), "esm");
+    expect_same(parse_any(esm_text, "x"), read_any(esm_file), "esm by content");
+    expect_same(parse_peer(kPeer, "x"), read_peer(peer_file), "peer");
+    expect_same(parse_any(kPeer, "x"), read_any(peer_file), "peer by content");
+    expect_same(parse_plain(plain1, "x", "g", 0.01), read_plain(one_file, "g", 0.01), "one column");
+    expect_same(parse_plain(plain2, "x", "g", 0), read_plain(two_file, "g", 0), "two columns");
+    EXPECT_EQ(parse_esm(esm_text, "x").accel.size(), 500u);
+    EXPECT_EQ(parse_peer(kPeer, "x").accel.size(), 7u);
+    EXPECT_EQ(parse_plain(plain1, "x", "g", 0.01).accel.size(), 3u);
+    EXPECT_EQ(parse_plain(plain2, "x", "g", 0).accel.size(), 3u);
+    EXPECT_NE(error_of([] { parse_any("", "named"); }).find("named:0: empty file"), std::string::npos);
+}
+
+// A pipe read by name (<(cat f), /dev/stdin) was opened twice: once to sniff
+// its format, once to read it, and the second found the data gone ("missing
+// header key SAMPLING_INTERVAL_S").  Each reader now reads it once.
+TEST(Readers, APipeIsReadOnceAndSniffedFromItsText) {
+    const std::string esm_text = esm_of(20000);  // 200 KB: more than a pipe holds, written in pieces
+    const Record file = read_any(write_file("pipe.asc", esm_text));
+    {
+        Pipe pipe(esm_text, 4096);
+        expect_same(read_any(pipe.path()), file, "ESM through a pipe");
+    }
+    {
+        Pipe pipe(kPeer, 10);
+        expect_same(read_any(pipe.path()), read_any(write_file("pipe.at2", kPeer)), "PEER through a pipe");
+    }
+    {
+        Pipe pipe("0.1\n0.2\n0.3\n", 3);
+        EXPECT_EQ(read_plain(pipe.path(), "g", 0.01).accel.size(), 3u);
+    }
+    const std::string real = kRecords + "/esm-extra/TV.MIR08..HNN.D.20120529.070002.C.ACC.ASC";
+    if (!fs::exists(real)) GTEST_SKIP() << "shared records folder absent, the real record not piped: " << real;
+    std::ifstream in(real);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    Pipe pipe(text, 65536);
+    expect_same(read_any(pipe.path()), read_any(real), "the largest real record through a pipe");
+}
+
+// /dev/zero, an endless line and an endless header grew memory without
+// bound; each now stops at its cap, named in the error with the file and line.
+TEST(Readers, CapsOnLineHeaderAndSizeEndReadingWithTheirName) {
+    EXPECT_NE(error_of([] { read_any("/dev/zero"); })
+                  .find("/dev/zero:1: a line longer than 1 MiB (the cap on a line's length)"),
+              std::string::npos);
+    // A line's length carried across the reads of 64 KiB: line 2 spans two of them.
+    ReadLimits limits;
+    limits.max_line = 70000;
+    const std::string fits = "a\n" + std::string(70000, 'x') + "\nb\n", over = "a\n" + std::string(70001, 'x') + "\nb\n";
+    EXPECT_EQ(read_text(write_file("line_fits.txt", fits), limits), fits);
+    const std::string long_line = write_file("line_over.txt", over);
+    EXPECT_NE(error_of([&] { read_text(long_line, limits); })
+                  .find(long_line + ":2: a line longer than 70000 bytes (the cap on a line's length)"),
+              std::string::npos);
+    {
+        Pipe pipe(over, 1000);
+        EXPECT_NE(error_of([&] { read_text(pipe.path(), limits); }).find(":2: a line longer than 70000 bytes"),
+                  std::string::npos);
+    }
+    limits = ReadLimits{};
+    limits.max_bytes = 100;
+    EXPECT_EQ(read_text(write_file("size_fits.txt", std::string(100, '\n')), limits).size(), 100u);
+    const std::string big = write_file("size_over.txt", std::string(101, '\n'));
+    EXPECT_NE(error_of([&] { read_text(big, limits); }).find(big + ":0: larger than 100 bytes (the cap on a record file's size)"),
+              std::string::npos);
+    {
+        Pipe pipe(std::string(5000, '\n'), 7);
+        EXPECT_NE(error_of([&] { read_text(pipe.path(), limits); }).find(":0: larger than 100 bytes"), std::string::npos);
+    }
+    // The default cap on a file's size, seen from its size before reading a byte (a sparse file).
+    const std::string huge = write_file("sparse.asc", "");
+    fs::resize_file(huge, (std::uintmax_t{256} << 20) + 1);
+    EXPECT_NE(error_of([&] { read_any(huge); }).find(huge + ":0: larger than 256 MiB (the cap on a record file's size)"),
+              std::string::npos);
+    fs::remove(huge);
+    // 13 bytes a header line: the 80660th takes the header past 1 MiB.
+    std::string header;
+    for (int k = 1; header.size() <= kMaxHeaderBytes; ++k) {
+        char line[32];
+        std::snprintf(line, sizeof line, "KEY%06d: v\n", k);
+        header += line;
+    }
+    EXPECT_NE(error_of([&] { parse_esm(header + "0.1\n", "head"); })
+                  .find("head:80660: a header longer than 1 MiB (the cap on an ESM header's size)"),
+              std::string::npos);
+}
+
+// A FIFO nobody writes to blocked the reader for ever, and so did a writer
+// that stalls; both now end after the read timeout, naming the file.
+TEST(Readers, APipeSilentForTheTimeoutIsRefused) {
+    ReadLimits limits;
+    limits.timeout_s = 0.2;
+    const std::string fifo = (fs::path(write_file("fifo.keep", "")).parent_path() / "silent.fifo").string();
+    fs::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_NE(error_of([&] { read_text(fifo, limits); })
+                  .find(fifo + ":0: no data within 0.2 s (the read timeout): a pipe or FIFO that nobody writes to?"),
+              std::string::npos);
+    fs::remove(fifo);
+    {
+        Pipe pipe("EVENT: x\n", 100, std::chrono::milliseconds(800));
+        EXPECT_NE(error_of([&] { read_text(pipe.path(), limits); })
+                      .find(":2: no more data for 0.2 s after 9 bytes (the read timeout): the writer stalled"),
+                  std::string::npos);
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 TEST(Measures, CosineHasEveryHalfPeriodAtItsHalfPeriod) {

@@ -3,11 +3,17 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <chrono>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
+#include <cstring>
 #include <sstream>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace rocking::records {
 
@@ -60,14 +66,102 @@ bool peer_units_line(std::string line) {
     return after == line.size() || !std::isalnum(static_cast<unsigned char>(line[after]));
 }
 
-std::ifstream open(const std::string& path) {
-    // A folder opens as a stream that reads nothing, which read as "empty file".
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw RecordError(path, 0, "is a folder, not a record file");
-    std::ifstream in(path);
-    if (!in) throw RecordError(path, 0, "cannot open the file");
-    return in;
+// "256 MiB" for the caps' messages ("100 bytes" for a cap a test chose).
+std::string size_text(std::size_t bytes) {
+    if (bytes >= (1u << 20) && bytes % (1u << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
+    return std::to_string(bytes) + " bytes";
 }
+
+std::string seconds_text(double s) {
+    std::ostringstream os;
+    os << s << " s";
+    return os.str();
+}
+
+// The line being read when `text` has been read so far (1 for the first).
+int line_at_end(const std::string& text) {
+    return 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+// Closes the descriptor whatever the reader throws.
+struct Descriptor {
+    int fd;
+    ~Descriptor() {
+        if (fd >= 0) ::close(fd);
+    }
+};
+
+// Non-blocking, so that opening a FIFO without a writer returns at once (a
+// blocking open would wait for one for ever); poll() then does the waiting.
+int open_for_reading(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw RecordError(path, 0, std::string("cannot open the file (") + std::strerror(errno) + ")");
+    return fd;
+}
+
+// Waits for bytes (or the writer's end) on a pipe, FIFO or terminal.  A FIFO
+// whose writer has not come yet reads as its end: poll() is what tells the
+// two apart, as it does not return before a writer has come.
+void wait_for_data(int fd, const std::string& path, const std::string& text, double timeout_s) {
+    using clock = std::chrono::steady_clock;
+    const auto deadline = clock::now() + std::chrono::duration<double>(timeout_s);
+    pollfd p{fd, POLLIN, 0};
+    for (;;) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - clock::now()).count();
+        const int ready = ::poll(&p, 1, static_cast<int>(std::clamp<long long>(left, 0, INT_MAX)));
+        if (ready > 0) return;
+        if (ready < 0 && errno == EINTR) continue;
+        if (ready < 0) throw RecordError(path, 0, std::string("cannot wait for data (") + std::strerror(errno) + ")");
+        if (text.empty())
+            throw RecordError(path, 0, "no data within " + seconds_text(timeout_s) +
+                                           " (the read timeout): a pipe or FIFO that nobody writes to?");
+        throw RecordError(path, line_at_end(text), "no more data for " + seconds_text(timeout_s) + " after " +
+                                                       std::to_string(text.size()) +
+                                                       " bytes (the read timeout): the writer stalled");
+    }
+}
+
+// Refuses the chunk about to be appended to `text` when it makes the file or
+// one of its lines longer than the caps; `line` is the length of the last,
+// unfinished line so far, carried from chunk to chunk.
+void check_caps(const std::string& path, const std::string& text, const char* chunk, std::size_t n,
+                std::size_t& line, const ReadLimits& limits) {
+    if (text.size() + n > limits.max_bytes)
+        throw RecordError(path, 0, "larger than " + size_text(limits.max_bytes) +
+                                       " (the cap on a record file's size)");
+    const char* at = chunk;
+    const char* const end = chunk + n;
+    while (at < end) {
+        const char* newline = static_cast<const char*>(std::memchr(at, '\n', end - at));
+        line += (newline ? newline : end) - at;
+        if (line > limits.max_line) {
+            const int number = line_at_end(text) + static_cast<int>(std::count(chunk, at, '\n'));
+            throw RecordError(path, number, "a line longer than " + size_text(limits.max_line) +
+                                                " (the cap on a line's length): not a text record?");
+        }
+        if (!newline) break;
+        line = 0;
+        at = newline + 1;
+    }
+}
+
+// The lines of a text, one at a time, as std::getline gives them from a file.
+class Lines {
+  public:
+    explicit Lines(const std::string& text) : text_(text) {}
+    bool next(std::string& line) {
+        if (at_ >= text_.size()) return false;
+        std::size_t end = text_.find('\n', at_);
+        if (end == std::string::npos) end = text_.size();
+        line.assign(text_, at_, end - at_);
+        at_ = end + 1;
+        return true;
+    }
+
+  private:
+    const std::string& text_;
+    std::size_t at_ = 0;
+};
 
 // Number of decimals printed in a header value (for the PGA comparison).
 int decimals(const std::string& text) {
@@ -77,8 +171,33 @@ int decimals(const std::string& text) {
 
 }  // namespace
 
-Record read_esm(const std::string& path) {
-    std::ifstream in = open(path);
+std::string read_text(const std::string& path, const ReadLimits& limits) {
+    const Descriptor in{open_for_reading(path)};
+    struct stat st {};
+    if (::fstat(in.fd, &st) != 0) throw RecordError(path, 0, std::string("cannot read the file (") + std::strerror(errno) + ")");
+    // A folder opens and reads nothing, which read as "empty file".
+    if (S_ISDIR(st.st_mode)) throw RecordError(path, 0, "is a folder, not a record file");
+    const bool regular = S_ISREG(st.st_mode);
+    if (regular && static_cast<unsigned long long>(st.st_size) > limits.max_bytes)
+        throw RecordError(path, 0, "larger than " + size_text(limits.max_bytes) + " (the cap on a record file's size)");
+    std::string text;
+    text.reserve(regular ? static_cast<std::size_t>(st.st_size) + 1 : std::size_t{1} << 16);
+    std::vector<char> chunk(std::size_t{1} << 16);
+    std::size_t line = 0;
+    for (;;) {
+        if (!regular) wait_for_data(in.fd, path, text, limits.timeout_s);
+        const ssize_t n = ::read(in.fd, chunk.data(), chunk.size());
+        if (n == 0) break;
+        if (n < 0 && (errno == EINTR || errno == EAGAIN || errno == EWOULDBLOCK)) continue;
+        if (n < 0) throw RecordError(path, line_at_end(text), std::string("cannot read the file (") + std::strerror(errno) + ")");
+        check_caps(path, text, chunk.data(), static_cast<std::size_t>(n), line, limits);
+        text.append(chunk.data(), static_cast<std::size_t>(n));
+    }
+    return text;
+}
+
+Record parse_esm(const std::string& text, const std::string& path) {
+    Lines in(text);
     Record r;
     r.path = path;
     r.format = "ESM ASCII";
@@ -86,13 +205,19 @@ Record read_esm(const std::string& path) {
     int number = 0;
     std::map<std::string, int> line_of;
     bool in_header = true;
-    while (std::getline(in, line)) {
+    std::size_t header_bytes = 0;
+    while (in.next(line)) {
         ++number;
         const std::string t = trim(line);
         if (in_header) {
             const auto colon = t.find(':');
             double v;
             if (colon != std::string::npos && !parse_number(t, v)) {
+                // Each key is kept: a file of endless 'KEY: value' lines would fill memory with them.
+                header_bytes += line.size() + 1;
+                if (header_bytes > kMaxHeaderBytes)
+                    throw RecordError(path, number, "a header longer than " + size_text(kMaxHeaderBytes) +
+                                                        " (the cap on an ESM header's size)");
                 const std::string key = trim(t.substr(0, colon));
                 r.header[key] = trim(t.substr(colon + 1));
                 line_of[key] = number;
@@ -139,15 +264,15 @@ Record read_esm(const std::string& path) {
     return r;
 }
 
-Record read_peer(const std::string& path) {
-    std::ifstream in = open(path);
+Record parse_peer(const std::string& text, const std::string& path) {
+    Lines in(text);
     Record r;
     r.path = path;
     r.format = "PEER AT2";
     std::string line;
     int number = 0;
     long npts = -1;
-    while (std::getline(in, line)) {
+    while (in.next(line)) {
         ++number;
         if (number <= 3) {
             r.header["LINE" + std::to_string(number)] = trim(line);
@@ -192,14 +317,25 @@ Record read_peer(const std::string& path) {
     return r;
 }
 
-Record read_plain(const std::string& path, const std::string& unit, double dt) {
+namespace {
+
+// Samples in `unit` times this are m/s^2; an unknown unit or a bad step is
+// refused before the file is read.
+double scale_of(const std::string& path, const std::string& unit, double dt) {
     double scale;
     if (unit == "g") scale = 9.81;
     else if (unit == "m/s2" || unit == "m/s^2") scale = 1.0;
     else if (unit == "cm/s2" || unit == "cm/s^2") scale = 0.01;
     else throw RecordError(path, 0, "unknown unit '" + unit + "' (g, m/s2, cm/s2)");
     if (!(dt >= 0) || !std::isfinite(dt)) throw RecordError(path, 0, "time step must be > 0");
-    std::ifstream in = open(path);
+    return scale;
+}
+
+}  // namespace
+
+Record parse_plain(const std::string& text, const std::string& path, const std::string& unit, double dt) {
+    const double scale = scale_of(path, unit, dt);
+    Lines in(text);
     Record r;
     r.path = path;
     r.format = dt > 0 ? "one column" : "two columns";
@@ -207,7 +343,7 @@ Record read_plain(const std::string& path, const std::string& unit, double dt) {
     std::string line;
     int number = 0;
     std::vector<double> times;
-    while (std::getline(in, line)) {
+    while (in.next(line)) {
         ++number;
         std::string t = trim(line);
         if (t.empty() || t[0] == '#') continue;
@@ -246,18 +382,26 @@ Record read_plain(const std::string& path, const std::string& unit, double dt) {
     return r;
 }
 
-Record read_any(const std::string& path) {
-    std::ifstream in = open(path);
+Record parse_any(const std::string& text, const std::string& path) {
+    Lines in(text);
     std::string first, second, third;
-    if (!std::getline(in, first)) return read_peer(path);  // empty: read_peer says so
-    if (first.find(':') != std::string::npos) return read_esm(path);
-    std::getline(in, second);
-    std::getline(in, third);
+    if (!in.next(first)) return parse_peer(text, path);  // empty: parse_peer says so
+    if (first.find(':') != std::string::npos) return parse_esm(text, path);
+    in.next(second);
+    in.next(third);
     if (!peer_units_line(third))
         throw RecordError(path, 1,
                           "neither ESM ASCII (its header lines are 'KEY: value') nor PEER AT2 ('UNITS OF G' on "
                           "line 3); plain one- or two-column text is read with its unit (rocking: --unit)");
-    return read_peer(path);
+    return parse_peer(text, path);
+}
+
+Record read_esm(const std::string& path) { return parse_esm(read_text(path), path); }
+Record read_peer(const std::string& path) { return parse_peer(read_text(path), path); }
+Record read_any(const std::string& path) { return parse_any(read_text(path), path); }
+Record read_plain(const std::string& path, const std::string& unit, double dt) {
+    scale_of(path, unit, dt);
+    return parse_plain(read_text(path), path, unit, dt);
 }
 
 }  // namespace rocking::records

@@ -3,6 +3,7 @@
 // that names the file, the line and the problem.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -30,18 +31,45 @@ struct RecordError : std::runtime_error {
         : std::runtime_error(path + ":" + std::to_string(line) + ": " + problem) {}
 };
 
+// Caps on what a reader takes in, so that /dev/zero, an endless line or a
+// FIFO nobody writes to ends with an error naming the file and the cap
+// instead of growing or waiting without bound.  Real records sit far inside
+// them: the largest file in ../shared/records is 329 KB, its longest line
+// 442 bytes, an ESM header about 4 KB.
+struct ReadLimits {
+    std::size_t max_bytes = std::size_t{256} << 20;  // a whole file: 256 MiB (about 10^7 samples)
+    std::size_t max_line = std::size_t{1} << 20;     // one line: 1 MiB
+    double timeout_s = 10;                           // a pipe or FIFO silent this long, s
+};
+// ESM's 'KEY: value' lines before the first sample: 1 MiB.
+constexpr std::size_t kMaxHeaderBytes = std::size_t{1} << 20;
+
+// The whole file, read once: a pipe, a FIFO or /dev/stdin cannot be opened a
+// second time to read what sniffing its format consumed.  Refuses a folder,
+// a file or line over the caps, and a pipe silent for timeout_s (waiting
+// for its first byte or after one).
+std::string read_text(const std::string& path, const ReadLimits& limits = {});
+
+// The readers of a file's text (from read_text); `path` names it in errors.
+//
 // ESM/ITACA ASCII ("DYNA 1.2"): 'KEY: value' header lines, then one sample per
 // line in cm/s^2.  Checks SAMPLING_INTERVAL_S > 0, UNITS = cm/s^2, NDATA equal
 // to the samples read and PGA_CM/S^2 equal to max |a| (to its printed digits).
-Record read_esm(const std::string& path);
+Record parse_esm(const std::string& text, const std::string& path);
 // PEER NGA .AT2: four header lines (the fourth 'NPTS= n, DT= dt SEC'), then
 // samples in g, several per line.  Checks NPTS against the samples read.
-Record read_peer(const std::string& path);
+Record parse_peer(const std::string& text, const std::string& path);
 // By content: ESM when the first line is 'KEY: value', PEER otherwise.
-Record read_any(const std::string& path);
+Record parse_any(const std::string& text, const std::string& path);
 // Plain text: two columns 'time acceleration' (evenly spaced times; dt = 0) or
 // one column with the given dt > 0, in `unit` (g, m/s2, cm/s2).  Comma,
 // space or tab separated; lines starting with '#' are comments.
+Record parse_plain(const std::string& text, const std::string& path, const std::string& unit, double dt);
+
+// The same, reading the file with read_text's default caps.
+Record read_esm(const std::string& path);
+Record read_peer(const std::string& path);
+Record read_any(const std::string& path);
 Record read_plain(const std::string& path, const std::string& unit, double dt);
 
 }  // namespace rocking::records
