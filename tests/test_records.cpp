@@ -169,6 +169,40 @@ TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
               std::string::npos);
 }
 
+// A one-column file with decimal commas ("0,0123") was read as two columns,
+// time 0 and acceleration 123 (or refused at a later line for a time that
+// does not increase).  With no decimal point anywhere in the file, a comma
+// between digits is refused, naming decimal commas; one decimal point
+// settles that commas separate, and a two-column CSV reads as before.
+TEST(Readers, ADecimalCommaIsRefusedNotReadAsTwoColumns) {
+    const std::string refusal = "has a comma between digits and no value in the file has a decimal point: "
+                                "decimal commas are not read";
+    struct Case { std::string name, text; double dt; std::string want; };
+    const std::vector<Case> refused = {
+        {"comma_two.txt", "0,0123\n0,0456\n-0,0100\n", 0, ":1: '0,0123' " + refusal},
+        {"comma_even.txt", "1,5\n2,5\n3,5\n4,25\n", 0, ":1: '1,5' " + refusal},  // was 4 samples, 25 g
+        {"comma_one.txt", "0,0123\n0,0456\n-0,0100\n", 0.01, ":1: '0,0123' " + refusal},
+        {"comma_comment.txt", "# dt = 0.01 s\n0\n-0,0123\n", 0.01, ":3: '-0,0123' " + refusal},
+        {"comma_tab.txt", "0,00\t0,0123\n0,01\t0,0456\n", 0, ":1: '0,00\t0,0123' " + refusal},
+    };
+    for (const Case& c : refused) {
+        const std::string path = write_file(c.name, c.text);
+        const std::string message = error_of([&] { read_plain(path, "g", c.dt); });
+        EXPECT_NE(message.find(path + c.want), std::string::npos) << c.name << ": " << message;
+    }
+    const Record csv = read_plain(write_file("point_csv.txt", "0.00,0.0123\n0.01,0.0456\n0.02,-0.01\n"), "g", 0);
+    ASSERT_EQ(csv.accel.size(), 3u);
+    EXPECT_NEAR(csv.dt, 0.01, 1e-15);
+    EXPECT_DOUBLE_EQ(csv.accel[1], 0.0456 * 9.81);
+    // printf's %g writes 0 without a point: the other lines settle it.
+    EXPECT_EQ(read_plain(write_file("g_csv.txt", "0,0\n0.01,0.0123\n0.02,-0.01\n"), "g", 0).accel.size(), 3u);
+    // A comma and a space is a separator, never a decimal comma.
+    EXPECT_EQ(read_plain(write_file("spaced_csv.txt", "0, 1\n1, 2\n2, 3\n"), "cm/s2", 0).accel.size(), 3u);
+    const std::string esm_comma = write_file("comma.asc", esm("3", "2.0", "cm/s^2", "1.0\n0,5\n2.0\n"));
+    EXPECT_NE(error_of([&] { read_esm(esm_comma); }).find(":8: sample '0,5' is not a number (decimal commas are not read)"),
+              std::string::npos);
+}
+
 // Every reader works on the text read once: the same record from a file's
 // text as from the file, a last line without its newline included.
 TEST(Readers, EveryReaderParsesTheTextReadOnce) {

@@ -48,11 +48,21 @@ bool parse_number(const std::string& token, double& value) {
 // What is wrong with a token parse_number() refused: a number a double
 // cannot hold (1e400, or "inf" spelled out) is out of range, anything else
 // is not a number.
+// A comma between two digits, as a decimal comma writes "0,0123".
+bool digit_comma_digit(const std::string& t) {
+    for (std::size_t k = 1; k + 1 < t.size(); ++k)
+        if (t[k] == ',' && std::isdigit(static_cast<unsigned char>(t[k - 1])) &&
+            std::isdigit(static_cast<unsigned char>(t[k + 1])))
+            return true;
+    return false;
+}
+
 std::string refused(const std::string& token) {
     char* end = nullptr;
     const double v = std::strtod(token.c_str(), &end);
     const bool whole = !token.empty() && end == token.c_str() + token.size();
-    return "'" + token + (whole && !std::isnan(v) ? "' is out of range for a double" : "' is not a number");
+    if (whole && !std::isnan(v)) return "'" + token + "' is out of range for a double";
+    return "'" + token + "' is not a number" + (digit_comma_digit(token) ? " (decimal commas are not read)" : "");
 }
 
 // PEER AT2's third header line names its unit: "... UNITS OF G".
@@ -331,10 +341,36 @@ double scale_of(const std::string& path, const std::string& unit, double dt) {
     return scale;
 }
 
+// The first data line with a comma between digits, when no value in the
+// file has a decimal point: "0,0123" is then a decimal comma or two columns
+// (0 and 123), readings that differ by orders of magnitude, so it is not
+// guessed.  One decimal point anywhere settles that commas separate.
+struct AmbiguousComma {
+    int line = 0;  // 0: none
+    std::string text;
+};
+AmbiguousComma ambiguous_comma(const std::string& text) {
+    Lines in(text);
+    std::string line;
+    AmbiguousComma first;
+    for (int number = 1; in.next(line); ++number) {
+        const std::string t = trim(line);
+        if (t.empty() || t[0] == '#') continue;
+        if (t.find('.') != std::string::npos) return {};
+        if (first.line == 0 && digit_comma_digit(t)) first = {number, t.size() > 40 ? t.substr(0, 40) + "..." : t};
+    }
+    return first;
+}
+
 }  // namespace
 
 Record parse_plain(const std::string& text, const std::string& path, const std::string& unit, double dt) {
     const double scale = scale_of(path, unit, dt);
+    if (const AmbiguousComma comma = ambiguous_comma(text); comma.line > 0)
+        throw RecordError(path, comma.line,
+                          "'" + comma.text + "' has a comma between digits and no value in the file has a decimal "
+                          "point: decimal commas are not read, and this one cannot be told from a column separator; "
+                          "write decimal points (one column: tr , . < FILE) or separate the columns with a space");
     Lines in(text);
     Record r;
     r.path = path;

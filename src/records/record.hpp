@@ -63,7 +63,9 @@ Record parse_peer(const std::string& text, const std::string& path);
 Record parse_any(const std::string& text, const std::string& path);
 // Plain text: two columns 'time acceleration' (evenly spaced times; dt = 0) or
 // one column with the given dt > 0, in `unit` (g, m/s2, cm/s2).  Comma,
-// space or tab separated; lines starting with '#' are comments.
+// space or tab separated; lines starting with '#' are comments.  Decimal
+// commas are not read: a file whose values have no decimal point and a comma
+// between two digits ("0,0123") is refused, as that comma could be either.
 Record parse_plain(const std::string& text, const std::string& path, const std::string& unit, double dt);
 
 // The same, reading the file with read_text's default caps.
