@@ -129,7 +129,9 @@ void run_errata(SceneContext& ctx) {
     // The paper's claims about these curves, measured.
     harness::Table claims({"claim", "paper", "computed", "verdict", "evidence"});
     claims.note("scene", "errata: the paper's textual claims about Figures 4 and 7");
+    claims.note("model", "linearised eq. 3 with the sign of eqs. 6, 9, 13 (+PGA drives theta > 0), no impact, collapse theta(t_fin) = alpha");
     claims.note("solver", "closed forms and superposition engine; crossings by TOMS 748 to 52 bits; grid x = 0.05..2.00");
+    claims.note("inputs", "q1..q5 (cases 1-5), eqs. 27 and 28, cases 1 2 4 repeated to N = 2..12 pulses, on x = 0.05..2.00 step 0.01 (q3, q5 also at x = 50); excursions of each train at its collapse q");
 
     {  // Section 2: the minimum of q1..q5 is q4 for x < 0.51 and q2 above.
         const double x24 = root_of([](double x) { return q2(x) - q4(x); }, 0.1, 2.0);

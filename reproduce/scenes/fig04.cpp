@@ -30,7 +30,9 @@ void run_fig04(SceneContext& ctx) {
 
     harness::Table points({"point", "x", "q"});
     points.note("scene", "fig04: the marked points of Figure 4");
+    points.note("model", "linearised eq. 3, rocking on one corner without impact, collapse theta(t_fin) = alpha");
     points.note("solver", "TOMS 748 root bracketing to 52 bits on the closed forms");
+    points.note("inputs", "closed forms q1..q5 (eqs. 12, 15, 19, 22, 24) as in fig04.csv; q2 = q4 bracketed on x in [0.1, 2], q1, q2, q4 = 2 on [0.05, 5]; q3, q5 evaluated at x = 50");
     const double x24 = root_of([](double x) { return q2(x) - q4(x); }, 0.1, 2.0);
     points.row().add("q2 = q4 (minimum changes from case 4 to case 2)").add(x24).add(q2(x24));
     for (int i : {1, 2, 4}) {

@@ -94,6 +94,7 @@ void run_fig05(SceneContext& ctx) {
     table.note("scene", "fig05: the closed-form q scaled by Rd < 1, under each collapse criterion");
     table.note("model", "linearised eq. 3, impacts with restitution 1, free rocking after the input (energy decides overturning)");
     table.note("solver", solver);
+    table.note("inputs", "cases 1-5, x = 0.2..0.8 step 0.1, Rd = 0.5 0.6 0.7 0.8 0.9 0.95 0.99 0.999, PGA = q_i(x) alpha g Rd (eq. 25), points with q_i Rd A_0 <= 1 (eq. 26, no rocking) left out; alpha = 0.1, p = 1 rad/s");
     table.note("criteria", "final-rotation |theta(t_fin)| >= alpha (the paper's); peak-rotation max |theta| >= alpha during the input; overturning at any time");
     struct Count { int points = 0, collapses = 0; double worst_rd = INFINITY, worst_x = NAN; };
     std::map<std::pair<int, int>, Count> counts;
@@ -129,7 +130,10 @@ void run_fig05(SceneContext& ctx) {
 
     harness::Table summary({"case", "criterion", "points", "collapses", "lowest_Rd_collapsing", "at_x", "paper_claim"});
     summary.note("scene", "fig05: is the closed form conservative (no collapse for Rd < 1)?");
+    summary.note("model", "linearised eq. 3, impacts with restitution 1, free rocking after the input (energy decides overturning)");
     summary.note("solver", solver);
+    summary.note("inputs", "the grid of fig05_table.csv: cases 1-5, x = 0.2..0.8, Rd = 0.5..0.999, PGA = q_i(x) alpha g Rd (eq. 25)");
+    summary.note("derived from", "fig05_table.csv: per case and criterion, points = rows, collapses = rows whose collapse column for it is yes, lowest_Rd_collapsing = their smallest Rd (at_x: the smallest x at it); holds when no collapse");
     for (int c = 1; c <= 5; ++c)
         for (int k = 0; k < 3; ++k) {
             const Count& n = counts[{c, k}];
@@ -144,8 +148,9 @@ void run_fig05(SceneContext& ctx) {
     harness::Table wide({"case", "points", "failures", "failures_negative_side", "smallest_x_failing",
                          "worst_abs_theta_tfin", "worst_at_x", "worst_at_Rd"});
     wide.note("scene", "fig05: the paper's criterion |theta(t_fin)| >= alpha below the closed-form PGA, x = 0.05..3.00");
-    wide.note("model", "linearised eq. 3, impacts with restitution 1");
+    wide.note("model", "linearised eq. 3, impacts with restitution 1, integrated to t_fin only (no free rocking after the input)");
     wide.note("solver", solver);
+    wide.note("inputs", "cases 1-5, x = 0.05..3.00 step 0.05, Rd = 0.5..0.9875 step 0.0125, PGA = q_i(x) alpha g Rd (eq. 25), points with q_i Rd A_0 <= 1 (eq. 26) left out; alpha = 0.1, p = 1 rad/s");
     for (int c = 1; c <= 5; ++c) {
         int points = 0, failures = 0, negative = 0;
         double smallest = NAN, worst = 0, worst_x = NAN, worst_rd = NAN;

@@ -73,8 +73,10 @@ void run_fig08(SceneContext& ctx) {
     t.note("scene", "fig08: eq. 27 against w/p = pi/(p to), the Makris overturning curve and Coccia & Como (Figure 8)");
     t.note("model", "Makris: one-sine pulse a_p sin(w_p t + psi), psi = asin(threshold/a_p) (Zhang & Makris 2001), "
                     "overturning at any time with free rocking; a_p in units of the uplift threshold (alpha g or g tan alpha)");
-    t.note("solver", ctx.reference() ? "Odeint Fehlberg 7(8), rtol 1e-12 (reference)"
-                                     : "linearised: exact solver; full: Fehlberg 7(8) rtol 1e-10; scan by 1% then bisection to 1e-5");
+    const std::string solver = ctx.reference() ? "Odeint Fehlberg 7(8), rtol 1e-12 (reference)"
+                                               : "linearised: exact solver; full: Fehlberg 7(8) rtol 1e-10; scan by 1% then bisection to 1e-5";
+    t.note("solver", solver);
+    t.note("inputs", "w/p = 0.5..10 step 0.25, x = pi/(w/p), p = 1 rad/s; q_eq27: eq. 27, q_coccia_como: case 1 with 6 + 1 pulses, both superposition engine (S3); makris_fit = 1 + w/(6p)");
     t.note("variants", "lin_e1: linearised, restitution 1; lin_housner_a0.10: Housner e at alpha = 0.1; full_*: full eq. 1 at alpha = 0.25");
     int sims = 0;
     double worst_below = 0, at = NAN, fit_dev = 0, worst_above = 0, at_above = NAN, above_from = NAN, above_to = NAN;
@@ -101,6 +103,10 @@ void run_fig08(SceneContext& ctx) {
 
     harness::Table s({"quantity", "value"});
     s.note("scene", "fig08: the paper's claim that eq. 27 keeps a margin below Makris' curve, largest at high w/p");
+    s.note("model", "makris_lin_e1 (one-sine pulse, linearised eq. 3, restitution 1, overturning at any time) against eq. 27 (linearised eq. 3, no impact, case 2 with 6 + 1 pulses)");
+    s.note("solver", solver);
+    s.note("inputs", "w/p = 0.5..10 step 0.25 (the rows of fig08.csv)");
+    s.note("derived from", "fig08.csv columns makris_lin_e1, q_eq27, makris_fit: margin makris_lin_e1 - q_eq27, excess q_eq27/makris_lin_e1 - 1 where positive, |makris_lin_e1/makris_fit - 1| for w/p <= 3");
     s.row().add("largest margin makris_lin_e1 - q_eq27").add(worst_below);
     s.row().add("at w/p").add(at);
     s.row().add("eq. 27 above makris_lin_e1 (no margin) from w/p").add(above_from);

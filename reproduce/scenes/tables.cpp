@@ -85,6 +85,7 @@ void run_table1(SceneContext& ctx) {
     t.note("scene", "table1: the paper's 20 ITACA records (Table 1, transcribed in reproduce/data/paper_table1.csv)");
     t.note("model", "q = PGA / (alpha g), g = 981 cm/s^2 as the paper; agrees when within the printed rounding (0.005)");
     t.note("inputs", "without the ITACA records ($ROCKING_PAPER_RECORDS/caseNN.*) p is the paper's published value, shown as such");
+    t.note("solver", "q: arithmetic, no solver; p: the paper's value, or with the record present the collapse search of table1_records.csv");
     for (const PaperRow& r : paper_rows()) {
         const std::string file = paper_record(r.id);
         std::array<records::CollapseResult, 5> found{};
@@ -113,6 +114,7 @@ void run_table1(SceneContext& ctx) {
     rt.note("model", table1_search().describe());
     rt.note("solver", ctx.reference() ? "exact search; each bracket re-simulated with GSL rk8pd at rtol 1e-13"
                                       : "exact solver (brackets not re-checked: see reproduce --reference table1)");
+    rt.note("inputs", "every file of the records folder's esm/ and peer/ (../shared/records or $ROCKING_RECORDS), in g with g = 9.81 m/s^2; alpha = 0.05 0.10 0.15 0.20 0.25; q = PGA / (alpha g), g = 981 cm/s^2");
     for (const RecordRow& r : rows)
         for (std::size_t k = 0; k < 5; ++k) {
             const auto& c = r.collapse[k];
@@ -130,6 +132,8 @@ void run_table2(SceneContext& ctx) {
     harness::Table t({"case", "PGA_cms2", "PGV_cms", "to5_computed", "to5_paper", "agrees"});
     t.note("scene", "table2: to_5 = pi |PGV| / PGA (eq. 31) from Table 1's PGA and PGV, against Table 2");
     t.note("model", "agrees when within the printed rounding (0.0005 s)");
+    t.note("solver", "arithmetic, no solver");
+    t.note("inputs", "PGA and PGV of reproduce/data/paper_table1.csv, to_5 of reproduce/data/paper_table2.csv (20 records)");
     for (const PaperRow& r : paper_rows()) {
         const double to5 = M_PI * std::fabs(r.pgv) / r.pga;
         t.row().add(r.id).add(r.pga).add(r.pgv).add(to5).add(r.to[4]).add(std::fabs(to5 - r.to[4]) <= 0.0005 + 1e-9);
@@ -142,6 +146,8 @@ void run_table2(SceneContext& ctx) {
                       "eqs29_30_with_to1_to2"});
     c.note("scene", "table2: are Table 2's to_1..to_4 consistent with eqs. 29-30 (to_3 / to_4 = pi / 2)?");
     c.note("model", "consistent when |to_a - (pi/2) to_b| <= 0.0005 (1 + pi/2), the rounding of three printed decimals");
+    c.note("solver", "arithmetic, no solver");
+    c.note("inputs", "to_1..to_4 of reproduce/data/paper_table2.csv (20 records)");
     for (const PaperRow& r : paper_rows()) {
         const double tol = 0.0005 * (1.0 + M_PI / 2) + 1e-12;
         c.row().add(r.id).add(r.to[0]).add(r.to[1]).add(r.to[2]).add(r.to[3]).add(r.to[2] / r.to[3])
@@ -159,6 +165,8 @@ void run_table2(SceneContext& ctx) {
     for (int k = 1; k <= 11; ++k) columns.push_back("to_" + std::to_string(k));
     harness::Table rt(columns);
     rt.note("scene", "table2: the eleven half-periods of the real records of the records folder (NOT the paper's)");
+    rt.note("model", "ground-motion measures of Section 4 (records/measures.hpp): PGA, PGV, area Amax of the largest pulse, to_1..to_11 as defined in the text");
+    rt.note("inputs", "every file of the records folder's esm/ and peer/ (../shared/records or $ROCKING_RECORDS), acceleration linear between samples");
     rt.note("solver", "records/measures.hpp: to_1..to_5 exact for the piecewise-linear record; to_6, to_7 FFT peak (8x zero padding, parabola); to_8..to_11 Morse CWT (beta 27, gamma 3, 16 voices, parabola in log f)");
     for (const RecordRow& r : rows) {
         rt.row().add(r.file).add(r.name).add(r.pga_cms2).add(r.pgv_cms).add(100.0 * r.h.amax);
@@ -170,8 +178,15 @@ void run_table2(SceneContext& ctx) {
 void run_fig11(SceneContext& ctx) {
     const std::vector<std::string> columns = {"source", "id", "k", "alpha", "q", "p", "to", "x", "q_eq27", "conservative"};
     harness::Table paper(columns), recs(columns);
+    const char* eq27_model = "eq. 27 (linearised eq. 3, no impact, case 2 repeated to 6 pulses, collapse at the onset of the 7th) at x = p to_k";
     paper.note("scene", "fig11: points (p to_k, q) of the paper's Tables 1-2 against eq. 27; conservative when eq. 27 at x = p to_k does not exceed q");
+    paper.note("model", eq27_model);
+    paper.note("solver", "eq. 27 by the superposition engine (S3), exact up to rounding; q, p, to_k as transcribed");
+    paper.note("inputs", "q and p of reproduce/data/paper_table1.csv (alpha = 0.05..0.25), to_1..to_11 of reproduce/data/paper_table2.csv: 20 records x 11 k x 5 alpha");
     recs.note("scene", "fig11: the same for the real records of the records folder (NOT the paper's): p from table1, to_k from table2");
+    recs.note("model", eq27_model);
+    recs.note("solver", "eq. 27 by the superposition engine (S3), exact up to rounding; p by table1's collapse search (" + table1_search().describe() + ")");
+    recs.note("inputs", "the records of table1_records.csv with a p_collapse (found below 30 rad/s), q = PGA / (alpha g) with g = 981 cm/s^2, to_k of table2_records.csv");
     std::map<std::pair<std::string, int>, std::pair<int, int>> counts;  // (source, k) -> (points, non-conservative)
     auto add = [&](harness::Table& t, const std::string& source, const std::string& id, int k, double alpha, double q,
                    double p, double to) {
@@ -197,6 +212,9 @@ void run_fig11(SceneContext& ctx) {
     auto write_counts = [&](const std::string& source, const std::string& file) {
         harness::Table c({"source", "k", "points", "non_conservative"});
         c.note("scene", "fig11: non-conservative points per definition of to (" + source + ")");
+        c.note("model", eq27_model);
+        c.note("derived from", std::string(source == "paper" ? "fig11_points.csv" : "fig11_records.csv") +
+                                   ": per k, points = rows, non_conservative = rows with conservative no");
         for (const auto& [key, n] : counts)
             if (key.first == source) c.row().add(key.first).add(key.second).add(n.first).add(n.second);
         ctx.write(c, file);
@@ -216,8 +234,15 @@ void run_fig12(SceneContext& ctx) {
     const std::vector<std::string> columns = {"source", "id", "alpha", "q", "x", "q_eq27", "conservative", "code_q2_unsafe"};
     harness::Table paper(columns), recs(columns);
     paper.note("scene", "fig12: to_5 only; the code's q = 2 is unsafe for a point whose collapse q is below 2");
-    paper.note("model", "eq. 27 with x = p to_5; eq. 27 = 2 at x = " + harness::format_number(x2));
+    const std::string model = "eq. 27 with x = p to_5; eq. 27 = 2 at x = " + harness::format_number(x2);
+    const char* solver = "eq. 27 by the superposition engine (S3); x where eq. 27 = 2 by TOMS 748 to 52 bits on [0.1, 3]";
+    paper.note("model", model);
+    paper.note("solver", solver);
+    paper.note("inputs", "q and p of reproduce/data/paper_table1.csv (alpha = 0.05..0.25), to_5 of reproduce/data/paper_table2.csv: 20 records x 5 alpha");
     recs.note("scene", "fig12: the same for the real records of the records folder (NOT the paper's)");
+    recs.note("model", model);
+    recs.note("solver", std::string(solver) + "; p by table1's collapse search (" + table1_search().describe() + ")");
+    recs.note("inputs", "the records of table1_records.csv with a p_collapse (found below 30 rad/s), q = PGA / (alpha g) with g = 981 cm/s^2, to_5 of table2_records.csv");
     int paper_points = 0, paper_nc = 0, beyond = 0, beyond_unsafe = 0;
     auto add = [&](harness::Table& t, const std::string& source, const std::string& id, double alpha, double q, double x) {
         const double qe = q2_n6(x);
@@ -240,6 +265,9 @@ void run_fig12(SceneContext& ctx) {
     else ctx.write(recs, "fig12_records.csv");
     harness::Table s({"quantity", "value"});
     s.note("scene", "fig12: summary for the paper's points");
+    s.note("model", model);
+    s.note("solver", solver);
+    s.note("derived from", "fig12_points.csv: points = rows, non-conservative = conservative no, beyond the crossing = x above the x where eq. 27 = 2, of those code_q2_unsafe yes");
     s.row().add("x where eq. 27 = 2").add(x2);
     s.row().add("paper points").add(paper_points);
     s.row().add("paper points where eq. 27 exceeds q (non-conservative)").add(paper_nc);
