@@ -100,7 +100,7 @@ bool compare_scene(const Options& o, const std::string& scene, const std::string
             continue;
         }
         const harness::Comparison c = harness::compare(harness::read_csv(o.expected + "/" + scene + "/" + file),
-                                                       harness::read_csv(actual_path), spec, file);
+                                                       harness::read_csv(actual_path), spec, file, o.reference);
         if (!c.match()) {
             all = false;
             outcome.detail = file + ": " + (c.problem.empty() ? std::to_string(c.failed) + " of " +

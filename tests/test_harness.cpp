@@ -41,6 +41,20 @@ TEST(Harness, CsvErrorsNameFileAndLine) {
     EXPECT_NE(error_of([&] { read_csv(empty); }).find("empty file"), std::string::npos);
 }
 
+TEST(Harness, AReferenceVerdictReadsNotCheckedWithoutTheReferenceRun) {
+    // table1_records.csv said bracket_confirmed = yes beside "brackets not
+    // re-checked": a plain run must say it did not check, a --reference run
+    // must give the expected verdict.
+    const auto spec = ToleranceSpec::read(write_temp("spec-ref", "a.csv * exact labels\na.csv ok reference rk8pd's verdict\n"));
+    const auto expected = read_csv(write_temp("e-ref.csv", "name,ok\nA,yes\nB,-\n"));
+    const auto plain = read_csv(write_temp("plain.csv", "name,ok\nA,not checked\nB,not checked\n"));
+    const auto claimed = read_csv(write_temp("claimed.csv", "name,ok\nA,yes\nB,-\n"));
+    EXPECT_TRUE(compare(expected, plain, spec, "a.csv", false).match());
+    EXPECT_FALSE(compare(expected, claimed, spec, "a.csv", false).match());
+    EXPECT_TRUE(compare(expected, claimed, spec, "a.csv", true).match());
+    EXPECT_FALSE(compare(expected, plain, spec, "a.csv", true).match());
+}
+
 TEST(Harness, CompareCatchesEachKindOfDifference) {
     const auto spec = ToleranceSpec::read(write_temp("spec", "a.csv * 1e-6 0 noise\na.csv label exact text\n"));
     const auto expected = read_csv(write_temp("e.csv", "x,label\n1.0,yes\n2.0,no\n"));

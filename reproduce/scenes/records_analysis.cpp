@@ -1,5 +1,7 @@
 #include "records_analysis.hpp"
 
+#include "harness/compare.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -62,15 +64,18 @@ RecordRow analyse(const std::string& root, const std::string& path, bool referen
     const records::CollapseOptions o = table1_search();
     for (std::size_t k = 0; k < kTableAlphas.size(); ++k) {
         row.collapse[k] = records::smallest_collapse_p(input, kTableAlphas[k], o);
-        if (reference && row.collapse[k].found && !row.collapse[k].below_range()) {
+        const bool bracket = row.collapse[k].found && !row.collapse[k].below_range();
+        if (!reference) {
+            row.confirmed[k] = harness::kNotChecked;
+        } else if (!bracket) {
+            row.confirmed[k] = "-";
+        } else {
             // A second solver at a much tighter tolerance must see the same
             // boundary: collapse at p, none at p_safe.
             const records::CollapseOptions check = table1_check();
             const bool at_p = records::collapses_at(input, kTableAlphas[k], row.collapse[k].p, check);
             const bool below = records::collapses_at(input, kTableAlphas[k], row.collapse[k].p_safe, check);
-            row.confirmed[k] = at_p && !below;
-        } else {
-            row.confirmed[k] = true;
+            row.confirmed[k] = at_p && !below ? "yes" : "no";
         }
     }
     return row;

@@ -21,7 +21,9 @@ struct RecordRow {
     double pga_cms2 = 0, pgv_cms = 0;
     records::HalfPeriods h;
     std::array<records::CollapseResult, 5> collapse;
-    std::array<bool, 5> confirmed{};  // reference mode: a second solver confirms the bracket
+    // The second solver's verdict on the bracket: "yes" or "no" in reference
+    // mode, "-" where there is no bracket, harness::kNotChecked otherwise.
+    std::array<std::string, 5> confirmed{};
 };
 
 // The records folder: $ROCKING_RECORDS, else <source>/../shared/records.

@@ -4,9 +4,12 @@
 // expected/<scene>/TOLERANCES lists, one per line,
 //     <file> <column> <abs> <rel> <reason...>
 //     <file> <column> exact <reason...>
+//     <file> <column> reference <reason...>
 // Column '*' is the default for the file's other columns.  A number passes
 // when |actual - expected| <= abs + rel |expected|; an 'exact' cell must be
-// the same text.  Every file named there is compared; a file the scene does
+// the same text.  A 'reference' cell is a second method's verdict: the same
+// text in a --reference run, and "not checked" in any other (a "yes" there
+// would claim a check that did not run).  Every file named there is compared; a file the scene does
 // not write is a failure.
 #pragma once
 
@@ -20,6 +23,7 @@ namespace rocking::harness {
 
 struct Tolerance {
     bool exact = false;
+    bool reference = false;  // exact in a --reference run, "not checked" otherwise
     double abs = 0.0;
     double rel = 0.0;
     std::string reason;
@@ -60,7 +64,11 @@ struct Comparison {
     bool match() const { return problem.empty() && failed == 0; }
 };
 
+// reference_run: the scene ran with its reference method (reproduce --reference).
 Comparison compare(const CsvFile& expected, const CsvFile& actual, const ToleranceSpec& spec,
-                   const std::string& file);
+                   const std::string& file, bool reference_run = false);
+
+// What a 'reference' cell reads in a run without the reference method.
+inline constexpr const char* kNotChecked = "not checked";
 
 }  // namespace rocking::harness
