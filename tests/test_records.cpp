@@ -2,9 +2,12 @@
 // signals whose answers are known in closed form, and the collapse search.
 #include <gtest/gtest.h>
 
+#include <gsl/gsl_fft_complex.h>
+
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -15,6 +18,7 @@
 
 #include "dynamics/ground_input.hpp"
 #include "records/collapse.hpp"
+#include "records/cwt.hpp"
 #include "records/measures.hpp"
 #include "records/record.hpp"
 #include "test_util.hpp"
@@ -389,6 +393,166 @@ TEST(Measures, MavroeidisPapageorgiouPulse) {
     const HalfPeriods h = half_periods(a, dt);
     EXPECT_NEAR(h.pgv, A, 1e-4);
     for (int k : {6, 8, 10}) EXPECT_NEAR(h.to[k] * 2 * fp, 1.0, 0.05) << "to_" << k + 1;
+}
+
+namespace {
+// The CWT as cwt.hpp defines it, the straightforward way (the code before the
+// blocks): the record zero-padded to a power of two n >= 2N, one n-point
+// transform per scale with Psi at every positive bin, |W| by hypot.
+CwtSummary single_transform_cwt(const std::vector<double>& x, double dt, double f_min, double f_max, int voices) {
+    std::size_t n = 1;
+    while (n < 2 * x.size()) n <<= 1;
+    gsl_fft_complex_wavetable* table = gsl_fft_complex_wavetable_alloc(n);
+    gsl_fft_complex_workspace* work = gsl_fft_complex_workspace_alloc(n);
+    std::vector<double> X(2 * n, 0.0), W(2 * n);
+    for (std::size_t k = 0; k < x.size(); ++k) X[2 * k] = x[k];
+    gsl_fft_complex_forward(X.data(), 1, n, table, work);
+    const double beta = 27, gamma = 3, wp = std::pow(beta / gamma, 1 / gamma);
+    const double a_bg = 2 * std::exp((beta / gamma) * (1 + std::log(gamma / beta)));
+    CwtSummary out;
+    const int last = static_cast<int>(std::ceil(voices * std::log2(f_max / f_min)));
+    for (int j = 0; j <= last; ++j) {
+        const double f = f_max * std::pow(2.0, -static_cast<double>(j) / voices), s = wp / (2 * M_PI * f);
+        for (std::size_t k = 0; k < n; ++k) {
+            const double w = 2 * M_PI * k / (n * dt), sw = s * w;
+            const double psi = (k >= 1 && k <= n / 2) ? a_bg * std::exp(beta * std::log(sw) - std::pow(sw, gamma)) : 0.0;
+            W[2 * k] = X[2 * k] * psi;
+            W[2 * k + 1] = X[2 * k + 1] * psi;
+        }
+        gsl_fft_complex_inverse(W.data(), 1, n, table, work);
+        double mx = 0, sum = 0, energy = 0;
+        for (std::size_t k = 0; k < x.size(); ++k) {
+            const double m = std::hypot(W[2 * k], W[2 * k + 1]);
+            mx = std::max(mx, m), sum += m, energy += m * m * dt;
+        }
+        out.frequency.push_back(f);
+        out.max_amp.push_back(mx);
+        out.mean_amp.push_back(sum / x.size());
+        out.energy.push_back(energy);
+    }
+    gsl_fft_complex_workspace_free(work);
+    gsl_fft_complex_wavetable_free(table);
+    return out;
+}
+
+// fourier_peak as measures.hpp defines it, the straightforward way: one transform
+// of the record zero-padded to the power of two >= 8 N, the first largest bin,
+// a parabola through it and its neighbours.
+double padded_fourier_peak(const std::vector<double>& x, double dt) {
+    std::size_t n = 1;
+    while (n < 8 * x.size()) n <<= 1;
+    std::vector<double> X(2 * n, 0.0);
+    for (std::size_t k = 0; k < x.size(); ++k) X[2 * k] = x[k];
+    gsl_fft_complex_radix2_forward(X.data(), 1, n);
+    auto amp = [&](std::size_t k) { return std::hypot(X[2 * k], X[2 * k + 1]); };
+    std::size_t best = 1;
+    for (std::size_t k = 1; k < n / 2; ++k)
+        if (amp(k) > amp(best)) best = k;
+    double shift = 0;
+    const double ym = amp(best - 1), y0 = amp(best), yp = amp(best + 1), den = ym - 2 * y0 + yp;
+    if (best > 1 && den < 0) shift = 0.5 * (ym - yp) / den;
+    return (best + shift) / (n * dt);
+}
+
+// Noise through a resonator at f0 (damping 5 %) plus Gaussian-windowed pulses:
+// a record with a broad spectrum and its energy near f0.  xorshift64, so that the
+// record is the same on every platform.
+std::vector<double> synthetic_record(std::size_t n, double dt, double f0, std::uint64_t seed) {
+    auto uniform = [&seed] {
+        seed ^= seed << 13, seed ^= seed >> 7, seed ^= seed << 17;
+        return static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
+    };
+    const double w = 2 * M_PI * f0 * dt, r = std::exp(-0.05 * w);
+    std::vector<double> a(n);
+    double y1 = 0, y2 = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double y = 2 * r * std::cos(w) * y1 - r * r * y2 + uniform();
+        y2 = y1, y1 = y, a[k] = y;
+    }
+    for (int p = 0; p < 4; ++p) {
+        const double t0 = (0.2 + 0.2 * p) * n * dt, fp = 0.3 + 0.8 * p, height = 20 * (1 + uniform());
+        for (std::size_t k = 0; k < n; ++k) {
+            const double u = k * dt - t0;
+            if (std::fabs(fp * u) < 6) a[k] += height * std::exp(-fp * fp * u * u) * std::cos(2 * M_PI * fp * u);
+        }
+    }
+    return a;
+}
+
+// The largest |a - b| over scales, against the largest b: W's rounding is relative
+// to the record's largest |X|, so scales far from the peak are held to it too.
+double worst_against_peak(const std::vector<double>& a, const std::vector<double>& b) {
+    double worst = 0, peak = 0;
+    for (std::size_t j = 0; j < a.size(); ++j) worst = std::max(worst, std::fabs(a[j] - b[j])), peak = std::max(peak, b[j]);
+    return worst / peak;
+}
+}  // namespace
+
+TEST(Cwt, BlocksGiveTheSingleTransformsValues) {
+    // The blocks cut the wavelet at 40 scales (|psi| <= 3.2e-21 beyond, cwt.cpp) and
+    // leave out the bins where Psi < 2e-30: the sums agree with the single
+    // transforms to rounding, 6.4e-16 of their peak measured; 1e-13 is the bound
+    // (a cut at 30 scales, 1.4e-12, fails it).
+    struct Case {
+        const char* what;
+        std::vector<double> x;
+        double dt;
+        bool blocks;  // the highest scales by blocks (else every scale by the whole transform)
+    };
+    std::vector<Case> cases = {{"resonator at 2 Hz, 70,000 samples", synthetic_record(70000, 0.01, 2.0, 7), 0.01, true},
+                               {"resonator at 0.4 Hz, 50,000 samples", synthetic_record(50000, 0.005, 0.4, 11), 0.005, true},
+                               {"resonator at 9 Hz, 3,001 samples", synthetic_record(3001, 0.002, 9.0, 5), 0.002, false}};
+    const std::string norcia = kRecords + "/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC";
+    if (fs::exists(norcia)) {
+        const Record r = read_esm(norcia);
+        cases.push_back({"Norcia 2016-08-24 EW", r.accel, r.dt, true});
+    }
+    for (const Case& c : cases) {
+        const double f_max = std::min(25.0, 0.25 / c.dt);
+        const CwtSummary got = morse_cwt(c.x, c.dt, 0.1, f_max, 4), want = single_transform_cwt(c.x, c.dt, 0.1, f_max, 4);
+        ASSERT_EQ(got.frequency.size(), want.frequency.size());
+        EXPECT_EQ(got.frequency, want.frequency);
+        EXPECT_LT(worst_against_peak(got.max_amp, want.max_amp), 1e-13) << c.what;
+        EXPECT_LT(worst_against_peak(got.mean_amp, want.mean_amp), 1e-13) << c.what;
+        EXPECT_LT(worst_against_peak(got.energy, want.energy), 1e-13) << c.what;
+        // Both ways are compared: blocks at the highest frequencies of the long
+        // records, the whole record at the lowest of the first and everywhere in the
+        // short one.
+        std::size_t whole = 1;
+        while (whole < 2 * c.x.size()) whole <<= 1;
+        const double s_high = std::pow(27.0 / 3.0, 1 / 3.0) / (2 * M_PI * f_max);
+        EXPECT_EQ(morse_block_length(morse_half_length(s_high, c.dt), c.x.size()) < whole, c.blocks) << c.what;
+    }
+    const double s_low = std::pow(27.0 / 3.0, 1 / 3.0) / (2 * M_PI * 0.1);
+    EXPECT_EQ(morse_block_length(morse_half_length(s_low, 0.01), 70000), 262144u);
+}
+
+TEST(Measures, FourierPeakByEightTransformsIsThePaddedTransformsPeak) {
+    // Eight transforms of N points instead of one of 8 N: the same amplitudes to
+    // rounding, so the same bin and a parabola within 1e-13 relative (4.4e-16
+    // measured).
+    for (const auto& [x, dt] : {std::pair{synthetic_record(70000, 0.01, 2.0, 7), 0.01},
+                                std::pair{synthetic_record(50000, 0.005, 0.4, 11), 0.005},
+                                std::pair{synthetic_record(3001, 0.002, 9.0, 5), 0.002},
+                                std::pair{synthetic_record(4, 0.01, 1.0, 3), 0.01}}) {
+        EXPECT_NEAR(fourier_peak(x, dt) / padded_fourier_peak(x, dt), 1.0, 1e-13) << x.size() << " samples";
+    }
+    // Transforms shorter than N fold the record onto them: 256 of 4096 points here.
+    const std::vector<double> x = synthetic_record(70000, 0.01, 2.0, 7);
+    EXPECT_NEAR(fourier_peak(x, 0.01, 4096) / padded_fourier_peak(x, 0.01), 1.0, 1e-13);
+}
+
+TEST(Measures, HalfPeriodsDoNotDependOnTheRecordsScale) {
+    // A record near the largest double: its |W|^2 summed as it is overflowed, every
+    // scale's energy was inf, and to_10 and to_11 fell on the band's first scale.
+    const std::vector<double> x = synthetic_record(20000, 0.01, 2.0, 7);
+    const HalfPeriods h = half_periods(x, 0.01);
+    for (double scale : {1e300, 1e-300}) {
+        std::vector<double> y(x);
+        for (double& v : y) v *= scale;
+        const HalfPeriods g = half_periods(y, 0.01);
+        for (int k = 0; k < 11; ++k) EXPECT_NEAR(g.to[k] / h.to[k], 1.0, 1e-12) << "to_" << k + 1 << " at " << scale;
+    }
 }
 
 TEST(CollapseSearch, ConstantStepHasAClosedFormThreshold) {

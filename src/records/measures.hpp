@@ -11,12 +11,14 @@
 //   measures (to_7, to_9, to_11) use it without its least-squares linear trend;
 // - Fourier spectra: the FFT of the record zero-padded to a power of two at
 //   least 8 times its length (a frequency grid 8 times finer than 1/duration),
-//   the peak refined by a parabola through the three highest bins;
+//   the peak refined by a parabola through the three highest bins (computed by
+//   shorter transforms, measures.cpp);
 // - the CWT uses the generalised Morse wavelet (eq. 32), beta = 27, gamma = 3,
 //   see cwt.hpp.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -59,7 +61,10 @@ struct HalfPeriods {
 HalfPeriods half_periods(const std::vector<double>& a, double dt);
 inline HalfPeriods half_periods(const Record& r) { return half_periods(r.accel, r.dt); }
 
-// Peak frequency (Hz) of the Fourier amplitude spectrum of x sampled at dt.
-double fourier_peak(const std::vector<double>& x, double dt);
+// Peak frequency (Hz) of the Fourier amplitude spectrum of x sampled at dt, made
+// by transforms of at most largest_transform points (a power of two; the spectrum
+// does not depend on it, its memory does: 48 bytes a point).
+double fourier_peak(const std::vector<double>& x, double dt, std::size_t largest_transform = std::size_t(1) << 20);
+
 
 }  // namespace rocking::records
