@@ -542,6 +542,26 @@ TEST(Measures, FourierPeakByEightTransformsIsThePaddedTransformsPeak) {
     EXPECT_NEAR(fourier_peak(x, 0.01, 4096) / padded_fourier_peak(x, 0.01), 1.0, 1e-13);
 }
 
+TEST(Measures, PeakMotionIsTheOneDefinitionOfTo5) {
+    // assess reads PGA, PGV and to_5 from peak_motion alone; half_periods must
+    // report the very same numbers.
+    for (const auto& [x, dt] : {std::pair{synthetic_record(20000, 0.01, 2.0, 7), 0.01},
+                                std::pair{synthetic_record(3001, 0.002, 9.0, 5), 0.002}}) {
+        const PeakMotion m = peak_motion(x, dt);
+        const HalfPeriods h = half_periods(x, dt);
+        EXPECT_EQ(m.pga, h.pga);
+        EXPECT_EQ(m.pgv, h.pgv);
+        EXPECT_EQ(m.to5, h.to[4]);
+        EXPECT_EQ(m.to5, M_PI * m.pgv / m.pga);  // eq. 31
+    }
+    EXPECT_NE(error_of([] { peak_motion({0, 0, 0, 0}, 0.01); }).find("identically zero"), std::string::npos);
+    EXPECT_NE(error_of([] { peak_motion({1, 0, 1}, 0.01); }).find(">= 4 samples"), std::string::npos);
+    // No CWT band at so coarse a step: the half-periods are refused, to_5 is not.
+    const std::vector<double> coarse = synthetic_record(100, 3.0, 0.05, 3);
+    EXPECT_NE(error_of([&] { half_periods(coarse, 3.0); }).find("leaves the CWT no band"), std::string::npos);
+    EXPECT_GT(peak_motion(coarse, 3.0).to5, 0);
+}
+
 TEST(Measures, HalfPeriodsDoNotDependOnTheRecordsScale) {
     // A record near the largest double: its |W|^2 summed as it is overflowed, every
     // scale's energy was inf, and to_10 and to_11 fell on the band's first scale.

@@ -133,6 +133,16 @@ double fourier_peak(const std::vector<double>& x, double dt, std::size_t largest
     return (best + shift) / (n * dt);
 }
 
+PeakMotion peak_motion(const std::vector<double>& a, double dt) {
+    if (a.size() < 4 || !(dt > 0)) throw std::invalid_argument("half_periods: a record needs >= 4 samples and dt > 0");
+    PeakMotion m;
+    for (double v : a) m.pga = std::max(m.pga, std::fabs(v));
+    if (!(m.pga > 0)) throw std::invalid_argument("half_periods: the record is identically zero");
+    for (double v : velocity_of(a, dt)) m.pgv = std::max(m.pgv, std::fabs(v));
+    m.to5 = M_PI * m.pgv / m.pga;
+    return m;
+}
+
 namespace {
 // v less its least-squares line through (k, v_k): an integration offset would
 // otherwise put the velocity's spectral peaks at 0 Hz.
@@ -148,12 +158,10 @@ std::vector<double> without_trend(const std::vector<double>& v) {
 }  // namespace
 
 HalfPeriods half_periods(const std::vector<double>& a, double dt) {
-    if (a.size() < 4 || !(dt > 0)) throw std::invalid_argument("half_periods: a record needs >= 4 samples and dt > 0");
+    const PeakMotion motion = peak_motion(a, dt);
     HalfPeriods h;
-    for (double v : a) h.pga = std::max(h.pga, std::fabs(v));
-    if (!(h.pga > 0)) throw std::invalid_argument("half_periods: the record is identically zero");
-    const std::vector<double> v = velocity_of(a, dt);
-    for (double x : v) h.pgv = std::max(h.pgv, std::fabs(x));
+    h.pga = motion.pga;
+    h.pgv = motion.pgv;
     const std::vector<Pulse> pulses = pulses_of(a, dt);
     const Pulse* largest = &pulses.front();
     const Pulse* with_pga = &pulses.front();
@@ -166,7 +174,7 @@ HalfPeriods half_periods(const std::vector<double>& a, double dt) {
     h.to[1] = with_pga->t_end - with_pga->t_start;
     h.to[2] = M_PI * h.amax / (2.0 * h.pga);
     h.to[3] = h.amax / h.pga;
-    h.to[4] = M_PI * h.pgv / h.pga;
+    h.to[4] = motion.to5;
     // The spectral peaks do not depend on the record's scale, and dividing by a power
     // of two changes no bit of them; near the PGA, |W|^2 stays in range for a
     // record near the largest double.
@@ -179,6 +187,8 @@ HalfPeriods half_periods(const std::vector<double>& a, double dt) {
     h.to[5] = 1.0 / (2.0 * h.f_fourier_acc);
     h.to[6] = 1.0 / (2.0 * h.f_fourier_vel);
     const double f_max = std::min(25.0, 0.25 / dt), f_min = 0.1;
+    if (!(f_max > f_min))
+        throw std::invalid_argument("half_periods: a sampling step of 2.5 s or more leaves the CWT no band (0.1 Hz to 0.25/dt)");
     const CwtSummary ca = morse_cwt(an, dt, f_min, f_max, 16), cv = morse_cwt(vd, dt, f_min, f_max, 16);
     // The peak scale, refined by a parabola in log-frequency through the
     // three highest values (the grid is geometric, 16 voices per octave).

@@ -38,6 +38,16 @@ std::vector<Pulse> pulses_of(const std::vector<double>& a, double dt);
 // Velocity samples: v_k = integral_0^{t_k} a (trapezoid = exact for linear a).
 std::vector<double> velocity_of(const std::vector<double>& a, double dt);
 
+// PGA = max |a|, PGV = max |v| and the half-period of the equivalent harmonic wave,
+// to_5 = pi PGV / PGA (eq. 31): what assess needs, and half_periods' definition of
+// the three.  Throws std::invalid_argument for fewer than 4 samples, dt <= 0 or a
+// record that is zero throughout.
+struct PeakMotion {
+    double pga = 0, pgv = 0;  // m/s^2, m/s
+    double to5 = 0;           // s
+};
+PeakMotion peak_motion(const std::vector<double>& a, double dt);
+
 struct HalfPeriods {
     double pga = 0, pgv = 0;         // m/s^2, m/s
     double amax = 0;                 // area of the largest pulse, m/s

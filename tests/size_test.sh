@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# The command line at the extremes of size (issue 31, item 6): what assess
+# computes and prints.  Correctness only, no timings.
+set -u
+rocking="$1"
+fail=0
+check() {  # description, expected substring, command...
+    local what="$1" want="$2"; shift 2
+    local out; out=$("$@" 2>&1)
+    if [[ "$out" != *"$want"* ]]; then echo "FAIL: $what: wanted '$want' in: $out"; fail=1; else echo "ok: $what"; fi
+}
+check_not() {  # description, substring that must be absent, command...
+    local what="$1" unwanted="$2"; shift 2
+    local out; out=$("$@" 2>&1)
+    if [[ "$out" == *"$unwanted"* ]]; then echo "FAIL: $what: '$unwanted' should not be in: $out"; fail=1; else echo "ok: $what"; fi
+}
+check_no_long_number() {  # description, command...: no run of more than 17 digits in the output
+    local what="$1"; shift
+    local out; out=$("$@" 2>&1)
+    if [[ "$out" =~ [0-9]{18} ]]; then echo "FAIL: $what: a number of more than 17 digits in: $out"; fail=1; else echo "ok: $what"; fi
+}
+status() {  # description, expected exit status, command...
+    local what="$1" want="$2"; shift 2
+    "$@" >/dev/null 2>&1; local got=$?
+    if [[ $got != "$want" ]]; then echo "FAIL: $what: exit $got, wanted $want"; fail=1; else echo "ok: $what (exit $got)"; fi
+}
+json_field() {  # field, command...: the field's value as printed in the command's --json
+    local field="$1"; shift
+    "$@" 2>/dev/null | /usr/bin/python3 -c "import json, sys; print(repr(json.load(sys.stdin)$field))"
+}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# assess: to_5 alone, the same number as record info's to_5 (one definition).
+awk 'BEGIN { for (i = 0; i < 3000; i++) printf "%.9f\n", sin(0.02 * i) * exp(-((i - 1500) / 600.0)^2) + 0.3 * cos(0.37 * i) }' > "$tmp/rec.txt"
+info=$(json_field '["to"][4]' "$rocking" record info "$tmp/rec.txt" --unit m/s2 --dt 0.01 --json)
+assess=$(json_field '["to5"]' "$rocking" assess "$tmp/rec.txt" --unit m/s2 --dt 0.01 --alpha 0.15 --height 3 --json)
+if [[ -n "$info" && "$info" == "$assess" ]]; then echo "ok: assess's to_5 is record info's ($info)"
+else echo "FAIL: assess's to_5 ($assess) is not record info's ($info)"; fail=1; fi
+records="$(dirname "$0")/../../shared/records"
+norcia="$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC"
+if [ -f "$norcia" ]; then
+    info=$(json_field '["to"][4]' "$rocking" record info "$norcia" --json)
+    assess=$(json_field '["to5"]' "$rocking" assess "$norcia" --alpha 0.15 --height 3 --json)
+    if [[ -n "$info" && "$info" == "$assess" ]]; then echo "ok: on Norcia too ($info)"
+    else echo "FAIL: on Norcia, assess's to_5 ($assess) is not record info's ($info)"; fail=1; fi
+    # A tiny height gives p = 3.8e150 rad/s, which %.4f printed in 150 digits.
+    check_no_long_number "assess prints a huge p in exponent form" "$rocking" assess "$norcia" --alpha 0.15 --height 1e-300
+    check "and says so" "p = 3.8144e+150 rad/s" "$rocking" assess "$norcia" --alpha 0.15 --height 1e-300
+else
+    echo "skipped: Norcia checks (no shared records folder at $records)"
+fi
+# A sampling step of 3 s leaves the CWT no band (0.1 Hz to 0.25/dt): record info
+# refuses the half-periods; assess, which needs none of the CWT, still answers.
+awk 'BEGIN { for (i = 0; i < 40; i++) printf "%.6f\n", sin(0.3 * i) }' > "$tmp/coarse.txt"
+check "record info: no CWT band at dt = 3 s" "leaves the CWT no band" "$rocking" record info "$tmp/coarse.txt" --unit g --dt 3
+status "assess at dt = 3 s" 0 "$rocking" assess "$tmp/coarse.txt" --unit g --dt 3 --alpha 0.15 --height 3
+
+exit $fail
