@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The command line at the extremes of size (issue 31, item 6): what assess
-# computes and prints.  Correctness only, no timings.
+# The command line at the extremes of size (issue 31, items 6 and 8): what
+# assess computes and prints, and the CWT half-periods clamped at the edge of
+# their band.  Correctness only, no timings.
 set -u
 rocking="$1"
 fail=0
@@ -55,5 +56,19 @@ fi
 awk 'BEGIN { for (i = 0; i < 40; i++) printf "%.6f\n", sin(0.3 * i) }' > "$tmp/coarse.txt"
 check "record info: no CWT band at dt = 3 s" "leaves the CWT no band" "$rocking" record info "$tmp/coarse.txt" --unit g --dt 3
 status "assess at dt = 3 s" 0 "$rocking" assess "$tmp/coarse.txt" --unit g --dt 3 --alpha 0.15 --height 3
+
+# The CWT scans 0.1 Hz to min(25 Hz, 0.25/dt).  A 0.02 Hz cosine peaks below it:
+# its velocity measures are largest on the lowest scale, and to_9 and to_11 were
+# printed as if measured there.  A 2 Hz one peaks inside, with no warning.
+awk 'BEGIN { for (i = 0; i < 20000; i++) printf "%.9f\n", cos(2 * 3.141592653589793 * 0.02 * i * 0.05) }' > "$tmp/slow.txt"
+check "a to at the band's edge is warned of" "warning: to_9 is the edge of the CWT's band (0.0970 to 5.0000 Hz), not a peak" \
+    "$rocking" record info "$tmp/slow.txt" --unit m/s2 --dt 0.05
+check "on the lowest-frequency side" "largest on the band's lowest-frequency scale" \
+    "$rocking" record info "$tmp/slow.txt" --unit m/s2 --dt 0.05
+check "its JSON lists the to at the edge" '"to_at_band_edge": [8, 9, 10, 11], "cwt_band_hz": [0.097020141568240931, 5]' \
+    "$rocking" record info "$tmp/slow.txt" --unit m/s2 --dt 0.05 --json
+awk 'BEGIN { for (i = 0; i < 20001; i++) printf "%.9f\n", cos(2 * 3.141592653589793 * 2 * i * 0.001) }' > "$tmp/mid.txt"
+check_not "a peak inside the band: no warning" "warning" "$rocking" record info "$tmp/mid.txt" --unit m/s2 --dt 0.001
+check "and an empty list" '"to_at_band_edge": []' "$rocking" record info "$tmp/mid.txt" --unit m/s2 --dt 0.001 --json
 
 exit $fail

@@ -562,6 +562,31 @@ TEST(Measures, PeakMotionIsTheOneDefinitionOfTo5) {
     EXPECT_GT(peak_motion(coarse, 3.0).to5, 0);
 }
 
+TEST(Measures, ACwtPeakBeyondTheBandIsFlaggedAtItsEdge) {
+    // The CWT scans 0.1 Hz to min(25 Hz, 0.25/dt): a 40 Hz cosine is largest on its
+    // highest scale, a 0.02 Hz one (the velocity measures) on its lowest; a 2 Hz
+    // one peaks inside, with none flagged.
+    auto cosine = [](double f, double dt, int n) {
+        std::vector<double> a(n);
+        for (int k = 0; k < n; ++k) a[k] = std::cos(2 * M_PI * f * k * dt);
+        return a;
+    };
+    const HalfPeriods high = half_periods(cosine(40.0, 0.002, 20000), 0.002);
+    EXPECT_EQ(high.cwt_band_hz[1], 25.0);
+    EXPECT_NEAR(high.cwt_band_hz[0], 0.1, 0.005);
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_TRUE(high.cwt_at_band_edge[k]) << "to_" << 8 + k;
+        EXPECT_NEAR(high.f_cwt[k], 25.0, 1e-13) << "to_" << 8 + k;  // the edge, not refined
+    }
+    const HalfPeriods low = half_periods(cosine(0.02, 0.05, 20000), 0.05);
+    for (int k : {1, 3}) {  // to_9, to_11: velocity
+        EXPECT_TRUE(low.cwt_at_band_edge[k]) << "to_" << 8 + k;
+        EXPECT_NEAR(low.f_cwt[k] / low.cwt_band_hz[0], 1.0, 1e-14) << "to_" << 8 + k;
+    }
+    const HalfPeriods inside = half_periods(cosine(2.0, 0.001, 20001), 0.001);
+    for (int k = 0; k < 4; ++k) EXPECT_FALSE(inside.cwt_at_band_edge[k]) << "to_" << 8 + k;
+}
+
 TEST(Measures, HalfPeriodsDoNotDependOnTheRecordsScale) {
     // A record near the largest double: its |W|^2 summed as it is overflowed, every
     // scale's energy was inf, and to_10 and to_11 fell on the band's first scale.
@@ -572,6 +597,7 @@ TEST(Measures, HalfPeriodsDoNotDependOnTheRecordsScale) {
         for (double& v : y) v *= scale;
         const HalfPeriods g = half_periods(y, 0.01);
         for (int k = 0; k < 11; ++k) EXPECT_NEAR(g.to[k] / h.to[k], 1.0, 1e-12) << "to_" << k + 1 << " at " << scale;
+        for (int k = 0; k < 4; ++k) EXPECT_FALSE(g.cwt_at_band_edge[k]) << "to_" << 8 + k << " at " << scale;
     }
 }
 

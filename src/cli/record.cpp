@@ -26,7 +26,11 @@ int cmd_record(int argc, char** argv) {
                   << ", \"pgv_ms\": " << json_number(h.pgv) << ", \"amax_ms\": " << json_number(h.amax)
                   << ", \"to\": [";
         for (int k = 0; k < 11; ++k) std::cout << (k ? ", " : "") << json_number(h.to[k]);
-        std::cout << "]}\n";
+        std::cout << "], \"to_at_band_edge\": [";
+        for (int k = 0, listed = 0; k < 4; ++k)
+            if (h.cwt_at_band_edge[k]) std::cout << (listed++ ? ", " : "") << 8 + k;
+        std::cout << "], \"cwt_band_hz\": [" << json_number(h.cwt_band_hz[0]) << ", "
+                  << json_number(h.cwt_band_hz[1]) << "]}\n";
     } else {
         std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,
                     r.duration());
@@ -37,6 +41,14 @@ int cmd_record(int argc, char** argv) {
                                      "Fourier peak, acceleration", "Fourier peak, velocity", "CWT max amplitude, acceleration",
                                      "CWT mean amplitude, velocity", "CWT energy, acceleration", "CWT energy, velocity"};
         for (int k = 0; k < 11; ++k) std::printf("  to_%-2d = %.4f s  %s\n", k + 1, h.to[k], what[k]);
+        // A CWT measure still rising at the last scale scanned has no peak inside the
+        // band; its to is then the band's edge, which reads like a measured value.
+        for (int k = 0; k < 4; ++k)
+            if (h.cwt_at_band_edge[k])
+                std::printf("  warning: to_%d is the edge of the CWT's band (%s to %s Hz), not a peak: its measure (%s) is "
+                            "largest on the band's %s-frequency scale and may peak beyond the band\n",
+                            8 + k, four(h.cwt_band_hz[0]).c_str(), four(h.cwt_band_hz[1]).c_str(), what[7 + k],
+                            h.f_cwt[k] < std::sqrt(h.cwt_band_hz[0] * h.cwt_band_hz[1]) ? "lowest" : "highest");
     }
     return 0;
 }

@@ -133,6 +133,17 @@ double fourier_peak(const std::vector<double>& x, double dt, std::size_t largest
     return (best + shift) / (n * dt);
 }
 
+ScalePeak scale_peak(const std::vector<double>& frequency, const std::vector<double>& values) {
+    const std::size_t j = static_cast<std::size_t>(std::max_element(values.begin(), values.end()) - values.begin());
+    double lf = std::log(frequency[j]);
+    if (j > 0 && j + 1 < values.size()) {
+        const double ym = values[j - 1], y0 = values[j], yp = values[j + 1], den = ym - 2 * y0 + yp;
+        const double step = std::log(frequency[j - 1]) - lf;  // log-frequency falls with j
+        if (den < 0) lf -= step * 0.5 * (ym - yp) / den;
+    }
+    return {std::exp(lf), j == 0 || j + 1 == values.size()};
+}
+
 PeakMotion peak_motion(const std::vector<double>& a, double dt) {
     if (a.size() < 4 || !(dt > 0)) throw std::invalid_argument("half_periods: a record needs >= 4 samples and dt > 0");
     PeakMotion m;
@@ -190,23 +201,15 @@ HalfPeriods half_periods(const std::vector<double>& a, double dt) {
     if (!(f_max > f_min))
         throw std::invalid_argument("half_periods: a sampling step of 2.5 s or more leaves the CWT no band (0.1 Hz to 0.25/dt)");
     const CwtSummary ca = morse_cwt(an, dt, f_min, f_max, 16), cv = morse_cwt(vd, dt, f_min, f_max, 16);
-    // The peak scale, refined by a parabola in log-frequency through the
-    // three highest values (the grid is geometric, 16 voices per octave).
-    auto peak_frequency = [](const CwtSummary& c, const std::vector<double>& values) {
-        const std::size_t j = static_cast<std::size_t>(std::max_element(values.begin(), values.end()) - values.begin());
-        double lf = std::log(c.frequency[j]);
-        if (j > 0 && j + 1 < values.size()) {
-            const double ym = values[j - 1], y0 = values[j], yp = values[j + 1], den = ym - 2 * y0 + yp;
-            const double step = std::log(c.frequency[j - 1]) - lf;  // log-frequency falls with j
-            if (den < 0) lf -= step * 0.5 * (ym - yp) / den;
-        }
-        return std::exp(lf);
-    };
-    h.f_cwt[0] = peak_frequency(ca, ca.max_amp);
-    h.f_cwt[1] = peak_frequency(cv, cv.mean_amp);
-    h.f_cwt[2] = peak_frequency(ca, ca.energy);
-    h.f_cwt[3] = peak_frequency(cv, cv.energy);
-    for (int k = 0; k < 4; ++k) h.to[7 + k] = 1.0 / (2.0 * h.f_cwt[k]);
+    const ScalePeak peaks[4] = {scale_peak(ca.frequency, ca.max_amp), scale_peak(cv.frequency, cv.mean_amp),
+                                scale_peak(ca.frequency, ca.energy), scale_peak(cv.frequency, cv.energy)};
+    for (int k = 0; k < 4; ++k) {
+        h.f_cwt[k] = peaks[k].f;
+        h.cwt_at_band_edge[k] = peaks[k].at_edge;
+        h.to[7 + k] = 1.0 / (2.0 * h.f_cwt[k]);
+    }
+    h.cwt_band_hz[0] = ca.frequency.back();
+    h.cwt_band_hz[1] = ca.frequency.front();
     return h;
 }
 

@@ -54,6 +54,10 @@ struct HalfPeriods {
     std::array<double, 11> to{};     // to_1..to_11, s (to[0] is to_1)
     double f_fourier_acc = 0, f_fourier_vel = 0;  // Hz
     double f_cwt[4] = {0, 0, 0, 0};  // Hz: to_8, to_9, to_10, to_11
+    // A CWT measure largest on the first or last scale of the band scanned: it may
+    // grow beyond the band, and its to is then the band's edge, not a peak.
+    bool cwt_at_band_edge[4] = {false, false, false, false};  // to_8, to_9, to_10, to_11
+    double cwt_band_hz[2] = {0, 0};  // the band scanned: its lowest and highest scales' frequencies
 };
 
 // The eleven definitions (Section 4):
@@ -76,5 +80,13 @@ inline HalfPeriods half_periods(const Record& r) { return half_periods(r.accel, 
 // does not depend on it, its memory does: 48 bytes a point).
 double fourier_peak(const std::vector<double>& x, double dt, std::size_t largest_transform = std::size_t(1) << 20);
 
+// The frequency of the largest of `values` over the CWT's scales, refined by a
+// parabola in log-frequency through it and its two neighbours; at_edge when it is
+// on the first or last scale, which has no neighbour beyond.
+struct ScalePeak {
+    double f = 0;  // Hz
+    bool at_edge = false;
+};
+ScalePeak scale_peak(const std::vector<double>& frequency, const std::vector<double>& values);
 
 }  // namespace rocking::records
