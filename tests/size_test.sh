@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The command line at the extremes of size (issue 31, items 6 and 8): what
-# assess computes and prints, and the CWT half-periods clamped at the edge of
-# their band.  Correctness only, no timings.
+# assess computes and prints, simulate's bound on --output's rows, and the CWT
+# half-periods clamped at the edge of their band.  Correctness only: the
+# timings are the benchmark's (make bench-records).
 set -u
 rocking="$1"
 fail=0
@@ -70,5 +71,19 @@ check "its JSON lists the to at the edge" '"to_at_band_edge": [8, 9, 10, 11], "c
 awk 'BEGIN { for (i = 0; i < 20001; i++) printf "%.9f\n", cos(2 * 3.141592653589793 * 2 * i * 0.001) }' > "$tmp/mid.txt"
 check_not "a peak inside the band: no warning" "warning" "$rocking" record info "$tmp/mid.txt" --unit m/s2 --dt 0.001
 check "and an empty list" '"to_at_band_edge": []' "$rocking" record info "$tmp/mid.txt" --unit m/s2 --dt 0.001 --json
+
+# simulate --output holds at most 10^6 rows: counted before the run up to t_fin
+# plus the free rocking followed (200/p), here 0.5 + 100 s, so --dt must be at
+# least 100.5 / 999999 = 1.005001e-4 s.  --dt 1e-7 had grown to 4.9 GB.
+sim=("$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2)
+check "a --dt that could write too many rows is refused, named" \
+    "--dt: 1e-07 s could write 1.01e+09 rows to --output (t_fin = 0.5 s and up to 100 s of free rocking after it), more than its limit of 1000000 rows; give --dt >= 0.000101 s" \
+    "${sim[@]}" --output "$tmp/o.csv" --dt 1e-7
+status "and exits 2" 2 "${sim[@]}" --output "$tmp/o.csv" --dt 1e-7
+if [ -e "$tmp/o.csv" ]; then echo "FAIL: the refused run wrote $tmp/o.csv"; fail=1; else echo "ok: and writes nothing"; fi
+status "just below the bound is refused" 2 "${sim[@]}" --output "$tmp/o.csv" --dt 1.0049e-4
+status "just above it runs" 0 "${sim[@]}" --output "$tmp/o.csv" --dt 1.0051e-4
+check "the bound is in the usage" "at most
+  10^6 rows" "$rocking" --help
 
 exit $fail

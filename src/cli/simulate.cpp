@@ -32,6 +32,32 @@ void refuse_overflow(const dynamics::SimulationResult& r, double alpha) {
     if (!r.overturned_during_input) check("theta(t_fin)/alpha", r.theta_at_tfin / alpha, r.theta_at_tfin);
 }
 
+// --output holds its rows in memory before writing them (about 270 bytes a row,
+// 55 bytes a row on disk): --dt 1e-7 had grown to 4.9 GB in 8 s.
+constexpr double kMaxOutputRows = 1e6;
+
+// v rounded up to three significant digits.
+double up_to_three_digits(double v) {
+    const double unit = std::pow(10.0, std::floor(std::log10(v)) - 2);
+    return std::ceil(v / unit) * unit;
+}
+
+// Refused before the run: a --dt whose rows could exceed kMaxOutputRows, counted
+// up to the latest time the run can reach (dynamics::max_record_rows).
+void check_output_rows(const dynamics::Model& model, const dynamics::GroundInput& input,
+                       const dynamics::SimulationOptions& options) {
+    const double rows = dynamics::max_record_rows(model, input, options);
+    if (rows <= kMaxOutputRows) return;
+    const double latest = dynamics::latest_run_time(model, input, options);
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "--dt: %g s could write %.3g rows to --output (t_fin = %.4g s and up to %.4g s of free rocking "
+                  "after it), more than its limit of %.0f rows; give --dt >= %.3g s",
+                  options.record_dt, rows, input.t_end(), latest - input.t_end(), kMaxOutputRows,
+                  up_to_three_digits(latest * (1 + 1e-12) / (kMaxOutputRows - 1)));
+    throw UsageError(text);
+}
+
 }  // namespace
 
 int cmd_simulate(int argc, char** argv) {
@@ -161,6 +187,7 @@ int cmd_simulate(int argc, char** argv) {
     }
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
+    if (has("--output")) check_output_rows(model, *input, options);
     const SimulationResult r = simulate(model, *input, options);
     refuse_overflow(r, alpha);
     char atol_rad[48];

@@ -55,7 +55,7 @@ bool stop_after_input(const Model& model, const SimulationOptions& options, RunS
     if (!options.free_rocking || s.resting) return true;
     if (!model.may_overturn(static_cast<double>(s.theta), static_cast<double>(s.omega), s.sigma))
         return s.t >= s.t_limit;
-    s.t_limit = std::max(s.t_limit, t_fin + Real(200.0) / Real(model.block.p));
+    s.t_limit = std::max(s.t_limit, t_fin + Real(kFreeRockingTimesP) / Real(model.block.p));
     return s.t >= s.t_limit;
 }
 

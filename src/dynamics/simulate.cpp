@@ -53,6 +53,17 @@ double locate(F f, double a, double b) {
 
 }  // namespace
 
+double latest_run_time(const Model& model, const GroundInput& input, const SimulationOptions& options) {
+    const double free = options.free_rocking ? kFreeRockingTimesP / model.block.p : 0.0;
+    return input.t_end() + std::max(options.free_record_time, free);
+}
+
+// As Driver::sample_until takes them: k record_dt <= t_limit (1 + 1e-12), k = 0, 1, ...
+double max_record_rows(const Model& model, const GroundInput& input, const SimulationOptions& options) {
+    if (!(options.record_dt > 0)) return 0;
+    return std::floor(latest_run_time(model, input, options) * (1 + 1e-12) / options.record_dt) + 1;
+}
+
 double rest_threshold(const SimulationOptions& options) {
     return std::max(options.rest_velocity,
                     options.solver.kind == SolverKind::exact ? 0.0 : 10.0 * options.solver.atol_alpha);

@@ -43,6 +43,18 @@ struct SimulationOptions {
     double initial_omega = 0.0;
 };
 
+// A block that may still overturn after the input is followed for this many 1/p
+// seconds of free rocking (run_rules.hpp, stop_after_input).
+constexpr double kFreeRockingTimesP = 200.0;
+
+// The rows a theta(t) record at options.record_dt > 0 can hold: the samples k
+// record_dt up to the latest time a run can reach, t_fin plus the free rocking
+// followed (up to max(free_record_time, 200/p) seconds).  A double: a tiny
+// record_dt gives more rows than any integer type holds.
+double max_record_rows(const Model& model, const GroundInput& input, const SimulationOptions& options);
+// That latest time, s.
+double latest_run_time(const Model& model, const GroundInput& input, const SimulationOptions& options);
+
 // The rest rule a run applies after an impact, as a fraction of alpha p: a
 // rebound slower than rest_velocity, or, for the ODE solvers, than their own
 // accuracy (10 atol), leaves the block at rest.
