@@ -5,7 +5,7 @@ JOBS    ?= 2
 # Debian packages the project needs (header-only Boost: Odeint, Math, Multiprecision).
 PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath
 
-.PHONY: all deps build reproduce test bless bench report clean
+.PHONY: all deps build reproduce test bless bench bench-records report clean
 
 all: build
 
@@ -43,6 +43,12 @@ bless: build
 bench: build
 	cmake --build $(BUILD) --target bench_work_precision -j $(JOBS)
 	$(BUILD)/bench_work_precision --out $(OUT)/bench
+
+# The half-periods (record info) against the record's length, 10^4 to 10^6 samples: time,
+# peak memory and growth exponent in out/bench/record_size.{csv,_summary.txt} (about a minute).
+bench-records: build
+	cmake --build $(BUILD) --target bench_record_size -j $(JOBS)
+	$(BUILD)/bench_record_size --out $(OUT)/bench
 
 # One PDF for a reviewer: every reproduced figure and table, the paper's claims, the
 # comparison, the errata and the findings (matplotlib, Debian's /usr/bin/python3).
