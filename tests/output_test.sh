@@ -41,12 +41,12 @@ block=(--case 2 --x 0.5 --alpha 0.15 --p 2)
 
 # --- Two runs writing the same --output at once: one complete file, never a mix.
 # Their headers and bodies differ (the PGA), so a mix matches neither.
-"$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/a.csv" --dt 1e-4 >/dev/null || bad "simulate --output a"
-"$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/b.csv" --dt 1e-4 >/dev/null || bad "simulate --output b"
+"$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/a.csv" --dt 2e-4 >/dev/null || bad "simulate --output a"
+"$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/b.csv" --dt 2e-4 >/dev/null || bad "simulate --output b"
 mixed=0
 for k in $(seq 1 30); do
-    "$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/same.csv" --dt 1e-4 >/dev/null 2>&1 &
-    "$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/same.csv" --dt 1e-4 >/dev/null 2>&1 &
+    "$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/same.csv" --dt 2e-4 >/dev/null 2>&1 &
+    "$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/same.csv" --dt 2e-4 >/dev/null 2>&1 &
     wait
     cmp -s "$tmp/same.csv" "$tmp/a.csv" || cmp -s "$tmp/same.csv" "$tmp/b.csv" || mixed=$((mixed + 1))
     rm -f "$tmp/same.csv"
@@ -111,19 +111,19 @@ fi
 # that write() fails with EFBIG): the previous file stays whole.
 cp "$tmp/a.csv" "$tmp/limited.csv"
 expect_error "a write that fails half-way" 1 "$tmp/limited.csv" "File too large" -- \
-    sh -c 'trap "" XFSZ; ulimit -f 64; exec "$@"' sh "$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/limited.csv" --dt 1e-4
+    sh -c 'trap "" XFSZ; ulimit -f 64; exec "$@"' sh "$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/limited.csv" --dt 2e-4
 cmp -s "$tmp/limited.csv" "$tmp/a.csv" && ok "after it, the previous file is whole" || bad "after a failed write the previous file changed"
 no_leftovers "failed writes" "$tmp"
 
 # --- SIGTERM while the file is being written: the target keeps the previous
 # file, whole, and the temporary file is removed.  The signal is sent as soon
 # as the write shows: a temporary file appears, or the target changes.
-"$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/big.csv" --dt 1e-5 >/dev/null || bad "simulate --output big"
+"$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/big.csv" --dt 1.01e-4 >/dev/null || bad "simulate --output big"
 cp "$tmp/big.csv" "$tmp/big.ref"
 size=$(stat -c %s "$tmp/big.ref")
 landed=0 broken=0
 for k in 1 2 3 4 5; do
-    "$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/big.csv" --dt 1e-5 >/dev/null 2>&1 &
+    "$rocking" simulate "${block[@]}" --rd 0.9 --output "$tmp/big.csv" --dt 1.01e-4 >/dev/null 2>&1 &
     pid=$!
     while kill -0 $pid 2>/dev/null; do
         if compgen -G "$tmp/.big.csv.tmp*" >/dev/null || [[ $(stat -c %s "$tmp/big.csv" 2>/dev/null) != "$size" ]]; then
@@ -154,11 +154,11 @@ header=$(grep -v '^#' "$tmp/named.csv" | head -1)
 "$rocking" simulate "${block[@]}" --rd 0.9 --output /dev/null >/dev/null 2>&1 && [[ -c /dev/null ]] &&
     ok "--output /dev/null: written in place, still a device" || bad "--output /dev/null"
 ln -s a.csv "$tmp/link.csv"
-"$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/link.csv" --dt 1e-4 >/dev/null
+"$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/link.csv" --dt 2e-4 >/dev/null
 [[ -L "$tmp/link.csv" ]] && cmp -s "$tmp/a.csv" "$tmp/b.csv" && ok "--output through a link: the link stays, its file is replaced" ||
     bad "--output through a link"
 chmod 640 "$tmp/b.csv"
-"$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/b.csv" --dt 1e-4 >/dev/null
+"$rocking" simulate "${block[@]}" --rd 0.95 --output "$tmp/b.csv" --dt 2e-4 >/dev/null
 [[ $(stat -c %a "$tmp/b.csv") == 640 ]] && ok "a replaced file keeps its permissions" || bad "permissions now $(stat -c %a "$tmp/b.csv")"
 
 # --- reproduce: its tables and plots are written the same way.
