@@ -18,6 +18,7 @@ namespace {
 // PGA, PGV and to_5 alone: the CWT and the Fourier peaks of the eleven half-periods
 // took 1.1 s of a 30,001-sample record and assess reports none of them.
 records::PeakMotion peak_motion_of(const records::Record& r, const std::string& path) {
+    refuse_overflowing_velocity(r, path);
     try {
         return records::peak_motion(r.accel, r.dt);
     } catch (const std::invalid_argument& e) {

@@ -160,12 +160,16 @@ const char* first_not_finite(const records::HalfPeriods& h) {
 // integrated: PGV and to_4 came out inf and to_3 nan, and with a longer step
 // the measures crashed; the sum of |a| dt bounds the velocity and every
 // pulse's area, so it is checked before and each measure after.
-records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path) {
+void refuse_overflowing_velocity(const records::Record& r, const std::string& path) {
     double bound = 0;
     for (double a : r.accel) bound += std::fabs(a) * r.dt;
     if (!std::isfinite(bound))
         throw std::runtime_error(path + ": the record's velocity overflows a double (the sum of |a| dt exceeds "
                                         "1.8e308 m/s); scale the record down");
+}
+
+records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path) {
+    refuse_overflowing_velocity(r, path);
     records::HalfPeriods h;
     try {
         h = records::half_periods(r);

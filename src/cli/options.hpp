@@ -39,6 +39,8 @@ PulseTrain train_from(const Args& a, std::string& equation);
 double x_from(const Args& a);
 std::string four(double v);
 records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path);
+// Refuses, naming the file, a record whose velocity (sum of |a| dt) overflows a double.
+void refuse_overflowing_velocity(const records::Record& r, const std::string& path);
 std::string json_string(const std::string& s);
 std::string json_number(double v);
 records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag = "--dt");
