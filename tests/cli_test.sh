@@ -2,22 +2,7 @@
 # The command line: values, JSON and clear errors with a non-zero exit.
 set -u
 rocking="$1"
-fail=0
-check() {  # description, expected substring, command...
-    local what="$1" want="$2"; shift 2
-    local out; out=$("$@" 2>&1)
-    if [[ "$out" != *"$want"* ]]; then echo "FAIL: $what: wanted '$want' in: $out"; fail=1; else echo "ok: $what"; fi
-}
-check_not() {  # description, substring that must be absent, command...
-    local what="$1" unwanted="$2"; shift 2
-    local out; out=$("$@" 2>&1)
-    if [[ "$out" == *"$unwanted"* ]]; then echo "FAIL: $what: '$unwanted' should not be in: $out"; fail=1; else echo "ok: $what"; fi
-}
-status() {  # description, expected exit status, command...
-    local what="$1" want="$2"; shift 2
-    "$@" >/dev/null 2>&1; local got=$?
-    if [[ $got != "$want" ]]; then echo "FAIL: $what: exit $got, wanted $want"; fail=1; else echo "ok: $what (exit $got)"; fi
-}
+source "$(dirname "$0")/check_lib.sh"
 # q2(0.5) = 4.38821872331181020112 (mpmath, eq. 15); eq. 27 at x = 0.7141699131957593 is 2.
 check "case 2 at x = 0.5"            "q = 4.388218723"   "$rocking" q --case 2 --x 0.5
 check "eq. 27 crosses q = 2"         $'q = 2\n'   "$rocking" q --case 2 --pulses 6 --x 0.7141699131957593

@@ -5,26 +5,11 @@
 # timings are the benchmark's (make bench-records).
 set -u
 rocking="$1"
-fail=0
-check() {  # description, expected substring, command...
-    local what="$1" want="$2"; shift 2
-    local out; out=$("$@" 2>&1)
-    if [[ "$out" != *"$want"* ]]; then echo "FAIL: $what: wanted '$want' in: $out"; fail=1; else echo "ok: $what"; fi
-}
-check_not() {  # description, substring that must be absent, command...
-    local what="$1" unwanted="$2"; shift 2
-    local out; out=$("$@" 2>&1)
-    if [[ "$out" == *"$unwanted"* ]]; then echo "FAIL: $what: '$unwanted' should not be in: $out"; fail=1; else echo "ok: $what"; fi
-}
+source "$(dirname "$0")/check_lib.sh"
 check_no_long_number() {  # description, command...: no run of more than 17 digits in the output
     local what="$1"; shift
     local out; out=$("$@" 2>&1)
     if [[ "$out" =~ [0-9]{18} ]]; then echo "FAIL: $what: a number of more than 17 digits in: $out"; fail=1; else echo "ok: $what"; fi
-}
-status() {  # description, expected exit status, command...
-    local what="$1" want="$2"; shift 2
-    "$@" >/dev/null 2>&1; local got=$?
-    if [[ $got != "$want" ]]; then echo "FAIL: $what: exit $got, wanted $want"; fail=1; else echo "ok: $what (exit $got)"; fi
 }
 json_field() {  # field, command...: the field's value as printed in the command's --json
     local field="$1"; shift

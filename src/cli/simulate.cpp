@@ -138,26 +138,20 @@ int cmd_simulate(int argc, char** argv) {
         input = std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
     } else if (one_sine) {
         if (!has("--ap") || !has("--wp")) throw UsageError("--one-sine needs --ap and --wp");
-        // simulate() refuses a pulse slower than OneSinePulse::slowest_wp_over_p
-        // times p (why: ground_input.hpp); said here in the option's terms.
+        // The pulse's bounds (why: ground_input.hpp), said in the options' terms.
         const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
-        if (num("--wp") > 0 && num("--wp") < slowest) {
-            char text[200];
-            std::snprintf(text, sizeof text,
-                          "--wp: must be at least 1e-6 p = %.3g rad/s (got %g): slower pulses lift the block by less "
-                          "than the rounding of the input",
-                          slowest, num("--wp"));
-            throw UsageError(text);
-        }
         const double strongest = OneSinePulse::strongest_ap_over_threshold * model.uplift_threshold();
-        if (num("--ap") > strongest) {
-            char text[240];
-            std::snprintf(text, sizeof text,
-                          "--ap: must be at most 1e9 times the uplift threshold, %.6g g (got %g): above it the fall "
-                          "time drifts from the closed form (ground_input.hpp)",
-                          strongest, num("--ap"));
-            throw UsageError(text);
-        }
+        auto g6 = [](double v) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.6g", v);
+            return std::string(text);
+        };
+        if (num("--wp") > 0 && num("--wp") < slowest)
+            throw UsageError("--wp: must be at least 1e-6 p = " + g6(slowest) + " rad/s (got " +
+                             a.values.at("--wp") + "): slower pulses lift the block by less than the rounding of the input");
+        if (num("--ap") > strongest)
+            throw UsageError("--ap: must be at most 1e9 times the uplift threshold, " + g6(strongest) +
+                             " g (got " + a.values.at("--ap") + "): above it the fall time drifts from the closed form");
         try {
             input = std::make_unique<OneSinePulse>(num("--ap"), num("--wp"), model.uplift_threshold());
         } catch (const std::invalid_argument& e) {
