@@ -1,0 +1,71 @@
+// Fragility from incremental dynamic analysis (IDA): for each record, the
+// intensity q = PGA/(alpha g) at which it first overturns a block; across
+// records, the lognormal curve
+//     P(overturn | q) = Phi(ln(q / median) / beta)                      (F1)
+// fitted by maximum likelihood (Baker 2015, "Efficient analytical fragility
+// function fitting using dynamic structural analysis", Earthquake Spectra 31,
+// for IDA data), with the records that never overturned up to the largest q
+// scanned kept as right-censored points, a bootstrap interval over records,
+// and the empirical curve beside it.  The batch that produces the points
+// (scaling each record until it overturns the block) lives above dynamics and
+// records; this file knows only the points.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace rocking::studies {
+
+// One record's outcome: overturned at q (collapsed), or not up to q (censored).
+struct IdaPoint {
+    double q;
+    bool collapsed;
+};
+
+struct LognormalFragility {
+    double median = 0;          // q with P = 1/2
+    double beta = 0;            // dispersion, the standard deviation of ln q
+    double log_likelihood = 0;  // at the fit
+    int collapsed = 0, censored = 0;
+};
+
+// (F1) at q.
+double overturning_probability(const LognormalFragility& f, double q);
+
+// ln L of (F1) with median and beta of f on the points (the quantity
+// fit_lognormal maximises).
+double log_likelihood(const std::vector<IdaPoint>& points, const LognormalFragility& f);
+
+// Maximum likelihood of (F1) on the points: with every point collapsed it is
+// the closed form ln median = mean of ln q_i, beta^2 = mean of (ln q_i - ln median)^2
+// (Baker 2015's moment estimates, with 1/n where Baker's sample deviation has
+// 1/(n - 1)); with censored points it maximises
+//     sum_collapsed ln[phi(z_i) / (beta q_i)] + sum_censored ln[1 - Phi(z_i)],  z_i = ln(q_i / median) / beta
+// with GSL's Nelder-Mead simplex from the collapsed points' closed form.
+// Throws std::invalid_argument with fewer than 2 collapsed points, or a q
+// that is not finite and > 0.
+LognormalFragility fit_lognormal(const std::vector<IdaPoint>& points);
+
+struct Range {
+    double lo = 0, hi = 0;
+};
+struct BootstrapInterval {
+    Range median, beta;  // percentile intervals at the given level
+    int resamples = 0;   // resamples fitted (those with < 2 collapsed points are redrawn)
+    std::uint64_t seed = 0;
+    double level = 0;
+};
+
+// The records resampled with replacement `resamples` times (GSL's mt19937,
+// seeded: the same seed gives the same interval on any machine), each
+// resample refitted; the percentile interval at `level` (e.g. 0.9).
+BootstrapInterval bootstrap(const std::vector<IdaPoint>& points, int resamples, std::uint64_t seed, double level);
+
+// The empirical curve: at each collapsed point's q, in increasing order, the
+// share of all records that overturned at or below it.
+struct EmpiricalPoint {
+    double q, share;
+};
+std::vector<EmpiricalPoint> empirical_curve(const std::vector<IdaPoint>& points);
+
+}  // namespace rocking::studies
