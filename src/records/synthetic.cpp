@@ -1,0 +1,318 @@
+#include "records/synthetic.hpp"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include <gsl/gsl_roots.h>
+#include <gsl/gsl_sf_gamma.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace rocking::records {
+
+namespace {
+
+constexpr double kGravity = 9.81;  // m/s^2, as Record::in_g
+// Above this many samples the stochastic sum (quadratic in the samples within
+// the filter's memory) and the files get out of hand; real records sit far below.
+constexpr std::size_t kMaxSamples = 10'000'000;
+
+std::string text_of(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+[[noreturn]] void refuse(const std::string& name, const std::string& rule, double got) {
+    throw std::invalid_argument(name + " must be " + rule + " (got " + text_of(got) + ")");
+}
+
+// n - 1 = floor(duration/dt): the last sample at or just before `duration`
+// (1e-9 of a step forgives duration/dt landing a rounding below an integer).
+std::size_t sample_count(double dt, double duration) {
+    if (!(dt > 0) || !std::isfinite(dt)) refuse("dt", "> 0 and finite", dt);
+    if (!(duration > 0) || !std::isfinite(duration)) refuse("duration", "> 0 and finite", duration);
+    const double steps = std::floor(duration / dt + 1e-9);
+    if (!(steps + 1 <= static_cast<double>(kMaxSamples)))
+        throw std::invalid_argument("duration/dt gives " + text_of(steps + 1) + " samples, more than " +
+                                    std::to_string(kMaxSamples));
+    if (steps < 3) throw std::invalid_argument("duration/dt gives fewer than 4 samples");
+    return static_cast<std::size_t>(steps) + 1;
+}
+
+void check_pulse(const PulseParameters& p) {
+    if (!std::isfinite(p.A) || p.A == 0) refuse("A", "finite and not 0", p.A);
+    if (!(p.fp > 0) || !std::isfinite(p.fp)) refuse("fp", "> 0 and finite", p.fp);
+    if (!std::isfinite(p.nu)) refuse("nu", "finite", p.nu);
+    // gamma = 1 is the paper's limit where the envelope holds a single cycle
+    // and the displacement's closed form changes; the issue asks gamma > 1.
+    if (!(p.gamma > 1) || !std::isfinite(p.gamma)) refuse("gamma", "> 1 and finite", p.gamma);
+    if (!std::isfinite(p.t0)) refuse("t0", "finite", p.t0);
+}
+
+double half_width(const PulseParameters& p) { return p.gamma / (2 * p.fp); }
+
+}  // namespace
+
+double pulse_velocity(const PulseParameters& p, double t) {
+    const double s = t - p.t0;
+    if (std::fabs(s) > half_width(p)) return 0;
+    const double w = 2 * M_PI * p.fp;
+    return 0.5 * p.A * (1 + std::cos(w * s / p.gamma)) * std::cos(w * s + p.nu);
+}
+
+double pulse_acceleration(const PulseParameters& p, double t) {
+    const double s = t - p.t0;
+    if (std::fabs(s) > half_width(p)) return 0;
+    const double w = 2 * M_PI * p.fp, envelope = w * s / p.gamma, carrier = w * s + p.nu;
+    return -(p.A * M_PI * p.fp / p.gamma) *
+           (std::sin(envelope) * std::cos(carrier) + p.gamma * std::sin(carrier) * (1 + std::cos(envelope)));
+}
+
+Record pulse_record(const PulseParameters& p, double dt, double duration) {
+    check_pulse(p);
+    const std::size_t n = sample_count(dt, duration);
+    if (p.t0 - half_width(p) < 0)
+        throw std::invalid_argument("t0 must be >= gamma/(2 fp) = " + text_of(half_width(p)) +
+                                    " s, so that the pulse starts at or after t = 0 (got " + text_of(p.t0) + ")");
+    if (p.t0 + half_width(p) > dt * (n - 1))
+        throw std::invalid_argument("the pulse ends at t0 + gamma/(2 fp) = " + text_of(p.t0 + half_width(p)) +
+                                    " s, after the record's last sample at " + text_of(dt * (n - 1)) +
+                                    " s: lengthen the duration");
+    Record r;
+    r.format = "synthetic";
+    r.path = "(synthetic)";
+    r.name = "MP2003 pulse A=" + text_of(p.A) + " fp=" + text_of(p.fp) + " nu=" + text_of(p.nu) +
+             " gamma=" + text_of(p.gamma) + " t0=" + text_of(p.t0);
+    r.dt = dt;
+    r.accel.resize(n);
+    for (std::size_t k = 0; k < n; ++k) r.accel[k] = pulse_acceleration(p, dt * k);
+    r.header = {{"generator", "Mavroeidis & Papageorgiou (2003) velocity pulse, acceleration its exact derivative"},
+                {"A_m_s", text_of(p.A)},
+                {"fp_hz", text_of(p.fp)},
+                {"Tp_s", text_of(1 / p.fp)},
+                {"nu_rad", text_of(p.nu)},
+                {"gamma", text_of(p.gamma)},
+                {"t0_s", text_of(p.t0)},
+                {"dt_s", text_of(dt)},
+                {"duration_s", text_of(duration)}};
+    return r;
+}
+
+// ---- stochastic ----
+
+StochasticParameters default_stochastic_parameters() {
+    StochasticParameters p;
+    p.omega_mid = 2 * M_PI * 5.87;
+    p.omega_prime = 2 * M_PI * -0.089;
+    p.zeta_f = 0.213;
+    p.omega_c = 2 * M_PI * 0.2;
+    return with_arias_modulation(p, 0.0468 * kGravity, 17.3, 12.4);
+}
+
+namespace {
+
+void check_modulation(const StochasticParameters& p) {
+    if (!(p.alpha1 > 0) || !std::isfinite(p.alpha1)) refuse("alpha1", "> 0 and finite", p.alpha1);
+    // alpha2 > 1 makes q(0) = 0: the record starts at rest, as the sum's nu(0) = 0 assumes.
+    if (!(p.alpha2 > 1) || !std::isfinite(p.alpha2)) refuse("alpha2", "> 1 and finite", p.alpha2);
+    if (!(p.alpha3 > 0) || !std::isfinite(p.alpha3)) refuse("alpha3", "> 0 and finite", p.alpha3);
+}
+
+// omega_f(tau) = omega_mid + omega_prime (tau - t_mid).
+double filter_frequency(const StochasticParameters& p, double t_mid, double tau) {
+    return p.omega_mid + p.omega_prime * (tau - t_mid);
+}
+
+// The filter must stay a damped oscillator above 0 Hz and below the Nyquist
+// frequency over the record: a falling omega_f crosses 0 on a long record,
+// and one above pi/dt is aliased by the sampling of the noise.
+void check_filter(const StochasticParameters& p, double t_mid, double dt, double t_end) {
+    if (!std::isfinite(p.omega_mid)) refuse("omega_mid", "finite", p.omega_mid);
+    if (!std::isfinite(p.omega_prime)) refuse("omega_prime", "finite", p.omega_prime);
+    if (!(p.zeta_f > 0 && p.zeta_f < 1)) refuse("zeta_f", "in (0, 1)", p.zeta_f);
+    if (!(p.omega_c > 0) || !std::isfinite(p.omega_c)) refuse("omega_c", "> 0 and finite", p.omega_c);
+    for (double tau : {0.0, t_end}) {
+        const double w = filter_frequency(p, t_mid, tau);
+        if (!(w > 0))
+            throw std::invalid_argument("the filter's frequency omega_mid + omega_prime (tau - t_mid) is " + text_of(w) +
+                                        " rad/s at tau = " + text_of(tau) + " s (t_mid = " + text_of(t_mid) +
+                                        " s): it must stay > 0 over the record");
+        if (!(w < M_PI / dt))
+            throw std::invalid_argument("the filter's frequency reaches " + text_of(w / (2 * M_PI)) + " Hz at tau = " +
+                                        text_of(tau) + " s, at or above the Nyquist frequency 1/(2 dt) = " +
+                                        text_of(0.5 / dt) + " Hz: take a smaller dt");
+    }
+}
+
+// A GSL error aborts the process by default; here it becomes an exception.
+struct GslErrorsAsCodes {
+    gsl_error_handler_t* previous = gsl_set_error_handler_off();
+    ~GslErrorsAsCodes() { gsl_set_error_handler(previous); }
+};
+
+// t_mid / d5_95 as a function of the shape k of q^2's gamma density.
+double midpoint_ratio(double k, void*) {
+    const double q05 = gsl_cdf_gamma_Pinv(0.05, k, 1), q45 = gsl_cdf_gamma_Pinv(0.45, k, 1),
+                 q95 = gsl_cdf_gamma_Pinv(0.95, k, 1);
+    return q45 / (q95 - q05);
+}
+
+struct RatioTarget {
+    double ratio;
+};
+double ratio_gap(double k, void* target) { return midpoint_ratio(k, nullptr) - static_cast<RatioTarget*>(target)->ratio; }
+
+// The shape k >= 1 with midpoint_ratio(k) = ratio, by Brent's method to 1e-14 relative.
+double shape_for_ratio(double ratio) {
+    const double lowest = midpoint_ratio(1, nullptr), highest_k = 1e5;
+    if (!(ratio > lowest) || !(ratio < midpoint_ratio(highest_k, nullptr)))
+        throw std::invalid_argument("t_mid/d5_95 must be in (" + text_of(lowest) + ", " +
+                                    text_of(midpoint_ratio(highest_k, nullptr)) +
+                                    ") for a gamma modulating function with alpha2 > 1 (got " + text_of(ratio) + ")");
+    GslErrorsAsCodes guard;
+    RatioTarget target{ratio};
+    gsl_function f{&ratio_gap, &target};
+    std::unique_ptr<gsl_root_fsolver, void (*)(gsl_root_fsolver*)> solver(gsl_root_fsolver_alloc(gsl_root_fsolver_brent),
+                                                                           gsl_root_fsolver_free);
+    gsl_root_fsolver_set(solver.get(), &f, 1, highest_k);
+    double k = 1;
+    for (int i = 0; i < 200; ++i) {
+        gsl_root_fsolver_iterate(solver.get());
+        k = gsl_root_fsolver_root(solver.get());
+        if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), 0,
+                                   1e-14) == GSL_SUCCESS)
+            break;
+    }
+    return k;
+}
+
+}  // namespace
+
+double modulating_function(const StochasticParameters& p, double t) {
+    if (t <= 0) return 0;
+    return p.alpha1 * std::pow(t, p.alpha2 - 1) * std::exp(-p.alpha3 * t);
+}
+
+double arias_time(const StochasticParameters& p, double fraction) {
+    check_modulation(p);
+    if (!(fraction > 0 && fraction < 1)) refuse("fraction", "in (0, 1)", fraction);
+    return gsl_cdf_gamma_Pinv(fraction, 2 * p.alpha2 - 1, 1 / (2 * p.alpha3));
+}
+
+StochasticParameters with_arias_modulation(StochasticParameters base, double Ia, double d5_95, double t_mid) {
+    if (!(Ia > 0) || !std::isfinite(Ia)) refuse("Ia", "> 0 and finite", Ia);
+    if (!(d5_95 > 0) || !std::isfinite(d5_95)) refuse("d5_95", "> 0 and finite", d5_95);
+    if (!(t_mid > 0) || !std::isfinite(t_mid)) refuse("t_mid", "> 0 and finite", t_mid);
+    const double k = shape_for_ratio(t_mid / d5_95);
+    base.alpha2 = (k + 1) / 2;
+    base.alpha3 = (gsl_cdf_gamma_Pinv(0.95, k, 1) - gsl_cdf_gamma_Pinv(0.05, k, 1)) / (2 * d5_95);
+    // int_0^inf q^2 = alpha1^2 Gamma(k) / (2 alpha3)^k = 2 g Ia / pi, in logarithms:
+    // Gamma(k) and (2 alpha3)^k overflow long before their ratio does.
+    base.alpha1 = std::exp(0.5 * (std::log(2 * kGravity * Ia / M_PI) + k * std::log(2 * base.alpha3) - gsl_sf_lngamma(k)));
+    return base;
+}
+
+std::vector<double> white_noise(std::uint64_t seed, std::size_t n) {
+    if (seed < 1 || seed > 0xFFFFFFFFu) refuse("seed", "in [1, 4294967295]", static_cast<double>(seed));
+    std::unique_ptr<gsl_rng, void (*)(gsl_rng*)> rng(gsl_rng_alloc(gsl_rng_mt19937), gsl_rng_free);
+    gsl_rng_set(rng.get(), static_cast<unsigned long>(seed));
+    std::vector<double> u(n);
+    for (double& x : u) x = gsl_ran_gaussian_ziggurat(rng.get(), 1.0);
+    return u;
+}
+
+std::vector<double> filtered_noise(const StochasticParameters& p, const std::vector<double>& u, double dt) {
+    const std::size_t n = u.size();
+    const double t_mid = arias_time(p, 0.45);
+    check_filter(p, t_mid, dt, dt * (n ? n - 1 : 0));
+    const double root = std::sqrt(1 - p.zeta_f * p.zeta_f);
+    std::vector<double> sum(n, 0.0), norm(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double w = filter_frequency(p, t_mid, dt * i), gain = w / root;
+        // h(t_k - t_i) = gain Im z^(k - i), z = exp((-zeta w + i w root) dt): one
+        // complex product a step instead of an exp and a sine.
+        const double decay = std::exp(-p.zeta_f * w * dt), c = decay * std::cos(w * root * dt),
+                     s = decay * std::sin(w * root * dt);
+        double re = 1, im = 0;
+        for (std::size_t k = i; k < n; ++k) {
+            const double h = gain * im;
+            sum[k] += h * u[i];
+            norm[k] += h * h;
+            const double next_re = re * c - im * s;
+            im = re * s + im * c;
+            re = next_re;
+            // Past 1e-30 of its start a term is 1e-14 below the rounding of the
+            // sum it joins (whose own i = k - 1 term is of its size or larger).
+            if (std::fabs(re) + std::fabs(im) < 1e-30) break;
+        }
+    }
+    std::vector<double> nu(n, 0.0);
+    for (std::size_t k = 1; k < n; ++k) nu[k] = sum[k] / std::sqrt(norm[k]);
+    return nu;
+}
+
+std::vector<double> critically_damped_high_pass(const std::vector<double>& x, double dt, double omega_c) {
+    if (!(omega_c > 0) || !std::isfinite(omega_c)) refuse("omega_c", "> 0 and finite", omega_c);
+    if (!(dt > 0) || !std::isfinite(dt)) refuse("dt", "> 0 and finite", dt);
+    const double w = omega_c, w2 = w * w, decay = std::exp(-w * dt);
+    std::vector<double> out(x.size());
+    double z = 0, v = 0;  // z and z' at t_k
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        out[k] = x[k] - 2 * w * v - w2 * z;
+        if (k + 1 == x.size()) break;
+        // On [t_k, t_k + dt], x = x_k + slope s: a particular solution
+        // z_p = (x_k + slope s)/w^2 - 2 slope/w^3, and (y0 + (y0' + w y0) s) e^(-w s) for the rest.
+        const double slope = (x[k + 1] - x[k]) / dt;
+        const double y0 = z - (x[k] / w2 - 2 * slope / (w2 * w)), y1 = v - slope / w2, b = y1 + w * y0;
+        z = (y0 + b * dt) * decay + (x[k + 1] / w2 - 2 * slope / (w2 * w));
+        v = (b - w * (y0 + b * dt)) * decay + slope / w2;
+    }
+    return out;
+}
+
+std::vector<double> modulated_noise(const StochasticParameters& p, std::uint64_t seed, double dt, double duration) {
+    check_modulation(p);
+    const std::size_t n = sample_count(dt, duration);
+    std::vector<double> a = filtered_noise(p, white_noise(seed, n), dt);
+    for (std::size_t k = 0; k < n; ++k) a[k] *= modulating_function(p, dt * k);
+    return a;
+}
+
+Record stochastic_record(const StochasticParameters& p, std::uint64_t seed, double dt, double duration) {
+    Record r;
+    r.accel = critically_damped_high_pass(modulated_noise(p, seed, dt, duration), dt, p.omega_c);
+    r.format = "synthetic";
+    r.path = "(synthetic)";
+    r.name = "RDK2008 stochastic seed=" + std::to_string(seed);
+    r.dt = dt;
+    const double t_mid = arias_time(p, 0.45), t05 = arias_time(p, 0.05), t95 = arias_time(p, 0.95);
+    const double k = 2 * p.alpha2 - 1;
+    const double Ia = M_PI / (2 * kGravity) * p.alpha1 * p.alpha1 *
+                      std::exp(gsl_sf_lngamma(k) - k * std::log(2 * p.alpha3));
+    r.header = {{"generator", "Rezaeian & Der Kiureghian (2008) modulated filtered white noise, critically damped "
+                              "high-pass post-filter"},
+                {"rng", "gsl_rng_mt19937, gsl_ran_gaussian_ziggurat"},
+                {"seed", std::to_string(seed)},
+                {"alpha1", text_of(p.alpha1)},
+                {"alpha2", text_of(p.alpha2)},
+                {"alpha3_1_s", text_of(p.alpha3)},
+                {"omega_mid_rad_s", text_of(p.omega_mid)},
+                {"omega_prime_rad_s2", text_of(p.omega_prime)},
+                {"zeta_f", text_of(p.zeta_f)},
+                {"omega_c_rad_s", text_of(p.omega_c)},
+                {"t_mid_s", text_of(t_mid)},
+                {"expected_Ia_m_s", text_of(Ia)},
+                {"expected_D5_95_s", text_of(t95 - t05)},
+                {"dt_s", text_of(dt)},
+                {"duration_s", text_of(duration)}};
+    return r;
+}
+
+}  // namespace rocking::records

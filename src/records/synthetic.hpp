@@ -1,0 +1,101 @@
+// Synthetic ground motions whose answers are known: a near-fault velocity pulse
+// in closed form (Mavroeidis & Papageorgiou 2003) and a seeded stochastic
+// far-field record (Rezaeian & Der Kiureghian 2008).  Each comes back as a
+// Record in m/s^2 whose header names the generator and every parameter, so
+// that a study run on it can state its inputs.  Derivations, the parameters'
+// sources and what was checked: docs/synthetic.md.
+//
+// Every function refuses a parameter outside its model with
+// std::invalid_argument naming the parameter.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "records/record.hpp"
+
+namespace rocking::records {
+
+// ---- The near-fault pulse of Mavroeidis & Papageorgiou (2003, BSSA 93(3)) ----
+
+struct PulseParameters {
+    double A = 0;      // m/s: the envelope's amplitude (its sign is the pulse's)
+    double fp = 0;     // Hz: the carrier's frequency; the pulse period is T_p = 1/fp
+    double nu = 0;     // rad: the carrier's phase
+    double gamma = 0;  // > 1: the envelope spans gamma carrier periods
+    double t0 = 0;     // s: the envelope's peak
+};
+
+// v(t) = (A/2) [1 + cos(2 pi fp (t - t0)/gamma)] cos(2 pi fp (t - t0) + nu)
+// for |t - t0| <= gamma/(2 fp), 0 outside: the paper's velocity pulse (its
+// mathematical model, v(t) with support t0 +- gamma/(2 fp)).
+double pulse_velocity(const PulseParameters& p, double t);
+// a(t) = dv/dt = -(A pi fp/gamma) [sin(2 pi fp s/gamma) cos(2 pi fp s + nu)
+//                + gamma sin(2 pi fp s + nu) (1 + cos(2 pi fp s/gamma))],  s = t - t0,
+// on the same support, 0 outside: v's exact derivative (not a finite
+// difference), continuous at the support's ends where both brackets vanish.
+double pulse_acceleration(const PulseParameters& p, double t);
+// a(k dt), k = 0 .. n - 1 with n - 1 = floor(duration/dt): the whole pulse
+// must lie in [0, duration] (t0 - gamma/(2 fp) >= 0, t0 + gamma/(2 fp) <= duration),
+// so that the velocity integrated from rest at t = 0 is the pulse's.
+Record pulse_record(const PulseParameters& p, double dt, double duration);
+
+// ---- The stochastic model of Rezaeian & Der Kiureghian (2008, EESD 37) ----
+
+struct StochasticParameters {
+    // The gamma modulating function q(t) = alpha1 t^(alpha2 - 1) exp(-alpha3 t), m/s^2.
+    double alpha1 = 0;  // m/s^2 per s^(alpha2 - 1)
+    double alpha2 = 0;  // > 1
+    double alpha3 = 0;  // 1/s
+    // The filter: omega_f(tau) = omega_mid + omega_prime (tau - t_mid), damping zeta_f;
+    // t_mid is q's 45 % Arias time (arias_time).
+    double omega_mid = 0;    // rad/s
+    double omega_prime = 0;  // rad/s^2
+    double zeta_f = 0;       // in (0, 1)
+    // The post-filter's corner: a critically damped oscillator at omega_c.
+    double omega_c = 0;  // rad/s
+};
+
+// The defaults: Rezaeian & Der Kiureghian's sample means (Ia = 0.0468 s g,
+// D5-95 = 17.3 s, t_mid = 12.4 s, omega_mid/2pi = 5.87 Hz, omega'/2pi = -0.089 Hz/s,
+// zeta_f = 0.213) with the post-filter at 0.2 Hz; provenance in docs/synthetic.md.
+StochasticParameters default_stochastic_parameters();
+
+// q(t) = alpha1 t^(alpha2 - 1) exp(-alpha3 t) for t >= 0.
+double modulating_function(const StochasticParameters& p, double t);
+// The time at which the expected Arias intensity, (pi/2g) int_0^t q^2, reaches
+// `fraction` of its total: q^2 is a gamma density of shape 2 alpha2 - 1 and rate
+// 2 alpha3, so t = P^-1(fraction; 2 alpha2 - 1) / (2 alpha3).  t_mid = arias_time(p, 0.45).
+double arias_time(const StochasticParameters& p, double fraction);
+// The alphas of the q whose expected Arias intensity is Ia (m/s), whose 5-95 %
+// duration is d5_95 (s) and whose 45 % time is t_mid (s): the shape from
+// t_mid / d5_95 (a function of the shape alone), then alpha3 from d5_95, then
+// alpha1 from Ia = (pi/2g) alpha1^2 Gamma(k) / (2 alpha3)^k, k = 2 alpha2 - 1.
+// The filter's fields of `base` are kept.
+StochasticParameters with_arias_modulation(StochasticParameters base, double Ia, double d5_95, double t_mid);
+
+// n standard normal numbers: GSL's gsl_rng_mt19937 seeded with `seed`, through
+// gsl_ran_gaussian_ziggurat.  seed in [1, 2^32 - 1]: mt19937 reads the low 32 bits
+// and takes 0 as its default seed 4357, so other values would repeat a stream.
+std::vector<double> white_noise(std::uint64_t seed, std::size_t n);
+
+// The normalized filtered noise at t_k = k dt (the paper's discretized process):
+//   nu(t_k) = sum_{i <= k} h(t_k - t_i; tau = t_i) u_i / sqrt(sum_{i <= k} h(t_k - t_i; t_i)^2),
+//   h(s; tau) = omega_f(tau)/sqrt(1 - zeta_f^2) exp(-zeta_f omega_f(tau) s) sin(omega_f(tau) sqrt(1 - zeta_f^2) s),
+// unit variance at every k >= 1; nu(0) = 0, where every h vanishes.
+std::vector<double> filtered_noise(const StochasticParameters& p, const std::vector<double>& u, double dt);
+
+// The high-pass post-filter: the acceleration z'' of the critically damped oscillator
+//   z'' + 2 omega_c z' + omega_c^2 z = x(t),  z(0) = z'(0) = 0,
+// with x linear between samples (the engine's reading of a record), integrated
+// exactly step by step; z''(t_k) = x_k - 2 omega_c z'_k - omega_c^2 z_k.
+std::vector<double> critically_damped_high_pass(const std::vector<double>& x, double dt, double omega_c);
+
+// q(t_k) nu(t_k) for the seed's noise, before the post-filter: n - 1 = floor(duration/dt).
+std::vector<double> modulated_noise(const StochasticParameters& p, std::uint64_t seed, double dt, double duration);
+
+// The record: modulated_noise through critically_damped_high_pass.
+Record stochastic_record(const StochasticParameters& p, std::uint64_t seed, double dt, double duration);
+
+}  // namespace rocking::records
