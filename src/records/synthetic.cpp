@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -23,9 +24,14 @@ constexpr double kGravity = 9.81;  // m/s^2, as Record::in_g
 // the filter's memory) and the files get out of hand; real records sit far below.
 constexpr std::size_t kMaxSamples = 10'000'000;
 
+// The shortest %g text that reads back as v: the header states each parameter
+// exactly, and 0.213 rather than 0.21299999999999999.
 std::string text_of(double v) {
     char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
+    for (int digits = 15; digits <= 17; ++digits) {
+        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+        if (std::strtod(buf, nullptr) == v) break;
+    }
     return buf;
 }
 
@@ -143,7 +149,7 @@ void check_filter(const StochasticParameters& p, double t_mid, double dt, double
         if (!(w > 0))
             throw std::invalid_argument("the filter's frequency omega_mid + omega_prime (tau - t_mid) is " + text_of(w) +
                                         " rad/s at tau = " + text_of(tau) + " s (t_mid = " + text_of(t_mid) +
-                                        " s): it must stay > 0 over the record");
+                                        " s): it must stay > 0 over the record (shorten it or raise omega_prime)");
         if (!(w < M_PI / dt))
             throw std::invalid_argument("the filter's frequency reaches " + text_of(w / (2 * M_PI)) + " Hz at tau = " +
                                         text_of(tau) + " s, at or above the Nyquist frequency 1/(2 dt) = " +
