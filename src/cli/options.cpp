@@ -74,6 +74,50 @@ int integer(const std::string& flag, const std::string& text) {
     return static_cast<int>(v);
 }
 
+namespace {
+std::vector<std::string> comma_pieces(const std::string& text) {
+    std::vector<std::string> pieces;
+    std::size_t from = 0;
+    for (std::size_t at; (at = text.find(',', from)) != std::string::npos; from = at + 1)
+        pieces.push_back(text.substr(from, at - from));
+    pieces.push_back(text.substr(from));
+    return pieces;
+}
+}  // namespace
+
+std::vector<double> number_list(const std::string& flag, const std::string& text) {
+    std::vector<double> values;
+    for (const std::string& piece : comma_pieces(text)) values.push_back(number(flag, piece));
+    return values;
+}
+
+std::map<std::string, double> key_values(const std::string& flag, const std::string& text,
+                                         const std::vector<std::string>& keys) {
+    std::string known;
+    for (const auto& k : keys) known += (known.empty() ? "" : ", ") + k;
+    std::map<std::string, double> values;
+    for (const std::string& piece : comma_pieces(text)) {
+        const std::size_t eq = piece.find('=');
+        if (eq == std::string::npos) throw UsageError(flag + ": '" + piece + "' is not key=value");
+        const std::string key = piece.substr(0, eq);
+        bool ok = false;
+        for (const auto& k : keys) ok = ok || k == key;
+        if (!ok) throw UsageError(flag + ": unknown key '" + key + "' (keys: " + known + ")");
+        if (values.count(key)) throw UsageError(flag + ": " + key + " given twice");
+        values[key] = number(flag + " " + key, piece.substr(eq + 1));
+    }
+    return values;
+}
+
+// Digits only: std::stoull would take "-1" as 2^64 - 1 and "1e3" as 1.
+std::uint64_t seed_option(const std::string& flag, const std::string& text) {
+    const bool digits = !text.empty() && text.size() <= 10 && text.find_first_not_of("0123456789") == std::string::npos;
+    const std::uint64_t seed = digits ? std::stoull(text) : 0;
+    if (seed < 1 || seed > 0xFFFFFFFFu)
+        throw UsageError(flag + ": the seed must be a whole number from 1 to 4294967295 (got '" + text + "')");
+    return seed;
+}
+
 // The FILE a subcommand takes first: an option there (rocking collapse
 // --alpha 0.15 FILE) was read as the file, and its value as an unknown option.
 std::string file_argument(int argc, char** argv, int at, const std::string& usage) {

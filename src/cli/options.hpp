@@ -3,6 +3,7 @@
 // over the library; main.cpp only dispatches.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -33,6 +34,13 @@ double rtol_option(const std::string& text);
 void tolerance_options(const std::map<std::string, std::string>& values, double alpha,
                        dynamics::SolverOptions& solver);
 int integer(const std::string& flag, const std::string& text);
+// "1,2.5,-3": every comma-separated piece a finite number.
+std::vector<double> number_list(const std::string& flag, const std::string& text);
+// "key=value,key=value": each key among `keys`, at most once, each value a finite number.
+std::map<std::string, double> key_values(const std::string& flag, const std::string& text,
+                                         const std::vector<std::string>& keys);
+// A random generator's seed: a whole number in [1, 2^32 - 1].
+std::uint64_t seed_option(const std::string& flag, const std::string& text);
 std::string file_argument(int argc, char** argv, int at, const std::string& usage);
 Args parse(int argc, char** argv, int first, const std::vector<std::string>& allowed);
 PulseTrain train_from(const Args& a, std::string& equation);
@@ -52,5 +60,6 @@ int cmd_simulate(int argc, char** argv);
 int cmd_record(int argc, char** argv);
 int cmd_collapse(int argc, char** argv);
 int cmd_assess(int argc, char** argv);
+int cmd_record_synth(int argc, char** argv);  // rocking record synth (synth.cpp)
 
 }  // namespace rocking::cli

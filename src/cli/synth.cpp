@@ -1,0 +1,148 @@
+// rocking record synth: a synthetic record (records/synthetic.hpp), summarized on
+// standard output and, with --output, written as time,acceleration text that
+// `record info FILE --unit m/s2` reads back.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "harness/atomic_file.hpp"
+#include "harness/table.hpp"
+#include "records/synthetic.hpp"
+
+namespace rocking::cli {
+
+namespace {
+
+double positive(const Args& a, const std::string& flag) {
+    if (!a.values.count(flag)) throw UsageError(flag + " is required");
+    const double v = number(flag, a.values.at(flag));
+    if (!(v > 0)) throw UsageError(flag + ": must be > 0 (got " + a.values.at(flag) + ")");
+    return v;
+}
+
+// --pulse A,fp,nu,gamma[,t0]; t0 defaults to gamma/(2 fp), where the pulse starts at t = 0.
+records::PulseParameters pulse_from(const std::string& text) {
+    const std::vector<double> v = number_list("--pulse", text);
+    if (v.size() != 4 && v.size() != 5)
+        throw UsageError("--pulse: takes A,fp,nu,gamma[,t0] (m/s, Hz, rad, -, s), got " + std::to_string(v.size()) +
+                         " values");
+    records::PulseParameters p{v[0], v[1], v[2], v[3], 0};
+    p.t0 = v.size() == 5 ? v[4] : (p.fp > 0 ? p.gamma / (2 * p.fp) : 0);
+    return p;
+}
+
+// --params: the modulating function as alpha1..3, or as Ia (m/s), D5_95 (s) and
+// tmid (s), each of the last three defaulting to the paper's mean; the filter as
+// fmid (Hz), fprime (Hz/s), zeta; the post-filter's corner fc (Hz).
+records::StochasticParameters stochastic_from(const Args& a) {
+    records::StochasticParameters p = records::default_stochastic_parameters();
+    if (!a.values.count("--params")) return p;
+    const auto kv = key_values("--params", a.values.at("--params"),
+                               {"alpha1", "alpha2", "alpha3", "Ia", "D5_95", "tmid", "fmid", "fprime", "zeta", "fc"});
+    if (kv.count("fmid")) p.omega_mid = 2 * M_PI * kv.at("fmid");
+    if (kv.count("fprime")) p.omega_prime = 2 * M_PI * kv.at("fprime");
+    if (kv.count("zeta")) p.zeta_f = kv.at("zeta");
+    if (kv.count("fc")) p.omega_c = 2 * M_PI * kv.at("fc");
+    const int alphas = kv.count("alpha1") + kv.count("alpha2") + kv.count("alpha3");
+    const int arias = kv.count("Ia") + kv.count("D5_95") + kv.count("tmid");
+    if (alphas && arias) throw UsageError("--params: give the alphas or Ia, D5_95, tmid, not both");
+    if (alphas && alphas != 3) throw UsageError("--params: alpha1, alpha2 and alpha3 go together");
+    if (alphas) {
+        p.alpha1 = kv.at("alpha1"), p.alpha2 = kv.at("alpha2"), p.alpha3 = kv.at("alpha3");
+    } else if (arias) {
+        auto value = [&](const char* key, double fallback) { return kv.count(key) ? kv.at(key) : fallback; };
+        p = records::with_arias_modulation(p, value("Ia", 0.0468 * dynamics::kGravity), value("D5_95", 17.3),
+                                           value("tmid", 12.4));
+    }
+    return p;
+}
+
+// The header's values are %.17g text or words: numbers stay numbers in JSON.
+std::string json_value(const std::string& text) {
+    std::size_t used = 0;
+    try {
+        const double v = std::stod(text, &used);
+        if (used == text.size() && std::isfinite(v)) return text;
+    } catch (const std::exception&) {
+    }
+    return json_string(text);
+}
+
+// '#' lines naming the generator and every parameter, then t,a rows: the plain
+// reader skips the '#' lines and takes the rest as two columns.
+void write_two_columns(const records::Record& r, const std::string& path) {
+    harness::AtomicFile out(path);
+    out.write("# generator: " + r.header.at("generator") + "\n");
+    out.write("# name: " + r.name + "\n");
+    for (const auto& [key, value] : r.header)
+        if (key != "generator") out.write("# " + key + ": " + value + "\n");
+    out.write("# columns: t (s), acceleration (m/s^2); read with --unit m/s2\n");
+    std::string lines;
+    for (std::size_t k = 0; k < r.accel.size(); ++k) {
+        lines += harness::format_number(r.dt * k) + "," + harness::format_number(r.accel[k]) + "\n";
+        if (lines.size() > (1u << 20)) out.write(lines), lines.clear();
+    }
+    out.write(lines);
+    out.commit();
+}
+
+void print_summary(const records::Record& r, const records::PeakMotion& m, const std::string& output, bool json) {
+    if (json) {
+        std::cout << "{\"name\": " << json_string(r.name) << ", \"format\": " << json_string(r.format)
+                  << ", \"samples\": " << r.accel.size() << ", \"dt\": " << json_number(r.dt)
+                  << ", \"pga_ms2\": " << json_number(m.pga) << ", \"pgv_ms\": " << json_number(m.pgv)
+                  << ", \"to5_s\": " << json_number(m.to5) << ", \"parameters\": {";
+        bool first = true;
+        for (const auto& [key, value] : r.header) {
+            std::cout << (first ? "" : ", ") << json_string(key) << ": " << json_value(value);
+            first = false;
+        }
+        std::cout << "}, \"output\": " << (output.empty() ? "null" : json_string(output)) << "}\n";
+        return;
+    }
+    std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,
+                r.duration());
+    std::printf("  generator: %s\n", r.header.at("generator").c_str());
+    for (const auto& [key, value] : r.header)
+        if (key != "generator") std::printf("  %s = %s\n", key.c_str(), value.c_str());
+    std::printf("  PGA = %s m/s^2 (%s g), PGV = %s m/s, to_5 = %s s\n", four(m.pga).c_str(),
+                four(m.pga / dynamics::kGravity).c_str(), four(m.pgv).c_str(), four(m.to5).c_str());
+    if (!output.empty()) std::printf("  written to %s (t, acceleration in m/s^2)\n", output.c_str());
+}
+
+}  // namespace
+
+int cmd_record_synth(int argc, char** argv) {
+    const Args a = parse(argc, argv, 3, {"--pulse", "--stochastic", "--params", "--dt", "--duration", "--output"});
+    const bool pulse = a.values.count("--pulse"), stochastic = a.values.count("--stochastic");
+    if (pulse == stochastic) throw UsageError("give exactly one of --pulse A,fp,nu,gamma[,t0] and --stochastic SEED");
+    if (pulse && a.values.count("--params")) throw UsageError("--params goes with --stochastic");
+    const double dt = positive(a, "--dt"), duration = positive(a, "--duration");
+    const std::string flag = pulse ? "--pulse" : a.values.count("--params") ? "--params" : "--stochastic";
+    records::Record r;
+    try {
+        if (pulse) {
+            r = records::pulse_record(pulse_from(a.values.at("--pulse")), dt, duration);
+        } else {
+            const std::uint64_t seed = seed_option("--stochastic", a.values.at("--stochastic"));
+            r = records::stochastic_record(stochastic_from(a), seed, dt, duration);
+        }
+    } catch (const std::invalid_argument& e) {
+        // The option to change: the step for the Nyquist limit, the duration for the sample cap.
+        const std::string what = e.what();
+        const std::string option = what.find("Nyquist") != std::string::npos  ? "--dt"
+                                   : what.rfind("duration/dt", 0) == 0         ? "--duration"
+                                                                               : flag;
+        throw UsageError(option + ": " + what);
+    }
+    const std::string output = a.values.count("--output") ? a.values.at("--output") : "";
+    if (!output.empty()) write_two_columns(r, output);
+    print_summary(r, records::peak_motion(r.accel, r.dt), output, a.json);
+    return 0;
+}
+
+}  // namespace rocking::cli
