@@ -18,15 +18,29 @@ std::string CollapseOptions::describe() const {
     return os.str();
 }
 
-bool collapses_at(const GroundInput& input, double alpha, double p, const CollapseOptions& options) {
+namespace {
+
+SimulationResult run_block(const GroundInput& input, double alpha, double p, const CollapseOptions& options,
+                           bool free_rocking) {
     Model model;
     model.equation = options.equation;
     model.restitution = options.housner_restitution ? housner_restitution(alpha) : options.restitution;
     model.block = Block::from_p(p, alpha);
     SimulationOptions sim;
     sim.solver = options.solver;
-    sim.free_rocking = options.criterion == Criterion::overturning;
-    return simulate(model, input, sim).collapse(options.criterion, alpha);
+    sim.free_rocking = free_rocking;
+    return simulate(model, input, sim);
+}
+
+}  // namespace
+
+bool collapses_at(const GroundInput& input, double alpha, double p, const CollapseOptions& options) {
+    return run_block(input, alpha, p, options, options.criterion == Criterion::overturning)
+        .collapse(options.criterion, alpha);
+}
+
+SimulationResult simulate_block(const GroundInput& input, double alpha, double p, const CollapseOptions& options) {
+    return run_block(input, alpha, p, options, true);
 }
 
 CollapseResult smallest_collapse_p(const GroundInput& input, double alpha, const CollapseOptions& options) {

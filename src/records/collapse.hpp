@@ -41,4 +41,10 @@ CollapseResult smallest_collapse_p(const dynamics::GroundInput& input, double al
 // under the model, restitution, criterion and solver of `options`.
 bool collapses_at(const dynamics::GroundInput& input, double alpha, double p, const CollapseOptions& options);
 
+// The same block's whole run, with the free rocking after the input followed
+// whatever the criterion, so that all three criteria are decided at once (the
+// rocking spectrum's grid, studies/spectrum.hpp).
+dynamics::SimulationResult simulate_block(const dynamics::GroundInput& input, double alpha, double p,
+                                          const CollapseOptions& options);
+
 }  // namespace rocking::records

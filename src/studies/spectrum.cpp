@@ -1,0 +1,194 @@
+#include "studies/spectrum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include "studies/scaled_input.hpp"
+
+namespace rocking::studies {
+
+using dynamics::GroundInput;
+
+dynamics::SolverOptions SpectrumOptions::rk8pd_check() {
+    dynamics::SolverOptions s;
+    s.kind = dynamics::SolverKind::gsl_rk8pd;
+    s.rtol = s.atol_alpha = 1e-13;
+    return s;
+}
+
+double SpectrumOptions::step() const { return std::pow(p_max / p_min, 1.0 / (points - 1)); }
+
+std::string SpectrumOptions::describe_grid() const {
+    char text[400];
+    const double r = step();
+    if (offset_grid)
+        std::snprintf(text, sizeof text,
+                      "%d p log-spaced from %g to %g rad/s (x%.6g), and %d more offset by half a step (x%.6g); "
+                      "islands narrower than half a step (x%.6g) may be missed",
+                      points, p_min, p_max, r, points - 1, std::sqrt(r), std::sqrt(r));
+    else
+        std::snprintf(text, sizeof text,
+                      "%d p log-spaced from %g to %g rad/s (x%.6g), no offset grid; islands narrower than a step "
+                      "(x%.6g) may be missed",
+                      points, p_min, p_max, r, r);
+    return text;
+}
+
+std::string confirmation_name(Confirmation c) {
+    switch (c) {
+        case Confirmation::not_checked: return "not checked";
+        case Confirmation::confirmed: return "confirmed";
+        case Confirmation::disagrees: return "second solver disagrees";
+        case Confirmation::ill_conditioned: return "ill-conditioned";
+    }
+    return "?";
+}
+
+namespace {
+
+void check_options(double alpha, const SpectrumOptions& o) {
+    if (!(alpha > 0 && alpha < 1)) throw std::invalid_argument("spectrum: alpha must be in (0, 1)");
+    if (o.points < 2) throw std::invalid_argument("spectrum: the grid needs at least 2 points");
+    if (!(o.p_min > 0 && std::isfinite(o.p_max) && o.p_max > o.p_min))
+        throw std::invalid_argument("spectrum: the grid needs 0 < p_min < p_max, finite");
+    // Below 1e-15 the bisection would stall on neighbouring doubles.
+    if (!(o.rel_tol >= 1e-15 && o.rel_tol <= 0.1)) throw std::invalid_argument("spectrum: rel_tol must be in [1e-15, 0.1]");
+    if (!(o.probe > 0 && o.probe <= 1e-3)) throw std::invalid_argument("spectrum: the probe must be in (0, 1e-3]");
+}
+
+// Both grids, in increasing p: p_min r^k, and p_min r^(k + 1/2) between.
+std::vector<double> grid(const SpectrumOptions& o, std::vector<bool>& offset) {
+    const double span = std::log(o.p_max / o.p_min);
+    std::vector<double> ps;
+    for (int k = 0; k < o.points; ++k) {
+        ps.push_back(k == o.points - 1 ? o.p_max : o.p_min * std::exp(span * k / (o.points - 1)));
+        offset.push_back(false);
+        if (o.offset_grid && k < o.points - 1) {
+            ps.push_back(o.p_min * std::exp(span * (k + 0.5) / (o.points - 1)));
+            offset.push_back(true);
+        }
+    }
+    return ps;
+}
+
+SpectrumPoint run_point(const GroundInput& input, double alpha, double p, bool offset, const SpectrumOptions& o) {
+    const dynamics::SimulationResult r = records::simulate_block(input, alpha, p, o.model);
+    SpectrumPoint pt;
+    pt.p = p;
+    pt.offset = offset;
+    pt.max_theta = r.max_abs_theta_input / alpha;
+    pt.final_rotation = r.collapse(dynamics::Criterion::final_rotation, alpha);
+    pt.peak_rotation = r.collapse(dynamics::Criterion::peak_rotation, alpha);
+    pt.overturning = r.collapse(dynamics::Criterion::overturning, alpha);
+    pt.t_overturn = r.overturned ? r.t_overturn : NAN;
+    pt.collapse = r.collapse(o.model.criterion, alpha);
+    return pt;
+}
+
+// Bisects the bracket [p_a, p_b] (outcomes differ) until rel_tol.
+Boundary refine(const GroundInput& input, double alpha, double p_a, bool collapse_a, double p_b,
+                const SpectrumOptions& o, long& simulations) {
+    Boundary b;
+    b.p_safe = collapse_a ? p_b : p_a;
+    b.p_collapse = collapse_a ? p_a : p_b;
+    while (std::fabs(b.p_collapse - b.p_safe) > o.rel_tol * std::max(b.p_safe, b.p_collapse)) {
+        const double mid = 0.5 * (b.p_safe + b.p_collapse);
+        ++simulations;
+        (records::collapses_at(input, alpha, mid, o.model) ? b.p_collapse : b.p_safe) = mid;
+    }
+    return b;
+}
+
+std::string at_p(const char* what, double p) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%s at p = %.9g", what, p);
+    return text;
+}
+
+// The probe first: where scaling the input by 1 +- probe flips an outcome at
+// either end, the boundary's place is set by rounding, and a second solver's
+// agreement or not would prove nothing.  Elsewhere both ends must come out the
+// same under the second solver.
+void confirm(Boundary& b, const GroundInput& input, const GroundInput& up, const GroundInput& down, double alpha,
+             const SpectrumOptions& o, Spectrum& s) {
+    for (const double p : {b.p_safe, b.p_collapse}) {
+        const bool expected = p == b.p_collapse;
+        for (const GroundInput* probe : {&up, &down}) {
+            ++s.simulations;
+            if (records::collapses_at(*probe, alpha, p, o.model) != expected) {
+                b.confirmation = Confirmation::ill_conditioned;
+                b.detail = at_p(probe == &up ? "the input times 1 + probe flips the outcome"
+                                             : "the input times 1 - probe flips the outcome",
+                                p);
+                return;
+            }
+        }
+    }
+    records::CollapseOptions check = o.model;
+    check.solver = o.check_solver;
+    s.check_simulations += 2;
+    const bool hit = records::collapses_at(input, alpha, b.p_collapse, check);
+    const bool safe = !records::collapses_at(input, alpha, b.p_safe, check);
+    b.confirmation = hit && safe ? Confirmation::confirmed : Confirmation::disagrees;
+    if (!hit) b.detail = at_p("the second solver sees no collapse", b.p_collapse);
+    else if (!safe) b.detail = at_p("the second solver sees a collapse", b.p_safe);
+}
+
+// The intervals of collapse from the grid's outcomes and its refined boundaries.
+std::vector<Interval> intervals_of(const std::vector<SpectrumPoint>& pts, const std::vector<Boundary>& boundaries) {
+    std::vector<Interval> out;
+    std::size_t next = 0;
+    if (pts.front().collapse) out.push_back(Interval{pts.front().p, 0, false, false, {}, {}});
+    for (std::size_t k = 1; k < pts.size(); ++k) {
+        if (pts[k].collapse == pts[k - 1].collapse) continue;
+        const Boundary& b = boundaries.at(next++);
+        if (b.lower()) {
+            Interval in;
+            in.from = b.p_collapse;
+            in.has_lower = true;
+            in.lower = b;
+            out.push_back(in);
+        } else {
+            out.back().to = b.p_collapse;
+            out.back().has_upper = true;
+            out.back().upper = b;
+        }
+    }
+    if (!out.empty() && !out.back().has_upper) out.back().to = pts.back().p;
+    return out;
+}
+
+}  // namespace
+
+Spectrum rocking_spectrum(const GroundInput& input, double alpha, const SpectrumOptions& o) {
+    check_options(alpha, o);
+    Spectrum s;
+    s.alpha = alpha;
+    dynamics::Model threshold;  // the uplift threshold depends on alpha and the equation only
+    threshold.equation = o.model.equation;
+    threshold.block = dynamics::Block::from_p(1.0, alpha);
+    s.lifts = input.peak() > threshold.uplift_threshold();
+
+    std::vector<bool> offset;
+    const std::vector<double> ps = grid(o, offset);
+    for (std::size_t k = 0; k < ps.size(); ++k) s.points.push_back(run_point(input, alpha, ps[k], offset[k], o));
+    s.simulations = static_cast<long>(ps.size());
+
+    std::vector<Boundary> boundaries;
+    for (std::size_t k = 1; k < s.points.size(); ++k)
+        if (s.points[k].collapse != s.points[k - 1].collapse)
+            boundaries.push_back(refine(input, alpha, s.points[k - 1].p, s.points[k - 1].collapse, s.points[k].p, o,
+                                        s.simulations));
+    s.boundaries = static_cast<int>(boundaries.size());
+    if (o.confirm && !boundaries.empty()) {
+        const auto up = scaled(input, 1 + o.probe), down = scaled(input, 1 - o.probe);
+        for (Boundary& b : boundaries) confirm(b, input, *up, *down, alpha, o, s);
+    }
+    s.intervals = intervals_of(s.points, boundaries);
+    return s;
+}
+
+}  // namespace rocking::studies

@@ -1,0 +1,90 @@
+// The rocking spectrum (Makris & Konstantinidis 2003): for one input and one
+// slenderness alpha, the block's response over a log grid of pulsations p,
+// and the set of p at which the input collapses the block, as intervals whose
+// ends are refined by bisection and checked by a second solver.
+//
+// The grid sees an island of collapse (or of safety) only where a grid point
+// falls inside it.  A second grid, offset by half a step in log p, halves that
+// limit: a change of outcome between any two neighbours of the merged grids is
+// a boundary.  Islands narrower than half a step may still be missed
+// (docs/spectrum.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dynamics/ground_input.hpp"
+#include "records/collapse.hpp"
+
+namespace rocking::studies {
+
+struct SpectrumOptions {
+    // Model, restitution, criterion and solver: by default those of Table 1's
+    // search (linearised, exact solver, Housner's restitution, overturning,
+    // free rocking followed).  Its scan fields (p_min, growth, ...) are unused.
+    records::CollapseOptions model{};
+    double p_min = 0.3, p_max = 30.0;  // rad/s
+    int points = 200;                  // log-spaced from p_min to p_max, both included
+    bool offset_grid = true;           // the second grid, half a step in log p from the first
+    double rel_tol = 1e-6;             // boundaries bisected until (p_hi - p_lo) / p_hi <= rel_tol
+    bool confirm = true;               // the conditioning probe and the second solver at every boundary
+    double probe = 1e-13;              // the probe: the input scaled by 1 + probe and 1 - probe
+    // The second solver, on the model of `model`: GSL rk8pd at rtol = atol =
+    // 1e-13 alpha, as Table 1's bracket check (reproduce/scenes/records_analysis.cpp).
+    dynamics::SolverOptions check_solver = rk8pd_check();
+    static dynamics::SolverOptions rk8pd_check();
+    // The grid in words: its points, step and the islands it may miss.
+    std::string describe_grid() const;
+    double step() const;  // the main grid's ratio between neighbours
+};
+
+struct SpectrumPoint {
+    double p = 0;
+    bool offset = false;        // on the offset grid
+    double max_theta = 0;       // max |theta| / alpha during the input
+    bool final_rotation = false, peak_rotation = false, overturning = false;  // collapse under each criterion
+    double t_overturn = 0;      // s; NaN when the block does not overturn, or is taken to by its energy
+    bool collapse = false;      // under the options' criterion
+};
+
+enum class Confirmation {
+    not_checked,      // confirm off
+    confirmed,        // well conditioned, and the second solver sees the same bracket
+    disagrees,        // well conditioned, but the second solver does not see the bracket
+    ill_conditioned,  // the probe flips an outcome at an end: no solver's answer is the truth there
+};
+std::string confirmation_name(Confirmation c);
+
+// One boundary of the collapse set: safe at p_safe, collapse at p_collapse,
+// |p_collapse - p_safe| <= rel_tol max(p_safe, p_collapse).
+struct Boundary {
+    double p_safe = 0, p_collapse = 0;
+    Confirmation confirmation = Confirmation::not_checked;
+    std::string detail;  // what the probe or the second solver saw
+    bool lower() const { return p_collapse > p_safe; }  // the start of an interval
+};
+
+// Collapse for p from `from` to `to`.  An end without a boundary is the
+// grid's own (p_min or p_max): the set may go on beyond it.
+struct Interval {
+    double from = 0, to = 0;
+    bool has_lower = false, has_upper = false;
+    Boundary lower, upper;
+};
+
+struct Spectrum {
+    double alpha = 0;
+    bool lifts = false;                 // the input exceeds the uplift threshold at all
+    std::vector<SpectrumPoint> points;  // both grids, in increasing p
+    std::vector<Interval> intervals;    // in increasing p
+    int boundaries = 0;
+    long simulations = 0;        // the first solver's: grid, bisection and probe
+    long check_simulations = 0;  // the second solver's
+};
+
+// Throws std::invalid_argument for options out of range (points < 2,
+// p_min not > 0, p_max not > p_min, rel_tol not in [1e-15, 0.1], probe not
+// in (0, 1e-3]) and whatever simulate() throws.
+Spectrum rocking_spectrum(const dynamics::GroundInput& input, double alpha, const SpectrumOptions& options);
+
+}  // namespace rocking::studies
