@@ -231,13 +231,21 @@ TEST(Spectrum, AnIslandBetweenTwoGridPointsIsFoundByTheOffsetGrid) {
     for (const Boundary& b : boundaries_of(s)) EXPECT_EQ(b.confirmation, Confirmation::confirmed) << b.detail;
     // The island lies between two points of the main grid.
     for (const SpectrumPoint& pt : s.points) {
-        if (!pt.offset) EXPECT_FALSE(pt.p > known[0].p && pt.p < known[1].p) << "main grid point on the island: " << pt.p;
+        if (pt.grid == GridKind::main) {
+            EXPECT_FALSE(pt.p > known[0].p && pt.p < known[1].p) << "main grid point on the island: " << pt.p;
+        }
     }
 
     SpectrumOptions main_only = o;
     main_only.offset_grid = false;
     EXPECT_EQ(rocking_spectrum(input, static_cast<double>(rescued.alpha), main_only).intervals.size(), 1u)
         << "the main grid alone should miss the island";
+    // An extra point on the island (as Table 1's bracket is on the command
+    // line) reveals it without the offset grid.
+    main_only.extra_points = {static_cast<double>(std::sqrt(known[0].p * known[1].p)), 1e3};
+    const Spectrum extra = rocking_spectrum(input, static_cast<double>(rescued.alpha), main_only);
+    EXPECT_EQ(extra.points.size(), static_cast<std::size_t>(o.points) + 1) << "an extra point beyond p_max is left out";
+    expect_boundaries(extra, known, o.rel_tol, "rescued pulse, main grid and an extra point");
 }
 
 TEST(Spectrum, EveryGridPointAgreesWithTheIntervals) {

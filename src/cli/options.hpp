@@ -61,5 +61,6 @@ int cmd_record(int argc, char** argv);
 int cmd_collapse(int argc, char** argv);
 int cmd_assess(int argc, char** argv);
 int cmd_record_synth(int argc, char** argv);  // rocking record synth (synth.cpp)
+int cmd_spectrum(int argc, char** argv);
 
 }  // namespace rocking::cli

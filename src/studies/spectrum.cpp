@@ -12,6 +12,17 @@ namespace rocking::studies {
 
 using dynamics::GroundInput;
 
+namespace {
+
+// %g: a tolerance or a restitution as typed (std::to_string printed 1e-7 as 0.000000).
+std::string short_number(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+}  // namespace
+
 dynamics::SolverOptions SpectrumOptions::rk8pd_check() {
     dynamics::SolverOptions s;
     s.kind = dynamics::SolverKind::gsl_rk8pd;
@@ -37,6 +48,34 @@ std::string SpectrumOptions::describe_grid() const {
     return text;
 }
 
+std::string SpectrumOptions::describe_model() const {
+    const records::CollapseOptions& m = model;
+    std::string text = m.equation == dynamics::Equation::linearised ? "linearised eq. 3" : "full eq. 1";
+    text += ", restitution ";
+    if (m.housner_restitution) text += "Housner 1 - 1.5 sin^2 alpha";
+    else text += short_number(m.restitution);
+    text += ", criterion " + dynamics::criterion_name(m.criterion) + ", solver " + dynamics::solver_name(m.solver.kind);
+    if (m.solver.kind != dynamics::SolverKind::exact) text += " (" + dynamics::tolerance_text(m.solver) + ")";
+    return text + ", free rocking after the input followed";
+}
+
+std::string SpectrumOptions::describe_refinement() const {
+    std::string text = "boundaries bisected to " + short_number(rel_tol) + " relative";
+    if (!confirm) return text + "; not checked";
+    return text + "; each checked by " + dynamics::solver_name(check_solver.kind) + " (" +
+           dynamics::tolerance_text(check_solver) + ") unless the input times 1 +- " + short_number(probe) +
+           " flips an outcome at either end of its bracket (ill-conditioned: flagged, not checked)";
+}
+
+std::string grid_kind_name(GridKind g) {
+    switch (g) {
+        case GridKind::main: return "main";
+        case GridKind::offset: return "offset";
+        case GridKind::extra: return "extra";
+    }
+    return "?";
+}
+
 std::string confirmation_name(Confirmation c) {
     switch (c) {
         case Confirmation::not_checked: return "not checked";
@@ -59,26 +98,34 @@ void check_options(double alpha, const SpectrumOptions& o) {
     if (!(o.probe > 0 && o.probe <= 1e-3)) throw std::invalid_argument("spectrum: the probe must be in (0, 1e-3]");
 }
 
-// Both grids, in increasing p: p_min r^k, and p_min r^(k + 1/2) between.
-std::vector<double> grid(const SpectrumOptions& o, std::vector<bool>& offset) {
+struct GridPoint {
+    double p;
+    GridKind kind;
+};
+
+// Both grids, p_min r^k and p_min r^(k + 1/2) between, with the extra points,
+// in increasing p (an extra point on a grid point is that point).
+std::vector<GridPoint> grid(const SpectrumOptions& o) {
     const double span = std::log(o.p_max / o.p_min);
-    std::vector<double> ps;
+    std::vector<GridPoint> ps;
     for (int k = 0; k < o.points; ++k) {
-        ps.push_back(k == o.points - 1 ? o.p_max : o.p_min * std::exp(span * k / (o.points - 1)));
-        offset.push_back(false);
-        if (o.offset_grid && k < o.points - 1) {
-            ps.push_back(o.p_min * std::exp(span * (k + 0.5) / (o.points - 1)));
-            offset.push_back(true);
-        }
+        ps.push_back({k == o.points - 1 ? o.p_max : o.p_min * std::exp(span * k / (o.points - 1)), GridKind::main});
+        if (o.offset_grid && k < o.points - 1)
+            ps.push_back({o.p_min * std::exp(span * (k + 0.5) / (o.points - 1)), GridKind::offset});
     }
+    for (double p : o.extra_points)
+        if (p >= o.p_min && p <= o.p_max) ps.push_back({p, GridKind::extra});
+    std::stable_sort(ps.begin(), ps.end(), [](const GridPoint& a, const GridPoint& b) { return a.p < b.p; });
+    ps.erase(std::unique(ps.begin(), ps.end(), [](const GridPoint& a, const GridPoint& b) { return a.p == b.p; }),
+             ps.end());
     return ps;
 }
 
-SpectrumPoint run_point(const GroundInput& input, double alpha, double p, bool offset, const SpectrumOptions& o) {
-    const dynamics::SimulationResult r = records::simulate_block(input, alpha, p, o.model);
+SpectrumPoint run_point(const GroundInput& input, double alpha, const GridPoint& at, const SpectrumOptions& o) {
+    const dynamics::SimulationResult r = records::simulate_block(input, alpha, at.p, o.model);
     SpectrumPoint pt;
-    pt.p = p;
-    pt.offset = offset;
+    pt.p = at.p;
+    pt.grid = at.kind;
     pt.max_theta = r.max_abs_theta_input / alpha;
     pt.final_rotation = r.collapse(dynamics::Criterion::final_rotation, alpha);
     pt.peak_rotation = r.collapse(dynamics::Criterion::peak_rotation, alpha);
@@ -172,9 +219,8 @@ Spectrum rocking_spectrum(const GroundInput& input, double alpha, const Spectrum
     threshold.block = dynamics::Block::from_p(1.0, alpha);
     s.lifts = input.peak() > threshold.uplift_threshold();
 
-    std::vector<bool> offset;
-    const std::vector<double> ps = grid(o, offset);
-    for (std::size_t k = 0; k < ps.size(); ++k) s.points.push_back(run_point(input, alpha, ps[k], offset[k], o));
+    const std::vector<GridPoint> ps = grid(o);
+    for (const GridPoint& at : ps) s.points.push_back(run_point(input, alpha, at, o));
     s.simulations = static_cast<long>(ps.size());
 
     std::vector<Boundary> boundaries;

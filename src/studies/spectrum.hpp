@@ -26,6 +26,10 @@ struct SpectrumOptions {
     double p_min = 0.3, p_max = 30.0;  // rad/s
     int points = 200;                  // log-spaced from p_min to p_max, both included
     bool offset_grid = true;           // the second grid, half a step in log p from the first
+    // More points to take as grid points (those within [p_min, p_max]): where
+    // another search saw a change of outcome, e.g. Table 1's bracket, so that
+    // an island it met and the grid stepped over is refined too.
+    std::vector<double> extra_points;
     double rel_tol = 1e-6;             // boundaries bisected until (p_hi - p_lo) / p_hi <= rel_tol
     bool confirm = true;               // the conditioning probe and the second solver at every boundary
     double probe = 1e-13;              // the probe: the input scaled by 1 + probe and 1 - probe
@@ -35,12 +39,18 @@ struct SpectrumOptions {
     static dynamics::SolverOptions rk8pd_check();
     // The grid in words: its points, step and the islands it may miss.
     std::string describe_grid() const;
+    // The model, restitution, criterion and solver; the refinement and its checks.
+    std::string describe_model() const;
+    std::string describe_refinement() const;
     double step() const;  // the main grid's ratio between neighbours
 };
 
+enum class GridKind { main, offset, extra };
+std::string grid_kind_name(GridKind g);  // "main", "offset", "extra"
+
 struct SpectrumPoint {
     double p = 0;
-    bool offset = false;        // on the offset grid
+    GridKind grid = GridKind::main;
     double max_theta = 0;       // max |theta| / alpha during the input
     bool final_rotation = false, peak_rotation = false, overturning = false;  // collapse under each criterion
     double t_overturn = 0;      // s; NaN when the block does not overturn, or is taken to by its energy
@@ -75,7 +85,7 @@ struct Interval {
 struct Spectrum {
     double alpha = 0;
     bool lifts = false;                 // the input exceeds the uplift threshold at all
-    std::vector<SpectrumPoint> points;  // both grids, in increasing p
+    std::vector<SpectrumPoint> points;  // both grids and the extra points, in increasing p
     std::vector<Interval> intervals;    // in increasing p
     int boundaries = 0;
     long simulations = 0;        // the first solver's: grid, bisection and probe

@@ -1,0 +1,356 @@
+// rocking spectrum: the rocking spectrum of a record (studies/spectrum.hpp)
+// for one or more alpha, its overturning intervals in p beside Table 1's
+// first collapse, as text or JSON, with the grid as CSV and a PNG.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "harness/atomic_file.hpp"
+#include "harness/table.hpp"
+#include "records/collapse.hpp"
+#include "studies/spectrum.hpp"
+
+namespace rocking::cli {
+
+namespace {
+
+using studies::Boundary;
+using studies::Interval;
+using studies::Spectrum;
+using studies::SpectrumOptions;
+
+const char* kUsage =
+    "usage: rocking spectrum FILE --alpha A[,A...] [--p-min P] [--p-max P] [--points N] [--unit U [--dt DT]] "
+    "[--output CSV] [--png PNG] [--json]";
+
+struct Study {
+    Spectrum spectrum;
+    records::CollapseResult table1;
+};
+
+std::string g7(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.7g", v);
+    return text;
+}
+
+std::vector<double> alphas_from(const std::string& text) {
+    std::vector<double> out;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        const double alpha = number("--alpha", item);
+        if (!(alpha > 0 && alpha < 0.7)) throw UsageError("--alpha: each must be in (0, 0.7) (got " + item + ")");
+        out.push_back(alpha);
+    }
+    if (out.empty() || text.back() == ',') throw UsageError("--alpha: a list of numbers, A or A,A,... (got '" + text + "')");
+    if (out.size() > 20) throw UsageError("--alpha: at most 20 values");
+    return out;
+}
+
+// The grid's options; p is kept to 0.01-1000 rad/s (half-heights from 74 km
+// down to 7 micrometres), beyond which a run's free rocking or its steps
+// grow without bound and no block is physical.
+SpectrumOptions grid_from(const Args& a) {
+    SpectrumOptions o;
+    if (a.values.count("--p-min")) o.p_min = number("--p-min", a.values.at("--p-min"));
+    if (a.values.count("--p-max")) o.p_max = number("--p-max", a.values.at("--p-max"));
+    if (!(o.p_min >= 0.01 && o.p_min <= 1000)) throw UsageError("--p-min: must be in [0.01, 1000] rad/s");
+    if (!(o.p_max >= 0.01 && o.p_max <= 1000)) throw UsageError("--p-max: must be in [0.01, 1000] rad/s");
+    if (!(o.p_max > o.p_min))
+        throw UsageError("--p-max: must be above --p-min (" + g7(o.p_min) + " rad/s)");
+    if (a.values.count("--points")) o.points = integer("--points", a.values.at("--points"));
+    if (o.points < 2 || o.points > 100000) throw UsageError("--points: must be between 2 and 100000");
+    return o;
+}
+
+std::string grid_text(const SpectrumOptions& o) {
+    return o.describe_grid() + "; Table 1's bracket of each alpha added as extra points";
+}
+
+// How a boundary stands, in words: its check, and what the probe or the
+// second solver saw where it is not confirmed.
+std::string standing(const Boundary& b) {
+    const std::string name = studies::confirmation_name(b.confirmation);
+    return b.detail.empty() ? name : name + " (" + b.detail + ")";
+}
+
+std::string interval_text(const Interval& in) {
+    return "[" + g7(in.from) + ", " + g7(in.to) + "]  from: " +
+           (in.has_lower ? standing(in.lower) : std::string("the grid's start (the set may go on below)")) +
+           "; to: " + (in.has_upper ? standing(in.upper) : std::string("the grid's end (the set may go on above)"));
+}
+
+std::string table1_text(const records::CollapseResult& c) {
+    if (c.below_range()) return "p <= " + g7(c.p) + " rad/s, below the search's lowest p";
+    if (!c.found) return "no collapse up to 30 rad/s";
+    return "p = " + g7(c.p) + " rad/s (safe at " + g7(c.p_safe) + ")";
+}
+
+// Where Table 1's p stands in the spectrum: on an island that only its own
+// bracket revealed (no point of either grid on it), and whether the
+// spectrum overturns the block at a lower p.
+std::string table1_remark(const Study& s) {
+    if (!s.table1.found || s.spectrum.intervals.empty()) return "";
+    std::string text;
+    for (const Interval& in : s.spectrum.intervals) {
+        if (s.table1.p < in.from || s.table1.p > in.to) continue;
+        bool gridded = false;
+        for (const studies::SpectrumPoint& pt : s.spectrum.points)
+            gridded = gridded || (pt.grid != studies::GridKind::extra && pt.p >= in.from && pt.p <= in.to);
+        if (!gridded) text = "; it lies on an island narrower than the grids' step, found through its bracket";
+    }
+    // Below the bracket, not inside it: there the bisection only refines Table 1's own 1e-4.
+    const double lowest = s.spectrum.intervals.front().from;
+    if (lowest < (s.table1.below_range() ? s.table1.p : s.table1.p_safe))
+        text += "; the spectrum overturns the block from p = " + g7(lowest) + ", below it";
+    return text;
+}
+
+void print_text(const std::string& path, const records::Record& r, const SpectrumOptions& o,
+                const std::vector<Study>& studies) {
+    std::printf("%s: rocking spectrum of %s (%zu samples, dt = %g s, PGA %.4f g)\n", r.name.c_str(), path.c_str(),
+                r.accel.size(), r.dt, r.pga() / dynamics::kGravity);
+    std::printf("  model: %s\n  grid: %s\n  %s\n", o.describe_model().c_str(), grid_text(o).c_str(),
+                o.describe_refinement().c_str());
+    for (const Study& s : studies) {
+        const Spectrum& sp = s.spectrum;
+        if (!sp.lifts)
+            std::printf("alpha = %g: the record never lifts the block (PGA %.4f g <= alpha): no p overturns it\n",
+                        sp.alpha, r.pga() / dynamics::kGravity);
+        else if (sp.intervals.empty())
+            std::printf("alpha = %g: no overturning for p from %g to %g rad/s on the grid\n", sp.alpha, o.p_min, o.p_max);
+        else {
+            std::printf("alpha = %g: overturns for p (rad/s) in\n", sp.alpha);
+            for (const Interval& in : sp.intervals) std::printf("  %s\n", interval_text(in).c_str());
+        }
+        std::printf("  Table 1's search (p from 0.3 by x1.01, the first collapse): %s%s\n", table1_text(s.table1).c_str(),
+                    table1_remark(s).c_str());
+        std::printf("  %ld simulations, %ld by the second solver\n", sp.simulations, sp.check_simulations);
+    }
+}
+
+std::string boundary_json(const Interval& in, bool lower) {
+    const bool has = lower ? in.has_lower : in.has_upper;
+    if (!has) return "null";
+    const Boundary& b = lower ? in.lower : in.upper;
+    return "{\"p_safe\": " + json_number(b.p_safe) + ", \"p_collapse\": " + json_number(b.p_collapse) +
+           ", \"confirmation\": " + json_string(studies::confirmation_name(b.confirmation)) +
+           ", \"detail\": " + json_string(b.detail) + "}";
+}
+
+std::string table1_json(const records::CollapseResult& c) {
+    return "{\"found\": " + std::string(c.found ? "true" : "false") +
+           ", \"p\": " + (c.found ? json_number(c.p) : std::string("null")) +
+           ", \"p_safe\": " + (c.found && !c.below_range() ? json_number(c.p_safe) : std::string("null")) +
+           ", \"below_range\": " + (c.below_range() ? "true" : "false") + "}";
+}
+
+void print_json(const std::string& path, const records::Record& r, const SpectrumOptions& o,
+                const std::vector<Study>& studies) {
+    std::ostringstream js;
+    js << "{\"file\": " << json_string(path) << ", \"name\": " << json_string(r.name)
+       << ", \"samples\": " << r.accel.size() << ", \"dt\": " << json_number(r.dt)
+       << ", \"pga_g\": " << json_number(r.pga() / dynamics::kGravity) << ", \"model\": " << json_string(o.describe_model())
+       << ", \"grid\": {\"p_min\": " << json_number(o.p_min) << ", \"p_max\": " << json_number(o.p_max)
+       << ", \"points\": " << o.points << ", \"step\": " << json_number(o.step())
+       << ", \"offset_grid\": true, \"missed_below\": " << json_number(std::sqrt(o.step()))
+       << ", \"note\": " << json_string(grid_text(o)) << "}, \"rel_tol\": " << json_number(o.rel_tol)
+       << ", \"refinement\": " << json_string(o.describe_refinement())
+       << ", \"t_overturn_null\": \"the block does not overturn, or is taken to overturn by its energy after 200/p of "
+          "free rocking\", \"spectra\": [";
+    for (std::size_t k = 0; k < studies.size(); ++k) {
+        const Spectrum& sp = studies[k].spectrum;
+        js << (k ? ", " : "") << "{\"alpha\": " << json_number(sp.alpha) << ", \"lifts\": " << (sp.lifts ? "true" : "false")
+           << ", \"intervals\": [";
+        for (std::size_t i = 0; i < sp.intervals.size(); ++i) {
+            const Interval& in = sp.intervals[i];
+            js << (i ? ", " : "") << "{\"from\": " << json_number(in.from) << ", \"to\": " << json_number(in.to)
+               << ", \"lower\": " << boundary_json(in, true) << ", \"upper\": " << boundary_json(in, false) << "}";
+        }
+        js << "], \"table1\": " << table1_json(studies[k].table1) << ", \"simulations\": " << sp.simulations
+           << ", \"check_simulations\": " << sp.check_simulations << ", \"points\": [";
+        for (std::size_t i = 0; i < sp.points.size(); ++i) {
+            const studies::SpectrumPoint& pt = sp.points[i];
+            js << (i ? ", " : "") << "{\"p\": " << json_number(pt.p) << ", \"grid\": " << json_string(studies::grid_kind_name(pt.grid))
+               << ", \"max_theta\": " << json_number(pt.max_theta)
+               << ", \"final_rotation\": " << (pt.final_rotation ? "true" : "false")
+               << ", \"peak_rotation\": " << (pt.peak_rotation ? "true" : "false")
+               << ", \"overturning\": " << (pt.overturning ? "true" : "false")
+               << ", \"t_overturn\": " << json_number(pt.t_overturn) << "}";
+        }
+        js << "]}";
+    }
+    js << "]}\n";
+    std::cout << js.str();
+}
+
+std::string intervals_note(const Spectrum& sp) {
+    if (sp.intervals.empty()) return "none";
+    std::string text;
+    for (const Interval& in : sp.intervals) text += (text.empty() ? "" : "; ") + interval_text(in);
+    return text;
+}
+
+void write_csv(const std::string& csv, const std::string& path, const records::Record& r, const SpectrumOptions& o,
+               const std::vector<Study>& studies) {
+    harness::Table t({"alpha", "p", "grid", "max_theta_over_alpha", "final_rotation", "peak_rotation", "overturning",
+                      "t_overturn"});
+    t.note("command", "rocking spectrum");
+    t.note("model", o.describe_model());
+    t.note("input", r.name + " (" + path + ", " + std::to_string(r.accel.size()) + " samples, dt = " + g7(r.dt) +
+                        " s, PGA " + g7(r.pga() / dynamics::kGravity) + " g)");
+    t.note("grid", grid_text(o));
+    t.note("refinement", o.describe_refinement());
+    t.note("columns", "p in rad/s; max |theta|/alpha during the input; collapse under each criterion; t_overturn in s, "
+                      "'-' where the block does not overturn or is taken to overturn by its energy");
+    for (const Study& s : studies) {
+        t.note("intervals at alpha " + g7(s.spectrum.alpha), intervals_note(s.spectrum));
+        t.note("Table 1's p at alpha " + g7(s.spectrum.alpha), table1_text(s.table1));
+    }
+    for (const Study& s : studies)
+        for (const studies::SpectrumPoint& pt : s.spectrum.points) {
+            t.row().add(s.spectrum.alpha).add(pt.p).add(studies::grid_kind_name(pt.grid)).add(pt.max_theta);
+            t.add(pt.final_rotation).add(pt.peak_rotation).add(pt.overturning);
+            if (std::isnan(pt.t_overturn)) t.add("-");
+            else t.add(pt.t_overturn);
+        }
+    try {
+        t.write(csv);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(std::string("--output: ") + e.what());
+    }
+}
+
+// A string in a gnuplot script: single quotes, inner ones doubled, and only
+// printable ASCII (a name's control bytes or invalid UTF-8 must not reach the
+// script or cairo).
+std::string gp_string(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) {
+        if (c == '\'') out += "''";
+        else out += (c >= 0x20 && c < 0x7F) ? c : '?';
+    }
+    return out + "'";
+}
+
+std::string shell_quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+// A temporary file of ours, removed when it goes out of scope.
+struct TempFile {
+    std::string path;
+    explicit TempFile(const std::string& stem) {
+        std::string pattern = (std::filesystem::temp_directory_path() / (stem + ".XXXXXX")).string();
+        const int fd = mkstemp(pattern.data());
+        if (fd < 0) throw std::runtime_error("--png: cannot create a temporary file in " +
+                                             std::filesystem::temp_directory_path().string());
+        close(fd);
+        path = pattern;
+    }
+    ~TempFile() { std::remove(path.c_str()); }
+};
+
+std::string plot_script(const std::string& data, const std::string& png, const records::Record& r,
+                        const SpectrumOptions& o, const std::vector<Study>& studies) {
+    std::ostringstream gp;
+    gp << "set terminal pngcairo size 1100," << 120 + 300 * studies.size() << " font 'DejaVu Sans,11'\n"
+       << "set output " << gp_string(png) << "\n"
+       << "set datafile separator ','\n"
+       << "set multiplot layout " << studies.size() << ",1 title " << gp_string("Rocking spectrum: " + r.name)
+       << " noenhanced\n"
+       << "set logscale xy\nset grid\nset xrange [" << g7(o.p_min) << ":" << g7(o.p_max) << "]\n"
+       << "set yrange [1e-3:*]\nset xlabel 'p [rad/s]'\nset ylabel 'max |θ|/α during the input'\n"
+       << "set key outside right top\n";
+    for (std::size_t k = 0; k < studies.size(); ++k) {
+        const Study& s = studies[k];
+        gp << "unset object\nunset arrow\n";
+        int n = 0;
+        for (const Interval& in : s.spectrum.intervals)
+            gp << "set object " << ++n << " rect from " << g7(in.from) << ", graph 0 to " << g7(in.to)
+               << ", graph 1 fc rgb '#e06060' fs transparent solid 0.3 noborder behind\n";
+        gp << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb 'gray40'\n";
+        if (s.table1.found)
+            gp << "set arrow 2 from " << g7(s.table1.p) << ", graph 0 to " << g7(s.table1.p)
+               << ", graph 1 nohead lw 2 dt 2 lc rgb 'blue'\n";
+        gp << "set title " << gp_string("alpha = " + g7(s.spectrum.alpha) + ": " + std::to_string(s.spectrum.intervals.size()) +
+                                        " overturning interval(s)")
+           << " noenhanced\n"
+           << "plot " << gp_string(data) << " index " << k << " using 1:($2 > 1e-3 ? $2 : 1e-3) with lines lw 2 lc rgb 'black' "
+           << "title 'max |θ|/α (1e-3 where below)', NaN with boxes fs transparent solid 0.3 lc rgb '#e06060' "
+           << "title 'overturning', NaN with lines lw 2 dt 2 lc rgb 'blue' title \"Table 1's p\"\n";
+    }
+    gp << "unset multiplot\n";
+    return gp.str();
+}
+
+void write_png(const std::string& png, const records::Record& r, const SpectrumOptions& o,
+               const std::vector<Study>& studies) {
+    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
+        throw std::runtime_error("--png " + png + ": gnuplot is not installed (make deps)");
+    const TempFile data("rocking-spectrum-data"), script("rocking-spectrum-gp"), log("rocking-spectrum-log");
+    {
+        std::ofstream out(data.path);
+        for (std::size_t k = 0; k < studies.size(); ++k) {
+            if (k) out << "\n\n";  // gnuplot's index: blocks split by two blank lines
+            for (const studies::SpectrumPoint& pt : studies[k].spectrum.points)
+                out << harness::format_number(pt.p) << "," << harness::format_number(pt.max_theta) << "\n";
+        }
+        if (!out) throw std::runtime_error("--png " + png + ": cannot write the plot's data to " + data.path);
+    }
+    harness::AtomicFile file(png);
+    std::ofstream(script.path) << plot_script(data.path, file.temporary_path(), r, o, studies);
+    const std::string cmd = "gnuplot " + shell_quote(script.path) + " 2>" + shell_quote(log.path);
+    if (std::system(cmd.c_str()) != 0) {
+        std::ifstream in(log.path);
+        std::string first, line;
+        while (std::getline(in, line))
+            if (!line.empty()) first += (first.empty() ? "" : " | ") + line;
+        throw std::runtime_error("--png " + png + ": gnuplot failed: " + first.substr(0, 400));
+    }
+    file.commit();
+}
+
+}  // namespace
+
+int cmd_spectrum(int argc, char** argv) {
+    const std::string path = file_argument(argc, argv, 2, kUsage);
+    const Args a = parse(argc, argv, 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--output", "--png"});
+    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
+    const std::vector<double> alphas = alphas_from(a.values.at("--alpha"));
+    const SpectrumOptions o = grid_from(a);
+    for (const char* flag : {"--output", "--png"})
+        if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
+    const records::Record r = load_record(path, a);
+    const dynamics::SampledInput input(r.in_g(dynamics::kGravity), r.dt, r.name);
+    std::vector<Study> studies;
+    for (double alpha : alphas) {
+        // Table 1's bracket joins the grid: an island its 1 % scan met and
+        // the grid stepped over is then refined as well (docs/spectrum.md).
+        const records::CollapseResult table1 = records::smallest_collapse_p(input, alpha, {});
+        SpectrumOptions with_table1 = o;
+        if (table1.found) with_table1.extra_points = {table1.p};
+        if (table1.found && !table1.below_range()) with_table1.extra_points.push_back(table1.p_safe);
+        studies.push_back({studies::rocking_spectrum(input, alpha, with_table1), table1});
+    }
+    if (a.values.count("--output")) write_csv(a.values.at("--output"), path, r, o, studies);
+    if (a.values.count("--png")) write_png(a.values.at("--png"), r, o, studies);
+    if (a.json) print_json(path, r, o, studies);
+    else print_text(path, r, o, studies);
+    return 0;
+}
+
+}  // namespace rocking::cli

@@ -1,0 +1,167 @@
+#!/usr/bin/env bash
+# rocking spectrum on the command line: clear errors with their exit codes,
+# strict JSON, the CSV and the PNG whole, and every boundary it prints seen
+# as a bracket by two other subcommands (simulate at both of its ends,
+# collapse for Table 1's p).  The boundaries' places against known answers
+# are the unit tests' (tests/test_spectrum.cpp).
+#
+#   tests/spectrum_cli_test.sh ROCKING   (the last check needs ../shared/records or $ROCKING_RECORDS)
+set -u
+rocking="$1"
+records="${ROCKING_RECORDS:-$(dirname "$0")/../../shared/records}"
+py=/usr/bin/python3
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+
+expect() {  # description, wanted exit status, wanted substring, command...
+    local what="$1" want_status="$2" want="$3"; shift 3
+    local out status
+    out=$(timeout 120 "$@" 2>&1); status=$?
+    if [[ $status != "$want_status" || "$out" != *"$want"* ]]; then
+        echo "FAIL: $what: exit $status (wanted $want_status), wanted '$want' in: ${out:0:600}"; fail=1
+    else echo "ok: $what"; fi
+}
+
+# A synthetic record, plain text in g: a decaying sine of 0.3 g at 1 Hz, 10 s.
+# At alpha = 0.1 and 0.2 its spectrum has three and two intervals.
+rec="$tmp/sine.txt"
+$py -c "
+import math
+for k in range(1000):
+    t = k * 0.01
+    print('%.10f' % (0.3 * math.sin(2 * math.pi * t) * math.exp(-t / 3)))" >"$rec"
+run=("$rocking" spectrum "$rec" --unit g --dt 0.01)
+
+# Bad arguments: exit 2, the option named, before the file is read.
+expect "alpha required"        2 "--alpha is required"                       "$rocking" spectrum no-such-file
+expect "alpha list ends"       2 "--alpha: a list of numbers"                "$rocking" spectrum no-such-file --alpha 0.1,
+expect "alpha not a number"    2 "--alpha: 'x' is not a number"              "$rocking" spectrum no-such-file --alpha 0.1,x
+expect "alpha out of range"    2 "--alpha: each must be in (0, 0.7) (got 0.8)" "$rocking" spectrum no-such-file --alpha 0.8
+expect "points too few"        2 "--points: must be between 2 and 100000"    "$rocking" spectrum no-such-file --alpha 0.1 --points 1
+expect "points not whole"      2 "--points: '2.5' is not a whole number"     "$rocking" spectrum no-such-file --alpha 0.1 --points 2.5
+expect "p-min at 0"            2 "--p-min: must be in [0.01, 1000] rad/s"    "$rocking" spectrum no-such-file --alpha 0.1 --p-min 0
+expect "p-max infinite"        2 "--p-max: 'inf' is not a finite number"     "$rocking" spectrum no-such-file --alpha 0.1 --p-max inf
+expect "p-max below p-min"     2 "--p-max: must be above --p-min (3 rad/s)"  "$rocking" spectrum no-such-file --alpha 0.1 --p-min 3 --p-max 2
+expect "unknown option"        2 "unknown option '--criterion'"              "$rocking" spectrum no-such-file --alpha 0.1 --criterion overturning
+expect "empty output name"     2 "--output: an empty file name"              "$rocking" spectrum no-such-file --alpha 0.1 --output ""
+expect "FILE first"            2 "FILE comes first, before '--alpha'"        "$rocking" spectrum --alpha 0.1 "$rec"
+expect "unit for plain text"   2 "--unit is required for a plain-text record" "$rocking" spectrum "$rec" --alpha 0.1 --dt 0.01
+# Bad files: exit 1, the file named.
+expect "missing file"          1 "no-such-file"                              "$rocking" spectrum no-such-file --alpha 0.1
+printf 'not a record\n' >"$tmp/bad.txt"
+expect "unreadable record"     1 "$tmp/bad.txt"                              "$rocking" spectrum "$tmp/bad.txt" --alpha 0.1
+expect "output in no folder"   1 "--output: $tmp/no/such/dir/s.csv"          "${run[@]}" --alpha 0.1 --points 5 --output "$tmp/no/such/dir/s.csv"
+expect "png without gnuplot"   1 "--png $tmp/nognuplot.png: gnuplot is not installed" env PATH=/nonexistent "${run[@]}" --alpha 0.1 --points 5 --png "$tmp/nognuplot.png"
+if [[ -e "$tmp/nognuplot.png" ]]; then echo "FAIL: a PNG left behind without gnuplot"; fail=1; fi
+
+# The text: intervals with their checks, the grid's limit, Table 1's p.
+expect "text intervals"        0 $'alpha = 0.2: overturns for p (rad/s) in\n  [' "${run[@]}" --alpha 0.1,0.2
+expect "text states the limit" 0 "islands narrower than half a step (x1.01164) may be missed" "${run[@]}" --alpha 0.1
+expect "text names Table 1"    0 "Table 1's search (p from 0.3 by x1.01, the first collapse): p = 2.022946 rad/s" "${run[@]}" --alpha 0.1
+expect "text: confirmed"       0 "from: confirmed; to: confirmed" "${run[@]}" --alpha 0.1
+expect "no lift said"          0 "alpha = 0.5: the record never lifts the block (PGA 0.2764 g <= alpha)" "${run[@]}" --alpha 0.5 --points 10
+out=$("${run[@]}" --alpha 0.1,0.2,0.5 --points 30 2>&1)
+if [[ "$out" == *nan* || "$out" == *inf* ]]; then echo "FAIL: nan or inf in the text: $out"; fail=1; else echo "ok: no nan or inf in the text"; fi
+
+# JSON, strict (no NaN or Infinity, nothing after the object), with the CSV
+# and the PNG from the same run.
+"${run[@]}" --alpha 0.1,0.2,0.5 --json --output "$tmp/s.csv" --png "$tmp/s.png" >"$tmp/s.json" 2>"$tmp/s.err"
+status=$?
+if [[ $status != 0 ]]; then echo "FAIL: json run exit $status: $(cat "$tmp/s.err")"; fail=1; fi
+cat >"$tmp/check.py" <<'EOF'
+import csv, json, math, subprocess, sys
+
+json_path, csv_path, png_path, rocking, rec = sys.argv[1:6]
+problems = []
+def refuse(name):
+    raise ValueError("non-finite JSON number: " + name)
+d = json.loads(open(json_path, "rb").read().decode("utf-8"), parse_constant=refuse)
+grid = d["grid"]
+if grid["points"] != 200 or grid["p_min"] != 0.3 or grid["p_max"] != 30:
+    problems.append("grid: %r" % grid)
+if "islands narrower than half a step" not in grid["note"]:
+    problems.append("the grid's note does not state its limit")
+spectra = {s["alpha"]: s for s in d["spectra"]}
+if sorted(spectra) != [0.1, 0.2, 0.5]:
+    problems.append("alphas: %r" % sorted(spectra))
+if spectra[0.5]["lifts"] or spectra[0.5]["intervals"]:
+    problems.append("alpha 0.5 cannot lift the block at 0.276 g")
+if len(spectra[0.1]["intervals"]) != 3 or len(spectra[0.2]["intervals"]) != 2:
+    problems.append("interval counts %d, %d (wanted 3, 2)" % (len(spectra[0.1]["intervals"]), len(spectra[0.2]["intervals"])))
+
+def simulate(alpha, p):
+    out = subprocess.run([rocking, "simulate", "--record", rec, "--unit", "g", "--record-dt", "0.01", "--alpha", repr(alpha),
+                          "--p", repr(p), "--restitution", "housner", "--criterion", "overturning", "--json"],
+                         capture_output=True, check=True).stdout
+    return json.loads(out, parse_constant=refuse)
+
+for alpha, s in spectra.items():
+    for pt in s["points"]:
+        if pt["t_overturn"] is not None and not pt["overturning"]:
+            problems.append("alpha %g, p %g: a fall time without overturning" % (alpha, pt["p"]))
+    for k, iv in enumerate(s["intervals"]):
+        if not iv["from"] < iv["to"]:
+            problems.append("alpha %g: interval %d empty" % (alpha, k))
+        for side in ("lower", "upper"):
+            b = iv[side]
+            if b is None:
+                continue
+            if abs(b["p_collapse"] - b["p_safe"]) > 1e-6 * max(b["p_collapse"], b["p_safe"]):
+                problems.append("alpha %g: bracket wider than 1e-6: %r" % (alpha, b))
+            if b["confirmation"] != "confirmed":
+                problems.append("alpha %g: %r" % (alpha, b))
+            # Another subcommand must see the same bracket.
+            if not simulate(alpha, b["p_collapse"])["collapse"] or simulate(alpha, b["p_safe"])["collapse"]:
+                problems.append("alpha %g: simulate does not see the bracket %r" % (alpha, b))
+    # Every grid point's max |theta|/alpha as simulate gives it, at a few points.
+    for pt in s["points"][::97]:
+        r = simulate(alpha, pt["p"])
+        if r["max_theta_input_over_alpha"] != pt["max_theta"] or r["collapse"] != pt["overturning"]:
+            problems.append("alpha %g, p %r: simulate gives %r, %r" % (alpha, pt["p"], r["max_theta_input_over_alpha"], r["collapse"]))
+    # Table 1's p as the collapse subcommand finds it.
+    c = json.loads(subprocess.run([rocking, "collapse", rec, "--unit", "g", "--dt", "0.01", "--alpha", repr(alpha), "--json"],
+                                  capture_output=True, check=True).stdout, parse_constant=refuse)
+    if c["p"] != s["table1"]["p"] or c["p_safe"] != s["table1"]["p_safe"]:
+        problems.append("alpha %g: Table 1's p %r against collapse's %r" % (alpha, s["table1"], c))
+
+# The CSV: notes, one row per grid point and alpha, no nan or inf.
+lines = open(csv_path).read().splitlines()
+notes = [l for l in lines if l.startswith("#")]
+for key in ("# model:", "# input:", "# grid:", "# refinement:", "# intervals at alpha 0.1:", "# Table 1's p at alpha 0.2:"):
+    if not any(l.startswith(key) for l in notes):
+        problems.append("CSV note missing: " + key)
+rows = list(csv.DictReader(l for l in lines if not l.startswith("#")))
+if len(rows) != sum(len(s["points"]) for s in d["spectra"]):
+    problems.append("CSV rows %d against JSON points" % len(rows))
+if any(c in ("nan", "inf", "-inf") for r in rows for c in r.values()):
+    problems.append("nan or inf in the CSV")
+# The PNG whole.
+if open(png_path, "rb").read(8) != b"\x89PNG\r\n\x1a\n":
+    problems.append("not a PNG: " + png_path)
+for p in problems:
+    print("FAIL: " + p)
+print("ok: JSON, CSV and PNG checked (%d spectra)" % len(spectra) if not problems else "")
+sys.exit(1 if problems else 0)
+EOF
+if [[ $status == 0 ]]; then
+    if command -v gnuplot >/dev/null; then
+        $py "$tmp/check.py" "$tmp/s.json" "$tmp/s.csv" "$tmp/s.png" "$rocking" "$rec" ||
+            { echo "FAIL: the JSON, CSV and PNG check (above)"; fail=1; }
+    else
+        echo "FAIL: gnuplot is not installed (make deps): the PNG cannot be checked"; fail=1
+    fi
+fi
+
+# A real record where Table 1's search met an island the grids step over:
+# the output says so (docs/spectrum.md).
+norcia="$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC"
+if [[ -f "$norcia" ]]; then
+    expect "Table 1's island named" 0 "p = 1.908956 rad/s (safe at 1.908809); it lies on an island narrower than the grids' step, found through its bracket" \
+        "$rocking" spectrum "$norcia" --alpha 0.1
+else
+    echo "skipped: shared records folder absent ($norcia)"
+fi
+
+if [[ $fail != 0 ]]; then echo "spectrum_cli_test: FAILED"; exit 1; fi
+echo "spectrum_cli_test: all passed"
