@@ -5,7 +5,7 @@ JOBS    ?= 2
 # Debian packages the project needs (header-only Boost: Odeint, Math, Multiprecision).
 PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath
 
-.PHONY: all deps build reproduce test bless bench bench-records report clean
+.PHONY: all deps build reproduce test bless bench bench-records bench-spectrum report clean
 
 all: build
 
@@ -49,6 +49,11 @@ bench: build
 bench-records: build
 	cmake --build $(BUILD) --target bench_record_size -j $(JOBS)
 	$(BUILD)/bench_record_size --out $(OUT)/bench
+
+# The rocking spectrum's speed (a benchmark, not a test): out/bench/spectrum.txt, spectrum_records.csv.
+bench-spectrum: build
+	cmake --build $(BUILD) --target bench_spectrum -j $(JOBS)
+	$(BUILD)/bench_spectrum --out $(OUT)/bench
 
 # One PDF for a reviewer: every reproduced figure and table, the paper's claims, the
 # comparison, the errata and the findings (matplotlib, Debian's /usr/bin/python3).
