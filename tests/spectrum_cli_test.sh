@@ -52,6 +52,7 @@ expect "missing file"          1 "no-such-file"                              "$r
 printf 'not a record\n' >"$tmp/bad.txt"
 expect "unreadable record"     1 "$tmp/bad.txt"                              "$rocking" spectrum "$tmp/bad.txt" --alpha 0.1
 expect "output in no folder"   1 "--output: $tmp/no/such/dir/s.csv"          "${run[@]}" --alpha 0.1 --points 5 --output "$tmp/no/such/dir/s.csv"
+expect "png in no folder"      1 "--png: $tmp/no/such/dir/s.png"             "${run[@]}" --alpha 0.1 --points 5 --png "$tmp/no/such/dir/s.png"
 expect "png without gnuplot"   1 "--png $tmp/nognuplot.png: gnuplot is not installed" env PATH=/nonexistent "${run[@]}" --alpha 0.1 --points 5 --png "$tmp/nognuplot.png"
 if [[ -e "$tmp/nognuplot.png" ]]; then echo "FAIL: a PNG left behind without gnuplot"; fail=1; fi
 

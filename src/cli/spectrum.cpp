@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -164,7 +165,7 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
        << ", \"pga_g\": " << json_number(r.pga() / dynamics::kGravity) << ", \"model\": " << json_string(o.describe_model())
        << ", \"grid\": {\"p_min\": " << json_number(o.p_min) << ", \"p_max\": " << json_number(o.p_max)
        << ", \"points\": " << o.points << ", \"step\": " << json_number(o.step())
-       << ", \"offset_grid\": true, \"missed_below\": " << json_number(std::sqrt(o.step()))
+       << ", \"offset_grid\": true, \"islands_missed_below_ratio\": " << json_number(std::sqrt(o.step()))
        << ", \"note\": " << json_string(grid_text(o)) << "}, \"rel_tol\": " << json_number(o.rel_tol)
        << ", \"refinement\": " << json_string(o.describe_refinement())
        << ", \"t_overturn_null\": \"the block does not overturn, or is taken to overturn by its energy after 200/p of "
@@ -311,8 +312,13 @@ void write_png(const std::string& png, const records::Record& r, const SpectrumO
         }
         if (!out) throw std::runtime_error("--png " + png + ": cannot write the plot's data to " + data.path);
     }
-    harness::AtomicFile file(png);
-    std::ofstream(script.path) << plot_script(data.path, file.temporary_path(), r, o, studies);
+    std::unique_ptr<harness::AtomicFile> file;
+    try {
+        file = std::make_unique<harness::AtomicFile>(png);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(std::string("--png: ") + e.what());
+    }
+    std::ofstream(script.path) << plot_script(data.path, file->temporary_path(), r, o, studies);
     const std::string cmd = "gnuplot " + shell_quote(script.path) + " 2>" + shell_quote(log.path);
     if (std::system(cmd.c_str()) != 0) {
         std::ifstream in(log.path);
@@ -321,7 +327,7 @@ void write_png(const std::string& png, const records::Record& r, const SpectrumO
             if (!line.empty()) first += (first.empty() ? "" : " | ") + line;
         throw std::runtime_error("--png " + png + ": gnuplot failed: " + first.substr(0, 400));
     }
-    file.commit();
+    file->commit();
 }
 
 }  // namespace

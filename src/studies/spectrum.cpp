@@ -135,7 +135,9 @@ SpectrumPoint run_point(const GroundInput& input, double alpha, const GridPoint&
     return pt;
 }
 
-// Bisects the bracket [p_a, p_b] (outcomes differ) until rel_tol.
+// Bisects the bracket [p_a, p_b] (outcomes differ) until rel_tol.  The
+// grid's runs follow the free rocking for every criterion, collapses_at only
+// for overturning: the outcome under the criterion is the same.
 Boundary refine(const GroundInput& input, double alpha, double p_a, bool collapse_a, double p_b,
                 const SpectrumOptions& o, long& simulations) {
     Boundary b;
