@@ -30,7 +30,7 @@ dynamics::SolverOptions SpectrumOptions::rk8pd_check() {
     return s;
 }
 
-double SpectrumOptions::step() const { return std::pow(p_max / p_min, 1.0 / (points - 1)); }
+double SpectrumOptions::step() const { return log_step(p_min, p_max, points); }
 
 std::string SpectrumOptions::describe_grid() const {
     char text[400];
@@ -67,15 +67,6 @@ std::string SpectrumOptions::describe_refinement() const {
            " flips an outcome at either end of its bracket (ill-conditioned: flagged, not checked)";
 }
 
-std::string grid_kind_name(GridKind g) {
-    switch (g) {
-        case GridKind::main: return "main";
-        case GridKind::offset: return "offset";
-        case GridKind::extra: return "extra";
-    }
-    return "?";
-}
-
 std::string confirmation_name(Confirmation c) {
     switch (c) {
         case Confirmation::not_checked: return "not checked";
@@ -98,33 +89,10 @@ void check_options(double alpha, const SpectrumOptions& o) {
     if (!(o.probe > 0 && o.probe <= 1e-3)) throw std::invalid_argument("spectrum: the probe must be in (0, 1e-3]");
 }
 
-struct GridPoint {
-    double p;
-    GridKind kind;
-};
-
-// Both grids, p_min r^k and p_min r^(k + 1/2) between, with the extra points,
-// in increasing p (an extra point on a grid point is that point).
-std::vector<GridPoint> grid(const SpectrumOptions& o) {
-    const double span = std::log(o.p_max / o.p_min);
-    std::vector<GridPoint> ps;
-    for (int k = 0; k < o.points; ++k) {
-        ps.push_back({k == o.points - 1 ? o.p_max : o.p_min * std::exp(span * k / (o.points - 1)), GridKind::main});
-        if (o.offset_grid && k < o.points - 1)
-            ps.push_back({o.p_min * std::exp(span * (k + 0.5) / (o.points - 1)), GridKind::offset});
-    }
-    for (double p : o.extra_points)
-        if (p >= o.p_min && p <= o.p_max) ps.push_back({p, GridKind::extra});
-    std::stable_sort(ps.begin(), ps.end(), [](const GridPoint& a, const GridPoint& b) { return a.p < b.p; });
-    ps.erase(std::unique(ps.begin(), ps.end(), [](const GridPoint& a, const GridPoint& b) { return a.p == b.p; }),
-             ps.end());
-    return ps;
-}
-
 SpectrumPoint run_point(const GroundInput& input, double alpha, const GridPoint& at, const SpectrumOptions& o) {
-    const dynamics::SimulationResult r = records::simulate_block(input, alpha, at.p, o.model);
+    const dynamics::SimulationResult r = records::simulate_block(input, alpha, at.x, o.model);
     SpectrumPoint pt;
-    pt.p = at.p;
+    pt.p = at.x;
     pt.grid = at.kind;
     pt.max_theta = r.max_abs_theta_input / alpha;
     pt.final_rotation = r.collapse(dynamics::Criterion::final_rotation, alpha);
@@ -135,19 +103,15 @@ SpectrumPoint run_point(const GroundInput& input, double alpha, const GridPoint&
     return pt;
 }
 
-// Bisects the bracket [p_a, p_b] (outcomes differ) until rel_tol.  The
-// grid's runs follow the free rocking for every criterion, collapses_at only
-// for overturning: the outcome under the criterion is the same.
+// The grid's runs follow the free rocking for every criterion, collapses_at
+// only for overturning: the outcome under the criterion is the same.
 Boundary refine(const GroundInput& input, double alpha, double p_a, bool collapse_a, double p_b,
                 const SpectrumOptions& o, long& simulations) {
+    const Bracket br = bisect_boundary([&](double p) { return records::collapses_at(input, alpha, p, o.model); }, p_a,
+                                       collapse_a, p_b, o.rel_tol, simulations);
     Boundary b;
-    b.p_safe = collapse_a ? p_b : p_a;
-    b.p_collapse = collapse_a ? p_a : p_b;
-    while (std::fabs(b.p_collapse - b.p_safe) > o.rel_tol * std::max(b.p_safe, b.p_collapse)) {
-        const double mid = 0.5 * (b.p_safe + b.p_collapse);
-        ++simulations;
-        (records::collapses_at(input, alpha, mid, o.model) ? b.p_collapse : b.p_safe) = mid;
-    }
+    b.p_safe = br.safe;
+    b.p_collapse = br.collapse;
     return b;
 }
 
@@ -188,25 +152,25 @@ void confirm(Boundary& b, const GroundInput& input, const GroundInput& up, const
 
 // The intervals of collapse from the grid's outcomes and its refined boundaries.
 std::vector<Interval> intervals_of(const std::vector<SpectrumPoint>& pts, const std::vector<Boundary>& boundaries) {
-    std::vector<Interval> out;
-    std::size_t next = 0;
-    if (pts.front().collapse) out.push_back(Interval{pts.front().p, 0, false, false, {}, {}});
-    for (std::size_t k = 1; k < pts.size(); ++k) {
-        if (pts[k].collapse == pts[k - 1].collapse) continue;
-        const Boundary& b = boundaries.at(next++);
-        if (b.lower()) {
-            Interval in;
-            in.from = b.p_collapse;
-            in.has_lower = true;
-            in.lower = b;
-            out.push_back(in);
-        } else {
-            out.back().to = b.p_collapse;
-            out.back().has_upper = true;
-            out.back().upper = b;
-        }
+    std::vector<double> ps;
+    std::vector<bool> collapse;
+    for (const SpectrumPoint& pt : pts) {
+        ps.push_back(pt.p);
+        collapse.push_back(pt.collapse);
     }
-    if (!out.empty() && !out.back().has_upper) out.back().to = pts.back().p;
+    std::vector<Bracket> brackets;
+    for (const Boundary& b : boundaries) brackets.push_back({b.p_safe, b.p_collapse});
+    std::vector<Interval> out;
+    for (const Span& span : spans_of(ps, collapse, brackets)) {
+        Interval in;
+        in.from = span.from;
+        in.to = span.to;
+        in.has_lower = span.lower >= 0;
+        in.has_upper = span.upper >= 0;
+        if (in.has_lower) in.lower = boundaries[span.lower];
+        if (in.has_upper) in.upper = boundaries[span.upper];
+        out.push_back(in);
+    }
     return out;
 }
 
@@ -221,7 +185,7 @@ Spectrum rocking_spectrum(const GroundInput& input, double alpha, const Spectrum
     threshold.block = dynamics::Block::from_p(1.0, alpha);
     s.lifts = input.peak() > threshold.uplift_threshold();
 
-    const std::vector<GridPoint> ps = grid(o);
+    const std::vector<GridPoint> ps = log_grid(o.p_min, o.p_max, o.points, o.offset_grid, o.extra_points);
     for (const GridPoint& at : ps) s.points.push_back(run_point(input, alpha, at, o));
     s.simulations = static_cast<long>(ps.size());
 

@@ -15,6 +15,7 @@
 
 #include "dynamics/ground_input.hpp"
 #include "records/collapse.hpp"
+#include "studies/intervals.hpp"
 
 namespace rocking::studies {
 
@@ -44,9 +45,6 @@ struct SpectrumOptions {
     std::string describe_refinement() const;
     double step() const;  // the main grid's ratio between neighbours
 };
-
-enum class GridKind { main, offset, extra };
-std::string grid_kind_name(GridKind g);  // "main", "offset", "extra"
 
 struct SpectrumPoint {
     double p = 0;
