@@ -1,0 +1,131 @@
+#include "studies/ida.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include "studies/scaled_input.hpp"
+
+namespace rocking::studies {
+
+using dynamics::GroundInput;
+
+std::string IdaOptions::describe_grid() const {
+    char text[400];
+    const double r = log_step(q_min, q_max, points);
+    if (offset_grid)
+        std::snprintf(text, sizeof text,
+                      "%d q log-spaced from %g to %g (x%.6g), and %d more offset by half a step (x%.6g); "
+                      "boundaries bisected to %g relative; islands narrower than half a step may be missed",
+                      points, q_min, q_max, r, points - 1, std::sqrt(r), rel_tol);
+    else
+        std::snprintf(text, sizeof text,
+                      "%d q log-spaced from %g to %g (x%.6g), no offset grid; boundaries bisected to %g relative; "
+                      "islands narrower than a step may be missed",
+                      points, q_min, q_max, r, rel_tol);
+    return text;
+}
+
+std::string IdaOptions::describe_model() const {
+    const records::CollapseOptions& m = model;
+    char e[40];
+    std::snprintf(e, sizeof e, "%g", m.restitution);
+    std::string text = m.equation == dynamics::Equation::linearised ? "linearised eq. 3" : "full eq. 1";
+    text += ", restitution ";
+    text += m.housner_restitution ? std::string("Housner 1 - 1.5 sin^2 alpha") : std::string(e);
+    text += ", criterion " + dynamics::criterion_name(m.criterion) + ", solver " + dynamics::solver_name(m.solver.kind);
+    if (m.solver.kind != dynamics::SolverKind::exact) text += " (" + dynamics::tolerance_text(m.solver) + ")";
+    return text;
+}
+
+namespace {
+
+void check_options(const GroundInput& input, double alpha, double p, const IdaOptions& o) {
+    if (!(alpha > 0 && alpha < 1)) throw std::invalid_argument("ida: alpha must be in (0, 1)");
+    if (!(std::isfinite(p) && p > 0)) throw std::invalid_argument("ida: p must be finite and > 0");
+    if (!(input.peak() > 0)) throw std::invalid_argument("ida: the input never moves (peak 0): it cannot be scaled to a q");
+    if (o.points < 2) throw std::invalid_argument("ida: the grid needs at least 2 points");
+    if (!(o.q_min > 0 && std::isfinite(o.q_max) && o.q_max > o.q_min))
+        throw std::invalid_argument("ida: the grid needs 0 < q_min < q_max, finite");
+    // Below 1e-15 the bisection would stall on neighbouring doubles.
+    if (!(o.rel_tol >= 1e-15 && o.rel_tol <= 0.1)) throw std::invalid_argument("ida: rel_tol must be in [1e-15, 0.1]");
+}
+
+// Through scaled(), so that a record stays a record and the exact solver
+// takes it through the record kernel.
+bool collapses_at_q(const GroundInput& input, double alpha, double p, double q, const IdaOptions& o) {
+    const double factor = q * alpha / input.peak();
+    return records::collapses_at(*scaled(input, factor), alpha, p, o.model);
+}
+
+IdaInterval interval_of(const Span& span, const std::vector<Bracket>& brackets) {
+    IdaInterval in;
+    in.from = span.from;
+    in.to = span.to;
+    in.has_lower = span.lower >= 0;
+    in.has_upper = span.upper >= 0;
+    if (in.has_lower) in.lower = brackets[span.lower];
+    if (in.has_upper) in.upper = brackets[span.upper];
+    return in;
+}
+
+}  // namespace
+
+Ida incremental_dynamic_analysis(const GroundInput& input, double alpha, double p, const IdaOptions& o) {
+    check_options(input, alpha, p, o);
+    Ida ida;
+    ida.alpha = alpha;
+    ida.p = p;
+    ida.q_input = input.peak() / alpha;
+    const auto collapses = [&](double q) { return collapses_at_q(input, alpha, p, q, o); };
+
+    std::vector<double> qs;
+    std::vector<bool> outcomes;
+    for (const GridPoint& at : log_grid(o.q_min, o.q_max, o.points, o.offset_grid, {})) {
+        const bool c = collapses(at.x);
+        ida.points.push_back({at.x, at.kind, c});
+        qs.push_back(at.x);
+        outcomes.push_back(c);
+    }
+    ida.simulations = static_cast<long>(qs.size());
+
+    std::vector<Bracket> brackets;
+    for (std::size_t k = 1; k < qs.size(); ++k)
+        if (outcomes[k] != outcomes[k - 1])
+            brackets.push_back(bisect_boundary(collapses, qs[k - 1], outcomes[k - 1], qs[k], o.rel_tol, ida.simulations));
+    for (const Span& span : spans_of(qs, outcomes, brackets)) ida.intervals.push_back(interval_of(span, brackets));
+
+    ida.point = ida.intervals.empty() ? IdaPoint{o.q_max, false} : IdaPoint{ida.intervals.front().from, true};
+    return ida;
+}
+
+std::vector<BlockFragility> fragility_study(const std::vector<const GroundInput*>& inputs,
+                                            const std::vector<BlockShape>& blocks, const FragilityStudyOptions& o) {
+    std::vector<BlockFragility> out;
+    for (const BlockShape& block : blocks) {
+        BlockFragility f;
+        f.block = block;
+        int collapsed = 0;
+        for (const GroundInput* input : inputs) {
+            f.idas.push_back(incremental_dynamic_analysis(*input, block.alpha, block.p, o.ida));
+            f.points.push_back(f.idas.back().point);
+            collapsed += f.points.back().collapsed;
+        }
+        f.empirical = empirical_curve(f.points);
+        // fit_lognormal needs two collapses; fewer is an answer (a block too
+        // stocky for these records), not an error.
+        if (collapsed >= 2) {
+            f.fit = fit_lognormal(f.points);
+            f.fitted = true;
+            if (o.resamples > 0) {
+                f.interval = bootstrap(f.points, o.resamples, o.seed, o.level);
+                f.bootstrapped = true;
+            }
+        }
+        out.push_back(std::move(f));
+    }
+    return out;
+}
+
+}  // namespace rocking::studies

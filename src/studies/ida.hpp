@@ -1,0 +1,94 @@
+// Incremental dynamic analysis (IDA) of one block under one input: the input
+// scaled so that its intensity q = PGA/(alpha g) runs over a log grid, the
+// outcome under the model's criterion at each q, every change of outcome
+// bisected, and the set of q that overturn the block as intervals.  Collapse
+// need not be monotone in q: a stronger input can throw the block back before
+// it tips ("resurrection"), so every interval is kept, and the first
+// collapse q (the record's collapse intensity, the point the fragility fit
+// takes) is the lowest interval's start.
+//
+// The grid's limit is the spectrum's (studies/intervals.hpp): an island of
+// collapse or of safety narrower than half a step in log q may be missed.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "dynamics/ground_input.hpp"
+#include "records/collapse.hpp"
+#include "studies/fragility.hpp"
+#include "studies/intervals.hpp"
+
+namespace rocking::studies {
+
+struct IdaOptions {
+    // Table 1's model by default (linearised, exact solver, Housner's
+    // restitution, overturning); its scan fields (p_min, growth, ...) are unused.
+    records::CollapseOptions model{};
+    // q = 1 is where the input just reaches alpha g, the linearised uplift
+    // threshold: below it the block does not lift on the linearised equation.
+    double q_min = 1.0, q_max = 20.0;
+    int points = 100;          // log-spaced from q_min to q_max, both included
+    bool offset_grid = true;   // a second grid, half a step in log q from the first
+    double rel_tol = 1e-6;     // boundaries bisected until (q_hi - q_lo) / q_hi <= rel_tol
+    std::string describe_grid() const;
+    std::string describe_model() const;
+};
+
+struct IdaInterval {
+    double from = 0, to = 0;          // q
+    bool has_lower = false, has_upper = false;  // false: the grid's own end
+    Bracket lower, upper;             // in q
+};
+
+struct IdaGridPoint {
+    double q = 0;
+    GridKind grid = GridKind::main;
+    bool collapse = false;
+};
+
+struct Ida {
+    double alpha = 0, p = 0;
+    double q_input = 0;                   // the input's own q, unscaled
+    std::vector<IdaGridPoint> points;     // both grids, increasing q
+    std::vector<IdaInterval> intervals;   // increasing q
+    // The first collapse q (the lowest interval's start), or q_max censored.
+    IdaPoint point{0, false};
+    long simulations = 0;
+};
+
+// Throws std::invalid_argument for alpha not in (0, 1), p not finite and > 0,
+// an input that never moves (peak 0), points < 2, q_min not > 0, q_max not
+// > q_min, rel_tol not in [1e-15, 0.1], and whatever simulate() throws.
+Ida incremental_dynamic_analysis(const dynamics::GroundInput& input, double alpha, double p, const IdaOptions& options);
+
+struct BlockShape {
+    double alpha = 0, p = 0;
+};
+
+struct FragilityStudyOptions {
+    IdaOptions ida{};
+    int resamples = 1000;        // 0: no bootstrap
+    std::uint64_t seed = 1;
+    double level = 0.9;
+};
+
+struct BlockFragility {
+    BlockShape block;
+    std::vector<Ida> idas;            // one per input, in the inputs' order
+    std::vector<IdaPoint> points;     // each IDA's point
+    bool fitted = false;              // false with fewer than 2 collapsed points
+    LognormalFragility fit;
+    bool bootstrapped = false;
+    BootstrapInterval interval;
+    std::vector<EmpiricalPoint> empirical;
+};
+
+// For each block, the IDA of every input, the lognormal fit of their points
+// with its bootstrap interval, and the empirical curve.  Throws what
+// incremental_dynamic_analysis and bootstrap throw.
+std::vector<BlockFragility> fragility_study(const std::vector<const dynamics::GroundInput*>& inputs,
+                                            const std::vector<BlockShape>& blocks, const FragilityStudyOptions& options);
+
+}  // namespace rocking::studies
