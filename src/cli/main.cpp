@@ -26,6 +26,8 @@ const char* kUsage =
     "       rocking assess FILE --alpha A (--height H | --half-height h) [--json]\n"
     "       rocking spectrum FILE --alpha A[,A...] [--p-min P] [--p-max P] [--points N] [--unit U [--dt DT]]\n"
     "                        [--output CSV] [--png PNG] [--json]\n"
+    "       rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N]\n"
+    "                        [--bootstrap K --seed S] [--unit U [--dt DT]] [--output CSV] [--json]\n"
     "\n"
     "  --case I     input of Figure 3, I = 1..5 (amplitudes in PGA, durations in to)\n"
     "  --pulses N   repeat the case's pattern to N pulses (case 2, N = 6 is eq. 27)\n"
@@ -76,7 +78,13 @@ const char* kUsage =
     "  flagged ill-conditioned (the record times 1 +- 1e-13 flips it), beside Table 1's first collapse.\n"
     "  Islands narrower than half a step may be missed (Table 1's bracket joins the grid). Table 1's\n"
     "  model (linearised, exact solver, Housner restitution, overturning). --output writes the grid as\n"
-    "  CSV, --png plots it (gnuplot); --unit and --dt as for record info.\n";
+    "  CSV, --png plots it (gnuplot); --unit and --dt as for record info.\n"
+    "fragility: for each block (every --alpha with every --p, rad/s) and record, the record scaled so that\n"
+    "  q = PGA/(alpha g) runs over a log grid (default 100 points from 1 to --q-max 20, and a second grid\n"
+    "  offset by half a step), every overturning interval in q (ends bisected to 1e-6 relative), the first\n"
+    "  collapse q or a censored point at q-max; then the lognormal fit (median, beta; Baker 2015), with a\n"
+    "  bootstrap interval over records (--bootstrap K resamples, GSL mt19937 from --seed), and the\n"
+    "  empirical curve. Table 1's model. --output writes one row per block and record as CSV.\n";
 
 int run(int argc, char** argv) {
     const std::string command = argc > 1 ? argv[1] : "";
@@ -96,6 +104,7 @@ int run(int argc, char** argv) {
         if (command == "collapse") return cmd_collapse(argc, argv);
         if (command == "assess") return cmd_assess(argc, argv);
         if (command == "spectrum") return cmd_spectrum(argc, argv);
+        if (command == "fragility") return cmd_fragility(argc, argv);
         throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
     } catch (const UsageError& e) {
         // The whole usage would bury the one line that says what is wrong.

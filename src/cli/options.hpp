@@ -62,5 +62,6 @@ int cmd_collapse(int argc, char** argv);
 int cmd_assess(int argc, char** argv);
 int cmd_record_synth(int argc, char** argv);  // rocking record synth (synth.cpp)
 int cmd_spectrum(int argc, char** argv);
+int cmd_fragility(int argc, char** argv);
 
 }  // namespace rocking::cli

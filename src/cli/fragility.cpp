@@ -1,0 +1,230 @@
+// rocking fragility: incremental dynamic analysis of records and blocks
+// (studies/ida.hpp), each record's first collapse q and all its overturning
+// intervals in q, and per block the lognormal fragility fit with its
+// bootstrap interval and the empirical curve, as text, CSV or JSON.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "harness/table.hpp"
+#include "studies/ida.hpp"
+
+namespace rocking::cli {
+
+namespace {
+
+using studies::BlockFragility;
+using studies::Ida;
+using studies::IdaInterval;
+
+const char* kUsage =
+    "usage: rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N] "
+    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--output CSV] [--json]";
+
+std::string g7(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.7g", v);
+    return text;
+}
+
+// The files: every argument before the first option.
+std::vector<std::string> files_from(int argc, char** argv, int& first_option) {
+    std::vector<std::string> files;
+    int i = 2;
+    for (; i < argc && std::string(argv[i]).rfind("--", 0) != 0; ++i) files.push_back(argv[i]);
+    if (files.empty()) throw UsageError(argc > 2 ? "FILE comes first, before '" + std::string(argv[2]) + "': " + kUsage
+                                                 : std::string(kUsage));
+    first_option = i;
+    return files;
+}
+
+std::vector<double> list_in(const Args& a, const std::string& flag, double lo, double hi, const std::string& range) {
+    if (!a.values.count(flag)) throw UsageError(flag + " is required");
+    const std::vector<double> values = number_list(flag, a.values.at(flag));
+    if (values.empty() || values.size() > 50) throw UsageError(flag + ": from 1 to 50 values");
+    for (double v : values)
+        if (!(v > lo && v < hi)) throw UsageError(flag + ": each must be in " + range + " (got " + g7(v) + ")");
+    return values;
+}
+
+studies::FragilityStudyOptions options_from(const Args& a) {
+    studies::FragilityStudyOptions o;
+    if (a.values.count("--q-max")) o.ida.q_max = number("--q-max", a.values.at("--q-max"));
+    // Beyond 1e4 the scaled record reaches thousands of g: no physical input.
+    if (!(o.ida.q_max > o.ida.q_min && o.ida.q_max <= 1e4)) throw UsageError("--q-max: must be in (1, 10000]");
+    if (a.values.count("--points")) o.ida.points = integer("--points", a.values.at("--points"));
+    if (o.ida.points < 2 || o.ida.points > 10000) throw UsageError("--points: must be between 2 and 10000");
+    o.resamples = 0;
+    if (a.values.count("--bootstrap")) o.resamples = integer("--bootstrap", a.values.at("--bootstrap"));
+    if (o.resamples < 0 || o.resamples > 100000) throw UsageError("--bootstrap: must be between 0 and 100000");
+    if (a.values.count("--seed") && !a.values.count("--bootstrap")) throw UsageError("--seed goes with --bootstrap");
+    if (o.resamples > 0 && !a.values.count("--seed"))
+        throw UsageError("--bootstrap needs --seed (the interval is reproducible only from a stated seed)");
+    if (a.values.count("--seed")) o.seed = seed_option("--seed", a.values.at("--seed"));
+    return o;
+}
+
+std::string interval_list(const Ida& ida) {
+    if (ida.intervals.empty()) return "none";
+    std::string text;
+    for (const IdaInterval& in : ida.intervals)
+        text += (text.empty() ? "[" : " [") + g7(in.from) + ", " + g7(in.to) + (in.has_upper ? "]" : "+]");
+    return text;
+}
+
+std::string point_text(const Ida& ida) {
+    return ida.point.collapsed ? "q = " + g7(ida.point.q) : "censored at q_max = " + g7(ida.point.q);
+}
+
+std::string fit_text(const BlockFragility& f) {
+    if (!f.fitted) return "no fit: fewer than 2 records overturn the block below q_max";
+    std::string text = "lognormal median q = " + g7(f.fit.median) + ", beta = " + g7(f.fit.beta) + " (" +
+                       std::to_string(f.fit.collapsed) + " overturned, " + std::to_string(f.fit.censored) + " censored)";
+    if (f.bootstrapped)
+        text += "; " + g7(100 * f.interval.level) + " % bootstrap (" + std::to_string(f.interval.resamples) +
+                " resamples, seed " + std::to_string(f.interval.seed) + "): median [" + g7(f.interval.median.lo) + ", " +
+                g7(f.interval.median.hi) + "], beta [" + g7(f.interval.beta.lo) + ", " + g7(f.interval.beta.hi) + "]";
+    return text;
+}
+
+std::string empirical_text(const BlockFragility& f) {
+    std::string text;
+    for (const studies::EmpiricalPoint& e : f.empirical) text += (text.empty() ? "" : " ") + g7(e.q) + ":" + g7(e.share);
+    return text.empty() ? "none" : text;
+}
+
+std::string grid_note(const studies::FragilityStudyOptions& o) {
+    return o.ida.describe_grid() + "; q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold";
+}
+
+void print_text(const std::vector<std::string>& files, const studies::FragilityStudyOptions& o,
+                const std::vector<BlockFragility>& study) {
+    std::printf("fragility of %zu record(s)\n  model: %s\n  grid: %s\n", files.size(), o.ida.describe_model().c_str(),
+                grid_note(o).c_str());
+    for (const BlockFragility& f : study) {
+        std::printf("alpha = %g, p = %g rad/s:\n", f.block.alpha, f.block.p);
+        for (std::size_t k = 0; k < files.size(); ++k)
+            std::printf("  %s: %s; overturns for q in %s\n", files[k].c_str(), point_text(f.idas[k]).c_str(),
+                        interval_list(f.idas[k]).c_str());
+        std::printf("  %s\n  empirical (q:share): %s\n", fit_text(f).c_str(), empirical_text(f).c_str());
+    }
+}
+
+std::string bracket_json(bool has, const studies::Bracket& b) {
+    if (!has) return "null";
+    return "{\"q_safe\": " + json_number(b.safe) + ", \"q_collapse\": " + json_number(b.collapse) + "}";
+}
+
+std::string range_json(const studies::Range& r) { return "[" + json_number(r.lo) + ", " + json_number(r.hi) + "]"; }
+
+std::string fit_json(const BlockFragility& f) {
+    if (!f.fitted) return "null";
+    std::string text = "{\"median\": " + json_number(f.fit.median) + ", \"beta\": " + json_number(f.fit.beta) +
+                       ", \"collapsed\": " + std::to_string(f.fit.collapsed) +
+                       ", \"censored\": " + std::to_string(f.fit.censored) + ", \"bootstrap\": ";
+    if (!f.bootstrapped) return text + "null}";
+    return text + "{\"resamples\": " + std::to_string(f.interval.resamples) + ", \"seed\": " +
+           std::to_string(f.interval.seed) + ", \"level\": " + json_number(f.interval.level) +
+           ", \"median\": " + range_json(f.interval.median) + ", \"beta\": " + range_json(f.interval.beta) + "}}";
+}
+
+void print_json(const std::vector<std::string>& files, const studies::FragilityStudyOptions& o,
+                const std::vector<BlockFragility>& study) {
+    std::ostringstream js;
+    js << "{\"model\": " << json_string(o.ida.describe_model()) << ", \"grid\": {\"q_min\": " << json_number(o.ida.q_min)
+       << ", \"q_max\": " << json_number(o.ida.q_max) << ", \"points\": " << o.ida.points
+       << ", \"rel_tol\": " << json_number(o.ida.rel_tol) << ", \"note\": " << json_string(grid_note(o)) << "}, \"blocks\": [";
+    for (std::size_t b = 0; b < study.size(); ++b) {
+        const BlockFragility& f = study[b];
+        js << (b ? ", " : "") << "{\"alpha\": " << json_number(f.block.alpha) << ", \"p\": " << json_number(f.block.p)
+           << ", \"records\": [";
+        for (std::size_t k = 0; k < files.size(); ++k) {
+            const Ida& ida = f.idas[k];
+            js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"q_input\": " << json_number(ida.q_input)
+               << ", \"q\": " << json_number(ida.point.q) << ", \"collapsed\": " << (ida.point.collapsed ? "true" : "false")
+               << ", \"simulations\": " << ida.simulations << ", \"intervals\": [";
+            for (std::size_t i = 0; i < ida.intervals.size(); ++i) {
+                const IdaInterval& in = ida.intervals[i];
+                js << (i ? ", " : "") << "{\"from\": " << json_number(in.from) << ", \"to\": " << json_number(in.to)
+                   << ", \"lower\": " << bracket_json(in.has_lower, in.lower)
+                   << ", \"upper\": " << bracket_json(in.has_upper, in.upper) << "}";
+            }
+            js << "]}";
+        }
+        js << "], \"fit\": " << fit_json(f) << ", \"empirical\": [";
+        for (std::size_t i = 0; i < f.empirical.size(); ++i)
+            js << (i ? ", " : "") << "{\"q\": " << json_number(f.empirical[i].q)
+               << ", \"share\": " << json_number(f.empirical[i].share) << "}";
+        js << "]}";
+    }
+    js << "]}\n";
+    std::cout << js.str();
+}
+
+void write_csv(const std::string& csv, const std::vector<std::string>& files, const studies::FragilityStudyOptions& o,
+               const std::vector<BlockFragility>& study) {
+    harness::Table t({"alpha", "p", "file", "q", "collapsed", "intervals"});
+    t.note("command", "rocking fragility");
+    t.note("model", o.ida.describe_model());
+    t.note("solver", dynamics::solver_name(o.ida.model.solver.kind));
+    std::string inputs;
+    for (const std::string& f : files) inputs += (inputs.empty() ? "" : "; ") + f;
+    t.note("inputs", inputs);
+    t.note("grid", grid_note(o));
+    t.note("columns", "q: the first collapse q, or q_max where collapsed is false (censored); intervals: every "
+                      "overturning interval in q, '+' where it runs to q_max");
+    for (const BlockFragility& f : study) {
+        const std::string block = "alpha " + g7(f.block.alpha) + ", p " + g7(f.block.p);
+        t.note("fit at " + block, fit_text(f));
+        t.note("empirical at " + block, empirical_text(f));
+    }
+    for (const BlockFragility& f : study)
+        for (std::size_t k = 0; k < files.size(); ++k)
+            t.row().add(f.block.alpha).add(f.block.p).add(files[k]).add(f.idas[k].point.q)
+                .add(f.idas[k].point.collapsed).add(interval_list(f.idas[k]));
+    try {
+        t.write(csv);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(std::string("--output: ") + e.what());
+    }
+}
+
+}  // namespace
+
+int cmd_fragility(int argc, char** argv) {
+    int first = 0;
+    const std::vector<std::string> files = files_from(argc, argv, first);
+    const Args a = parse(argc, argv, first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
+                                             "--dt", "--output"});
+    const std::vector<double> alphas = list_in(a, "--alpha", 0, 0.7, "(0, 0.7)");
+    const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
+    const studies::FragilityStudyOptions o = options_from(a);
+    if (a.values.count("--output") && a.values.at("--output").empty()) throw UsageError("--output: an empty file name");
+    if (files.size() > 1000) throw UsageError("at most 1000 files");
+
+    std::vector<std::unique_ptr<dynamics::SampledInput>> records;
+    for (const std::string& path : files) {
+        const records::Record r = load_record(path, a);
+        records.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
+        if (!(records.back()->peak() > 0)) throw std::runtime_error(path + ": the record never moves (PGA 0)");
+    }
+    std::vector<const dynamics::GroundInput*> inputs;
+    for (const auto& r : records) inputs.push_back(r.get());
+    std::vector<studies::BlockShape> blocks;
+    for (double alpha : alphas)
+        for (double p : ps) blocks.push_back({alpha, p});
+
+    const std::vector<BlockFragility> study = studies::fragility_study(inputs, blocks, o);
+    if (a.values.count("--output")) write_csv(a.values.at("--output"), files, o, study);
+    if (a.json) print_json(files, o, study);
+    else print_text(files, o, study);
+    return 0;
+}
+
+}  // namespace rocking::cli
