@@ -83,7 +83,7 @@ std::string point_text(const Ida& ida) {
 }
 
 std::string fit_text(const BlockFragility& f) {
-    if (!f.fitted) return "no fit: fewer than 2 records overturn the block below q_max";
+    if (!f.fitted) return "no fit: " + f.no_fit;
     std::string text = "lognormal median q = " + g7(f.fit.median) + ", beta = " + g7(f.fit.beta) + " (" +
                        std::to_string(f.fit.collapsed) + " overturned, " + std::to_string(f.fit.censored) + " censored)";
     if (f.bootstrapped)

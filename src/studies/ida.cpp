@@ -100,6 +100,26 @@ Ida incremental_dynamic_analysis(const GroundInput& input, double alpha, double 
     return ida;
 }
 
+namespace {
+
+// fit_lognormal refuses points that all share one q (beta 0): the same
+// record twice, say.  That is an answer about the records, not an error.
+void fit_block(BlockFragility& f, const FragilityStudyOptions& o) {
+    try {
+        f.fit = fit_lognormal(f.points);
+    } catch (const std::invalid_argument& e) {
+        f.no_fit = e.what();
+        return;
+    }
+    f.fitted = true;
+    if (o.resamples > 0) {
+        f.interval = bootstrap(f.points, o.resamples, o.seed, o.level);
+        f.bootstrapped = true;
+    }
+}
+
+}  // namespace
+
 std::vector<BlockFragility> fragility_study(const std::vector<const GroundInput*>& inputs,
                                             const std::vector<BlockShape>& blocks, const FragilityStudyOptions& o) {
     std::vector<BlockFragility> out;
@@ -115,14 +135,8 @@ std::vector<BlockFragility> fragility_study(const std::vector<const GroundInput*
         f.empirical = empirical_curve(f.points);
         // fit_lognormal needs two collapses; fewer is an answer (a block too
         // stocky for these records), not an error.
-        if (collapsed >= 2) {
-            f.fit = fit_lognormal(f.points);
-            f.fitted = true;
-            if (o.resamples > 0) {
-                f.interval = bootstrap(f.points, o.resamples, o.seed, o.level);
-                f.bootstrapped = true;
-            }
-        }
+        if (collapsed < 2) f.no_fit = "fewer than 2 records overturn the block below q_max";
+        else fit_block(f, o);
         out.push_back(std::move(f));
     }
     return out;

@@ -78,7 +78,8 @@ struct BlockFragility {
     BlockShape block;
     std::vector<Ida> idas;            // one per input, in the inputs' order
     std::vector<IdaPoint> points;     // each IDA's point
-    bool fitted = false;              // false with fewer than 2 collapsed points
+    bool fitted = false;              // false with fewer than 2 collapsed points, or all at one q
+    std::string no_fit;               // why not fitted
     LognormalFragility fit;
     bool bootstrapped = false;
     BootstrapInterval interval;
