@@ -14,6 +14,7 @@
 #include "studies/ida.hpp"
 #include "studies/scaled_input.hpp"
 #include "studies/spectrum.hpp"
+#include "two_pulses_truth.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
@@ -31,33 +32,11 @@ long double single_pulse_q(long double p, long double d) { return 1 / -std::expm
 
 PulseInput single_pulse(double d) { return PulseInput(PulseTrain({{1.0, 1.0}}), 0.15, d); }
 
-// +A g for d0 then -A g for d1 on a block with restitution 0: test_spectrum.cpp's
-// RescuedPulse with B = A0 = A, each stage a closed form.  Valid for A > alpha
-// (the first pulse lifts the block).
-bool two_pulses_overturn(long double A, long double d0, long double d1, long double alpha, long double p) {
-    const long double B = A, c = A - alpha;
-    const long double th1 = c * (std::cosh(p * d0) - 1);
-    if (th1 >= kHalfPi) return true;
-    const long double y0 = th1 - alpha - B, v0 = c * std::sinh(p * d0);
-    if (y0 + v0 >= 0) return true;
-    const long double u_peak = std::atanh(-v0 / y0) / p;
-    const long double peak =
-        u_peak < d1 ? alpha + B - std::sqrt(y0 * y0 - v0 * v0) : alpha + B + y0 * std::cosh(p * d1) + v0 * std::sinh(p * d1);
-    if (peak >= kHalfPi) return true;
-    const long double qa = y0 + v0, qb = 2 * (alpha + B), qc = y0 - v0;
-    const long double u_impact = std::log((-qb - std::sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)) / p;
-    if (u_impact >= d1) {
-        const long double th = alpha + B + y0 * std::cosh(p * d1) + v0 * std::sinh(p * d1);
-        const long double om_p = y0 * std::sinh(p * d1) + v0 * std::cosh(p * d1);
-        return (th - alpha) + om_p > 0;
-    }
-    const long double r = d1 - u_impact, cb = B - alpha;
-    return cb * (std::cosh(p * r) - 1) >= kHalfPi || cb * std::expm1(p * r) > alpha;
-}
-
+// +A g for d0 then -A g for d1 on a block with restitution 0: two_pulses_truth.hpp
+// with B = A0 = A.
 struct TwoPulses {
     long double d0 = 0.5L, d1 = 1.4L, alpha = 0.1L, p = 2.0L;
-    bool overturns(long double q) const { return q > 1 && two_pulses_overturn(q * alpha, d0, d1, alpha, p); }
+    bool overturns(long double q) const { return q > 1 && rocking::testing::two_pulses_overturn(q * alpha, d0, q * alpha, d1, alpha, p); }
     PulseInput input() const { return PulseInput(PulseTrain({{1.0, 0.5}, {-1.0, 1.4}}), 0.3, 1.0); }
     static IdaOptions options() {
         IdaOptions o;
