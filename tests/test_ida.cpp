@@ -155,6 +155,40 @@ TEST(Ida, TheTwoIntervalsAreSeenByASecondSolver) {
     }
 }
 
+TEST(Ida, EachBracketIsCheckedByTheProbeAndASecondSolver) {
+    // The spectrum's checks (intervals.hpp) on the IDA's brackets: by default
+    // the first collapse's only, the point a fragility fit takes; every one on
+    // request.  The two-pulse case is well conditioned: every bracket is
+    // confirmed by rk8pd, with 6 runs each (4 probes, 2 second-solver runs).
+    // A probe of 1e-3 across a bracket 1e-6 wide flips an end: flagged
+    // ill-conditioned, not confirmed (fails if the probe is skipped).
+    const TwoPulses t;
+    IdaOptions o = TwoPulses::options();
+    const double alpha = static_cast<double>(t.alpha), p = static_cast<double>(t.p);
+    const Ida first = incremental_dynamic_analysis(t.input(), alpha, p, o);
+    ASSERT_EQ(first.intervals.size(), 2u);
+    EXPECT_EQ(first.intervals[0].lower_check.confirmation, Confirmation::confirmed) << first.intervals[0].lower_check.detail;
+    EXPECT_EQ(first.intervals[0].upper_check.confirmation, Confirmation::not_checked);
+    EXPECT_EQ(first.intervals[1].lower_check.confirmation, Confirmation::not_checked);
+    EXPECT_EQ(first.check_simulations, 2);
+
+    o.checks = IdaOptions::Checks::every_bracket;
+    const Ida every = incremental_dynamic_analysis(t.input(), alpha, p, o);
+    for (const Checked& c : {every.intervals[0].lower_check, every.intervals[0].upper_check, every.intervals[1].lower_check})
+        EXPECT_EQ(c.confirmation, Confirmation::confirmed) << c.detail;
+    EXPECT_EQ(every.check_simulations, 6);
+
+    o.checks = IdaOptions::Checks::none;
+    EXPECT_EQ(incremental_dynamic_analysis(t.input(), alpha, p, o).check_simulations, 0);
+
+    o.checks = IdaOptions::Checks::first_collapse;
+    o.probe = 1e-3;
+    const Ida coarse = incremental_dynamic_analysis(t.input(), alpha, p, o);
+    EXPECT_EQ(coarse.intervals[0].lower_check.confirmation, Confirmation::ill_conditioned);
+    EXPECT_NE(coarse.intervals[0].lower_check.detail.find("flips the outcome at q = "), std::string::npos)
+        << coarse.intervals[0].lower_check.detail;
+}
+
 TEST(Ida, AShortPulseThatCannotOverturnTheBlockGivesACensoredPoint) {
     // A sampled triangle of 0.04 s (a record: the record kernel runs it).
     // The linearised equation is monotone in the forcing while the block

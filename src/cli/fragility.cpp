@@ -78,8 +78,16 @@ std::string interval_list(const Ida& ida) {
     return text;
 }
 
+// The first collapse's bracket, as its checks left it (ida.hpp, IdaOptions::checks).
+std::string point_check_text(const Ida& ida) {
+    const studies::Checked& c = ida.intervals.front().lower_check;
+    return studies::confirmation_name(c.confirmation) + (c.detail.empty() ? "" : ": " + c.detail);
+}
+
 std::string point_text(const Ida& ida) {
-    return ida.point.collapsed ? "q = " + g7(ida.point.q) : "censored at q_max = " + g7(ida.point.q);
+    if (!ida.point.collapsed) return "censored at q_max = " + g7(ida.point.q);
+    if (!ida.intervals.front().has_lower) return "q = " + g7(ida.point.q) + " (collapse from the grid's lowest q)";
+    return "q = " + g7(ida.point.q) + " (" + point_check_text(ida) + ")";
 }
 
 std::string fit_text(const BlockFragility& f) {
@@ -100,7 +108,8 @@ std::string empirical_text(const BlockFragility& f) {
 }
 
 std::string grid_note(const studies::FragilityStudyOptions& o) {
-    return o.ida.describe_grid() + "; q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold";
+    return o.ida.describe_grid() + "; q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold; " +
+           o.ida.describe_checks();
 }
 
 void print_text(const std::vector<std::string>& files, const studies::FragilityStudyOptions& o,
@@ -148,7 +157,13 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
             const Ida& ida = f.idas[k];
             js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"q_input\": " << json_number(ida.q_input)
                << ", \"q\": " << json_number(ida.point.q) << ", \"collapsed\": " << (ida.point.collapsed ? "true" : "false")
-               << ", \"simulations\": " << ida.simulations << ", \"intervals\": [";
+               << ", \"point_check\": "
+               << (ida.point.collapsed && ida.intervals.front().has_lower
+                       ? "{\"confirmation\": " + json_string(studies::confirmation_name(ida.intervals.front().lower_check.confirmation)) +
+                             ", \"detail\": " + json_string(ida.intervals.front().lower_check.detail) + "}"
+                       : std::string("null"))
+               << ", \"simulations\": " << ida.simulations << ", \"check_simulations\": " << ida.check_simulations
+               << ", \"intervals\": [";
             for (std::size_t i = 0; i < ida.intervals.size(); ++i) {
                 const IdaInterval& in = ida.intervals[i];
                 js << (i ? ", " : "") << "{\"from\": " << json_number(in.from) << ", \"to\": " << json_number(in.to)

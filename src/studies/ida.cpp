@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "studies/scaled_input.hpp"
+#include "studies/spectrum.hpp"
 
 namespace rocking::studies {
 
@@ -24,6 +25,16 @@ std::string IdaOptions::describe_grid() const {
                       "%d q log-spaced from %g to %g (x%.6g), no offset grid; boundaries bisected to %g relative; "
                       "islands narrower than a step may be missed",
                       points, q_min, q_max, r, rel_tol);
+    return text;
+}
+
+std::string IdaOptions::describe_checks() const {
+    if (checks == Checks::none) return "brackets not checked";
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "%s: the input times 1 +- %g at both ends (a flip: ill-conditioned), then GSL rk8pd at rtol 1e-13",
+                  checks == Checks::first_collapse ? "the first collapse's bracket checked" : "every bracket checked",
+                  probe);
     return text;
 }
 
@@ -50,6 +61,7 @@ void check_options(const GroundInput& input, double alpha, double p, const IdaOp
         throw std::invalid_argument("ida: the grid needs 0 < q_min < q_max, finite");
     // Below 1e-15 the bisection would stall on neighbouring doubles.
     if (!(o.rel_tol >= 1e-15 && o.rel_tol <= 0.1)) throw std::invalid_argument("ida: rel_tol must be in [1e-15, 0.1]");
+    if (!(o.probe > 0 && o.probe <= 1e-3)) throw std::invalid_argument("ida: the probe must be in (0, 1e-3]");
 }
 
 // Through scaled(), so that a record stays a record and the exact solver
@@ -57,6 +69,16 @@ void check_options(const GroundInput& input, double alpha, double p, const IdaOp
 bool collapses_at_q(const GroundInput& input, double alpha, double p, double q, const IdaOptions& o) {
     const double factor = q * alpha / input.peak();
     return records::collapses_at(*scaled(input, factor), alpha, p, o.model);
+}
+
+// Scaling the input by 1 +- probe is the same run as q (1 +- probe); the
+// second solver runs the model on the input scaled to q.
+BracketChecks checks_of(const GroundInput& input, double alpha, double p, const IdaOptions& o) {
+    IdaOptions second = o;
+    second.model.solver = SpectrumOptions::rk8pd_check();
+    return {[&input, alpha, p, o](double q) { return collapses_at_q(input, alpha, p, q * (1 + o.probe), o); },
+            [&input, alpha, p, o](double q) { return collapses_at_q(input, alpha, p, q * (1 - o.probe), o); },
+            [&input, alpha, p, second](double q) { return collapses_at_q(input, alpha, p, q, second); }};
 }
 
 IdaInterval interval_of(const Span& span, const std::vector<Bracket>& brackets) {
@@ -95,6 +117,16 @@ Ida incremental_dynamic_analysis(const GroundInput& input, double alpha, double 
         if (outcomes[k] != outcomes[k - 1])
             brackets.push_back(bisect_boundary(collapses, qs[k - 1], outcomes[k - 1], qs[k], o.rel_tol, ida.simulations));
     for (const Span& span : spans_of(qs, outcomes, brackets)) ida.intervals.push_back(interval_of(span, brackets));
+    if (o.checks != IdaOptions::Checks::none && !ida.intervals.empty()) {
+        const BracketChecks checks = checks_of(input, alpha, p, o);
+        for (IdaInterval& in : ida.intervals) {
+            if (in.has_lower)
+                in.lower_check = check_bracket(in.lower, "q", checks, ida.simulations, ida.check_simulations);
+            if (o.checks == IdaOptions::Checks::first_collapse) break;
+            if (in.has_upper)
+                in.upper_check = check_bracket(in.upper, "q", checks, ida.simulations, ida.check_simulations);
+        }
+    }
 
     ida.point = ida.intervals.empty() ? IdaPoint{o.q_max, false} : IdaPoint{ida.intervals.front().from, true};
     return ida;

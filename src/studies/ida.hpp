@@ -32,14 +32,23 @@ struct IdaOptions {
     int points = 100;          // log-spaced from q_min to q_max, both included
     bool offset_grid = true;   // a second grid, half a step in log q from the first
     double rel_tol = 1e-6;     // boundaries bisected until (q_hi - q_lo) / q_hi <= rel_tol
+    // The checks of a bracket (intervals.hpp, check_bracket), as the spectrum's:
+    // the input scaled by 1 +- probe at both ends, then GSL rk8pd at 1e-13.
+    // By default only the first collapse's bracket, the point a fragility fit
+    // takes (all of them cost about 6 runs each, 2 of them rk8pd's).
+    enum class Checks { none, first_collapse, every_bracket };
+    Checks checks = Checks::first_collapse;
+    double probe = 1e-13;
     std::string describe_grid() const;
     std::string describe_model() const;
+    std::string describe_checks() const;
 };
 
 struct IdaInterval {
     double from = 0, to = 0;          // q
     bool has_lower = false, has_upper = false;  // false: the grid's own end
     Bracket lower, upper;             // in q
+    Checked lower_check, upper_check; // not_checked unless the options ask for it
 };
 
 struct IdaGridPoint {
@@ -55,7 +64,8 @@ struct Ida {
     std::vector<IdaInterval> intervals;   // increasing q
     // The first collapse q (the lowest interval's start), or q_max censored.
     IdaPoint point{0, false};
-    long simulations = 0;
+    long simulations = 0;        // the model's solver: grid, bisection and probe
+    long check_simulations = 0;  // the second solver's
 };
 
 // Throws std::invalid_argument for alpha not in (0, 1), p not finite and > 0,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace rocking::studies {
 
@@ -62,6 +63,51 @@ std::vector<Span> spans_of(const std::vector<double>& xs, const std::vector<bool
         }
     }
     if (!out.empty() && out.back().upper < 0) out.back().to = xs.back();
+    return out;
+}
+
+std::string confirmation_name(Confirmation c) {
+    switch (c) {
+        case Confirmation::not_checked: return "not checked";
+        case Confirmation::confirmed: return "confirmed";
+        case Confirmation::disagrees: return "second solver disagrees";
+        case Confirmation::ill_conditioned: return "ill-conditioned";
+    }
+    return "?";
+}
+
+namespace {
+
+std::string at(const char* what, const std::string& name, double x) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%s at %s = %.9g", what, name.c_str(), x);
+    return text;
+}
+
+}  // namespace
+
+Checked check_bracket(const Bracket& b, const std::string& name, const BracketChecks& checks, long& runs,
+                      long& second_runs) {
+    Checked out;
+    for (const double x : {b.safe, b.collapse}) {
+        const bool expected = x == b.collapse;
+        for (const bool up : {true, false}) {
+            ++runs;
+            if ((up ? checks.up : checks.down)(x) != expected) {
+                out.confirmation = Confirmation::ill_conditioned;
+                out.detail = at(up ? "the input times 1 + probe flips the outcome"
+                                   : "the input times 1 - probe flips the outcome",
+                                name, x);
+                return out;
+            }
+        }
+    }
+    second_runs += 2;
+    const bool hit = checks.second(b.collapse);
+    const bool safe = !checks.second(b.safe);
+    out.confirmation = hit && safe ? Confirmation::confirmed : Confirmation::disagrees;
+    if (!hit) out.detail = at("the second solver sees no collapse", name, b.collapse);
+    else if (!safe) out.detail = at("the second solver sees a collapse", name, b.safe);
     return out;
 }
 

@@ -41,6 +41,35 @@ struct Bracket {
 Bracket bisect_boundary(const std::function<bool(double)>& collapses, double a, bool collapse_a, double b,
                         double rel_tol, long& runs);
 
+enum class Confirmation {
+    not_checked,      // confirm off
+    confirmed,        // well conditioned, and the second solver sees the same bracket
+    disagrees,        // well conditioned, but the second solver does not see the bracket
+    ill_conditioned,  // the probe flips an outcome at an end: no solver's answer is the truth there
+};
+std::string confirmation_name(Confirmation c);
+
+// What the checks of a bracket found.
+struct Checked {
+    Confirmation confirmation = Confirmation::not_checked;
+    std::string detail;  // what the probe or the second solver saw, "... at <name> = <value>"
+};
+
+// The outcomes a bracket is checked with, at a value of the parameter: the
+// input scaled by 1 + probe and 1 - probe (the same model), and a second
+// solver on the unscaled input.
+struct BracketChecks {
+    std::function<bool(double)> up, down, second;
+};
+
+// The probe first: where scaling the input by 1 +- probe flips an outcome at
+// either end, the boundary's place is set by rounding, and a second solver's
+// agreement or not would prove nothing.  Elsewhere both ends must come out the
+// same under the second solver.  `name` is the parameter's ("p", "q"); the
+// probe's runs are counted in `runs`, the second solver's in `second_runs`.
+Checked check_bracket(const Bracket& b, const std::string& name, const BracketChecks& checks, long& runs,
+                      long& second_runs);
+
 // Collapse from `from` to `to`.  lower and upper index the brackets; -1 where
 // the end is the grid's own (the set may go on beyond it).
 struct Span {

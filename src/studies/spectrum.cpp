@@ -67,15 +67,6 @@ std::string SpectrumOptions::describe_refinement() const {
            " flips an outcome at either end of its bracket (ill-conditioned: flagged, not checked)";
 }
 
-std::string confirmation_name(Confirmation c) {
-    switch (c) {
-        case Confirmation::not_checked: return "not checked";
-        case Confirmation::confirmed: return "confirmed";
-        case Confirmation::disagrees: return "second solver disagrees";
-        case Confirmation::ill_conditioned: return "ill-conditioned";
-    }
-    return "?";
-}
 
 namespace {
 
@@ -115,39 +106,17 @@ Boundary refine(const GroundInput& input, double alpha, double p_a, bool collaps
     return b;
 }
 
-std::string at_p(const char* what, double p) {
-    char text[160];
-    std::snprintf(text, sizeof text, "%s at p = %.9g", what, p);
-    return text;
-}
 
-// The probe first: where scaling the input by 1 +- probe flips an outcome at
-// either end, the boundary's place is set by rounding, and a second solver's
-// agreement or not would prove nothing.  Elsewhere both ends must come out the
-// same under the second solver.
 void confirm(Boundary& b, const GroundInput& input, const GroundInput& up, const GroundInput& down, double alpha,
              const SpectrumOptions& o, Spectrum& s) {
-    for (const double p : {b.p_safe, b.p_collapse}) {
-        const bool expected = p == b.p_collapse;
-        for (const GroundInput* probe : {&up, &down}) {
-            ++s.simulations;
-            if (records::collapses_at(*probe, alpha, p, o.model) != expected) {
-                b.confirmation = Confirmation::ill_conditioned;
-                b.detail = at_p(probe == &up ? "the input times 1 + probe flips the outcome"
-                                             : "the input times 1 - probe flips the outcome",
-                                p);
-                return;
-            }
-        }
-    }
     records::CollapseOptions check = o.model;
     check.solver = o.check_solver;
-    s.check_simulations += 2;
-    const bool hit = records::collapses_at(input, alpha, b.p_collapse, check);
-    const bool safe = !records::collapses_at(input, alpha, b.p_safe, check);
-    b.confirmation = hit && safe ? Confirmation::confirmed : Confirmation::disagrees;
-    if (!hit) b.detail = at_p("the second solver sees no collapse", b.p_collapse);
-    else if (!safe) b.detail = at_p("the second solver sees a collapse", b.p_safe);
+    const BracketChecks checks{[&](double p) { return records::collapses_at(up, alpha, p, o.model); },
+                               [&](double p) { return records::collapses_at(down, alpha, p, o.model); },
+                               [&](double p) { return records::collapses_at(input, alpha, p, check); }};
+    const Checked c = check_bracket({b.p_safe, b.p_collapse}, "p", checks, s.simulations, s.check_simulations);
+    b.confirmation = c.confirmation;
+    b.detail = c.detail;
 }
 
 // The intervals of collapse from the grid's outcomes and its refined boundaries.

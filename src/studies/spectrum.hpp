@@ -55,13 +55,6 @@ struct SpectrumPoint {
     bool collapse = false;      // under the options' criterion
 };
 
-enum class Confirmation {
-    not_checked,      // confirm off
-    confirmed,        // well conditioned, and the second solver sees the same bracket
-    disagrees,        // well conditioned, but the second solver does not see the bracket
-    ill_conditioned,  // the probe flips an outcome at an end: no solver's answer is the truth there
-};
-std::string confirmation_name(Confirmation c);
 
 // One boundary of the collapse set: safe at p_safe, collapse at p_collapse,
 // |p_collapse - p_safe| <= rel_tol max(p_safe, p_collapse).
