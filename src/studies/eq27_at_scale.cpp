@@ -1,0 +1,127 @@
+#include "studies/eq27_at_scale.hpp"
+
+#include <gsl/gsl_cdf.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "qfactor/closed_forms.hpp"
+
+namespace rocking::studies {
+
+WilsonInterval wilson_interval(int successes, int trials, double level) {
+    if (trials < 1) throw std::invalid_argument("wilson_interval: trials must be at least 1");
+    if (successes < 0 || successes > trials) throw std::invalid_argument("wilson_interval: successes must be in [0, trials]");
+    if (!(level > 0 && level < 1)) throw std::invalid_argument("wilson_interval: level must be in (0, 1)");
+    const double z = gsl_cdf_ugaussian_Pinv(0.5 + level / 2);
+    const double n = trials, phat = successes / n, z2n = z * z / n;
+    const double centre = (phat + z2n / 2) / (1 + z2n);
+    const double half = z * std::sqrt(phat * (1 - phat) / n + z2n / (4 * n)) / (1 + z2n);
+    // At 0 and n successes the bound is exactly 0 or 1; rounding must not move it.
+    return {successes == 0 ? 0.0 : centre - half, successes == trials ? 1.0 : centre + half};
+}
+
+std::vector<double> Eq27Grid::ps() const {
+    if (!(p_min > 0 && std::isfinite(p_max) && p_max >= p_min)) throw std::invalid_argument("eq27: the grid needs 0 < p_min <= p_max");
+    if (p_points < 1) throw std::invalid_argument("eq27: the grid needs at least 1 p");
+    if (p_points == 1) return {p_min};
+    std::vector<double> out;
+    for (int i = 0; i < p_points; ++i) out.push_back(p_min * std::pow(p_max / p_min, double(i) / (p_points - 1)));
+    // The last point is p_max itself, not its rounded power.
+    out.back() = p_max;
+    return out;
+}
+
+std::vector<BlockShape> Eq27Grid::blocks() const {
+    if (alphas.empty()) throw std::invalid_argument("eq27: the grid needs at least 1 alpha");
+    std::vector<BlockShape> out;
+    const std::vector<double> p = ps();
+    for (double a : alphas)
+        for (double pi : p) out.push_back({a, pi});
+    return out;
+}
+
+std::string Eq27Grid::describe() const {
+    std::string a;
+    for (double v : alphas) {
+        char t[32];
+        std::snprintf(t, sizeof t, "%g", v);
+        a += (a.empty() ? "" : ", ") + std::string(t);
+    }
+    char text[200];
+    std::snprintf(text, sizeof text, "; p: %d log-spaced from %g to %g rad/s", p_points, p_min, p_max);
+    return "alpha " + a + text;
+}
+
+bool non_conservative(const IdaPoint& point, double q_eq27) { return point.collapsed && point.q < q_eq27; }
+
+namespace {
+
+Eq27Case case_of(int r, int b, const IdaPoint& point, const std::array<double, kHalfPeriods>& to, const BlockShape& block) {
+    Eq27Case c;
+    c.record = r;
+    c.block = b;
+    c.point = point;
+    for (int k = 0; k < kHalfPeriods; ++k) {
+        const double x = block.p * to[k];
+        if (!(std::isfinite(x) && x > 0)) throw std::invalid_argument("eq27: p to_k must be finite and > 0 (record " +
+                                                                      std::to_string(r) + ", to_" + std::to_string(k + 1) + ")");
+        c.q_eq27[k] = q2_n6(x);
+        c.non_conservative[k] = non_conservative(point, c.q_eq27[k]);
+    }
+    return c;
+}
+
+void tally(Eq27Study& s) {
+    s.map.assign(s.blocks.size(), Eq27Cell{});
+    for (std::size_t b = 0; b < s.blocks.size(); ++b) s.map[b].block = s.blocks[b];
+    for (const Eq27Case& c : s.cases) {
+        Eq27Cell& cell = s.map[c.block];
+        ++cell.records;
+        if (!c.point.collapsed) ++cell.censored, ++s.censored;
+        for (int k = 0; k < kHalfPeriods; ++k) {
+            ++s.shares[k].cases;
+            if (c.non_conservative[k]) ++cell.non_conservative[k], ++s.shares[k].non_conservative;
+        }
+    }
+    for (Eq27Share& share : s.shares) {
+        share.share = double(share.non_conservative) / share.cases;
+        share.interval = wilson_interval(share.non_conservative, share.cases, s.level);
+    }
+}
+
+}  // namespace
+
+Eq27Study eq27_from_points(const std::vector<std::vector<IdaPoint>>& points,
+                           const std::vector<std::array<double, kHalfPeriods>>& to,
+                           const std::vector<BlockShape>& blocks, double level) {
+    if (points.empty() || blocks.empty()) throw std::invalid_argument("eq27: at least 1 record and 1 block");
+    if (to.size() != points.size()) throw std::invalid_argument("eq27: one set of half-periods per record");
+    Eq27Study s;
+    s.blocks = blocks;
+    s.level = level;
+    for (std::size_t r = 0; r < points.size(); ++r) {
+        if (points[r].size() != blocks.size()) throw std::invalid_argument("eq27: one point per record and block");
+        for (std::size_t b = 0; b < blocks.size(); ++b)
+            s.cases.push_back(case_of(int(r), int(b), points[r][b], to[r], blocks[b]));
+    }
+    tally(s);
+    return s;
+}
+
+Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Options& o) {
+    const std::vector<BlockShape> blocks = o.grid.blocks();
+    std::vector<std::vector<IdaPoint>> points;
+    std::vector<std::array<double, kHalfPeriods>> to;
+    for (const Eq27Record& r : records) {
+        if (!r.input) throw std::invalid_argument("eq27: a record without an input");
+        std::vector<IdaPoint> row;
+        for (const BlockShape& b : blocks) row.push_back(incremental_dynamic_analysis(*r.input, b.alpha, b.p, o.ida).point);
+        points.push_back(row);
+        to.push_back(r.to);
+    }
+    return eq27_from_points(points, to, blocks, o.level);
+}
+
+}  // namespace rocking::studies

@@ -1,0 +1,111 @@
+// Eq. 27 at scale (issue 28, item 3; the paper's Figure 11 generalised): for
+// every record and every block (alpha, p) of a grid, the record's first
+// collapse q from its incremental dynamic analysis (studies/ida.hpp) against
+// eq. 27's q at x = p to_k, for each of the eleven half-periods to_k
+// (records/measures.hpp).
+//
+// A case (record, block, k) is non-conservative when the record, scaled to
+// its collapse q, overturns a block that eq. 27 calls safe at that q:
+//     collapse_q < q2_n6(p to_k).
+// A record that never overturns the block up to the IDA's q_max is censored:
+// its collapse q is above q_max, unknown, so it cannot show eq. 27 unsafe and
+// is counted as conservative (with q_max above eq. 27's q that is exact;
+// below it, a lower bound on the share).  The censored are counted apart.
+//
+// The share of non-conservative cases per k comes with the Wilson score
+// interval (Wilson 1927), which unlike the normal approximation stays inside
+// [0, 1] and is not empty at 0 or n successes.  It treats the cases as
+// independent draws; cases of one record across blocks are not, so the
+// interval is narrower than a record-level resampling would give.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "dynamics/ground_input.hpp"
+#include "studies/ida.hpp"
+
+namespace rocking::studies {
+
+constexpr int kHalfPeriods = 11;  // to_1..to_11
+
+struct WilsonInterval {
+    double lo = 0, hi = 1;
+};
+
+// The Wilson score interval for `successes` of `trials` at the two-sided
+// level (e.g. 0.95):
+//     (phat + z^2/(2n) -+ z sqrt(phat(1 - phat)/n + z^2/(4n^2))) / (1 + z^2/n),
+// z = Phi^-1((1 + level)/2).  Throws std::invalid_argument for trials < 1,
+// successes outside [0, trials], or level not in (0, 1).
+WilsonInterval wilson_interval(int successes, int trials, double level);
+
+struct Eq27Grid {
+    std::vector<double> alphas{0.05, 0.10, 0.15, 0.20, 0.25};
+    double p_min = 0.5, p_max = 10.0;  // rad/s
+    int p_points = 10;                 // log-spaced, both ends included
+    std::vector<double> ps() const;
+    // Every alpha with every p, alpha outermost.
+    std::vector<BlockShape> blocks() const;
+    std::string describe() const;
+};
+
+struct Eq27Record {
+    const dynamics::GroundInput* input = nullptr;  // in g
+    std::array<double, kHalfPeriods> to{};         // s; records::half_periods(r).to
+};
+
+struct Eq27Options {
+    Eq27Grid grid{};
+    IdaOptions ida{};
+    double level = 0.95;
+};
+
+// One record against one block: its IDA point and eq. 27's q per k.
+struct Eq27Case {
+    int record = 0, block = 0;
+    IdaPoint point{0, false};
+    std::array<double, kHalfPeriods> q_eq27{};
+    std::array<bool, kHalfPeriods> non_conservative{};
+};
+
+struct Eq27Share {
+    int non_conservative = 0, cases = 0;
+    double share = 0;
+    WilsonInterval interval;
+};
+
+// One block of the map: of its records, how many are non-conservative per k.
+struct Eq27Cell {
+    BlockShape block;
+    int records = 0, censored = 0;
+    std::array<int, kHalfPeriods> non_conservative{};
+};
+
+struct Eq27Study {
+    std::vector<BlockShape> blocks;
+    std::vector<Eq27Case> cases;  // record-major: cases[r * blocks + b]
+    std::array<Eq27Share, kHalfPeriods> shares{};
+    std::vector<Eq27Cell> map;    // one per block, in blocks' order
+    int censored = 0;             // cases whose record never overturned the block up to q_max
+    double level = 0.95;
+};
+
+// The verdict of one case for one k: the record overturned the block at a q
+// below eq. 27's.  A censored point is never non-conservative.
+bool non_conservative(const IdaPoint& point, double q_eq27);
+
+// The study from the points already known: points[r][b] for record r and
+// block b, to[r] the record's half-periods.  Throws std::invalid_argument when
+// the sizes disagree, there is no record or block, or a p * to_k is not
+// finite and > 0.
+Eq27Study eq27_from_points(const std::vector<std::vector<IdaPoint>>& points,
+                           const std::vector<std::array<double, kHalfPeriods>>& to,
+                           const std::vector<BlockShape>& blocks, double level);
+
+// The IDA of every record on every block of the grid, then eq27_from_points.
+// Throws what incremental_dynamic_analysis and eq27_from_points throw.
+Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Options& options);
+
+}  // namespace rocking::studies
