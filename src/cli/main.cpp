@@ -28,6 +28,8 @@ const char* kUsage =
     "                        [--output CSV] [--png PNG] [--json]\n"
     "       rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N]\n"
     "                        [--bootstrap K --seed S] [--unit U [--dt DT]] [--output CSV] [--json]\n"
+    "       rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q]\n"
+    "                        [--unit U [--dt DT]] [--output CSV] [--json]\n"
     "\n"
     "  --case I     input of Figure 3, I = 1..5 (amplitudes in PGA, durations in to)\n"
     "  --pulses N   repeat the case's pattern to N pulses (case 2, N = 6 is eq. 27)\n"
@@ -84,7 +86,12 @@ const char* kUsage =
     "  offset by half a step), every overturning interval in q (ends bisected to 1e-6 relative), the first\n"
     "  collapse q or a censored point at q-max; then the lognormal fit (median, beta; Baker 2015), with a\n"
     "  bootstrap interval over records (--bootstrap K resamples, GSL mt19937 from --seed), and the\n"
-    "  empirical curve. Table 1's model. --output writes one row per block and record as CSV.\n";
+    "  empirical curve. Table 1's model. --output writes one row per block and record as CSV.\n"
+    "eq27: each record's first collapse q (fragility's IDA) on every block (--alpha, default 0.05..0.25 by\n"
+    "  0.05, with --p-points p log-spaced from --p-min to --p-max, default 10 from 0.5 to 10 rad/s) against\n"
+    "  eq. 27 at x = p to_k: per to_k the share of non-conservative cases (collapse q below eq. 27's; a\n"
+    "  record censored at --q-max counts as conservative) with its 95 % Wilson interval. --output writes\n"
+    "  the map: per block, the records non-conservative for each to_k.\n";
 
 int run(int argc, char** argv) {
     const std::string command = argc > 1 ? argv[1] : "";
@@ -105,6 +112,7 @@ int run(int argc, char** argv) {
         if (command == "assess") return cmd_assess(argc, argv);
         if (command == "spectrum") return cmd_spectrum(argc, argv);
         if (command == "fragility") return cmd_fragility(argc, argv);
+        if (command == "eq27") return cmd_eq27(argc, argv);
         throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
     } catch (const UsageError& e) {
         // The whole usage would bury the one line that says what is wrong.

@@ -127,6 +127,16 @@ std::string file_argument(int argc, char** argv, int at, const std::string& usag
     return path;
 }
 
+std::vector<std::string> file_arguments(int argc, char** argv, int& first_option, const std::string& usage) {
+    std::vector<std::string> files;
+    int i = 2;
+    for (; i < argc && std::string(argv[i]).rfind("--", 0) != 0; ++i) files.push_back(argv[i]);
+    if (files.empty())
+        throw UsageError(argc > 2 ? "FILE comes first, before '" + std::string(argv[2]) + "': " + usage : usage);
+    first_option = i;
+    return files;
+}
+
 Args parse(int argc, char** argv, int first, const std::vector<std::string>& allowed) {
     Args a;
     for (int i = first; i < argc; ++i) {

@@ -42,6 +42,9 @@ std::map<std::string, double> key_values(const std::string& flag, const std::str
 // A random generator's seed: a whole number in [1, 2^32 - 1].
 std::uint64_t seed_option(const std::string& flag, const std::string& text);
 std::string file_argument(int argc, char** argv, int at, const std::string& usage);
+// Every argument from argv[2] up to the first option; sets first_option to its
+// index.  Throws UsageError (with the usage) when there is none.
+std::vector<std::string> file_arguments(int argc, char** argv, int& first_option, const std::string& usage);
 Args parse(int argc, char** argv, int first, const std::vector<std::string>& allowed);
 PulseTrain train_from(const Args& a, std::string& equation);
 double x_from(const Args& a);
@@ -63,5 +66,6 @@ int cmd_assess(int argc, char** argv);
 int cmd_record_synth(int argc, char** argv);  // rocking record synth (synth.cpp)
 int cmd_spectrum(int argc, char** argv);
 int cmd_fragility(int argc, char** argv);
+int cmd_eq27(int argc, char** argv);
 
 }  // namespace rocking::cli

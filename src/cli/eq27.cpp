@@ -1,0 +1,209 @@
+// rocking eq27: eq. 27 at scale (studies/eq27_at_scale.hpp).  Each record's
+// first collapse q on every block of a grid against eq. 27 at x = p to_k:
+// the share of non-conservative cases per to_k with its Wilson interval, and
+// the map over (alpha, p) as CSV, as text or JSON.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/options.hpp"
+#include "harness/table.hpp"
+#include "studies/eq27_at_scale.hpp"
+
+namespace rocking::cli {
+
+namespace {
+
+using studies::Eq27Study;
+using studies::kHalfPeriods;
+
+const char* kUsage =
+    "usage: rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q] "
+    "[--unit U [--dt DT]] [--output CSV] [--json]";
+
+const char* kVerdict =
+    "non-conservative: the record overturns the block at a q below eq. 27's at x = p to_k "
+    "(collapse q < q2_n6(p to_k)); a record that never overturns the block up to q_max is censored "
+    "and counted as conservative";
+
+std::string g4(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
+
+std::string g7(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.7g", v);
+    return text;
+}
+
+double bounded(const Args& a, const std::string& flag, double fallback, double lo, double hi, const std::string& range) {
+    if (!a.values.count(flag)) return fallback;
+    const double v = number(flag, a.values.at(flag));
+    if (!(v > lo && v <= hi)) throw UsageError(flag + ": must be in " + range + " (got " + g7(v) + ")");
+    return v;
+}
+
+studies::Eq27Grid grid_from(const Args& a) {
+    studies::Eq27Grid g;
+    if (a.values.count("--alpha")) {
+        g.alphas = number_list("--alpha", a.values.at("--alpha"));
+        if (g.alphas.empty() || g.alphas.size() > 50) throw UsageError("--alpha: from 1 to 50 values");
+        for (double v : g.alphas)
+            if (!(v > 0 && v < 0.7)) throw UsageError("--alpha: each must be in (0, 0.7) (got " + g7(v) + ")");
+    }
+    g.p_min = bounded(a, "--p-min", g.p_min, 0.01, 1000, "(0.01, 1000] rad/s");
+    g.p_max = bounded(a, "--p-max", g.p_max, 0.01, 1000, "(0.01, 1000] rad/s");
+    if (g.p_max < g.p_min) throw UsageError("--p-max: must not be below --p-min (" + g7(g.p_min) + ")");
+    if (a.values.count("--p-points")) g.p_points = integer("--p-points", a.values.at("--p-points"));
+    if (g.p_points < 1 || g.p_points > 1000) throw UsageError("--p-points: must be between 1 and 1000");
+    if (g.p_points > 1 && g.p_max == g.p_min) throw UsageError("--p-points: more than 1 needs --p-max above --p-min");
+    return g;
+}
+
+studies::Eq27Options options_from(const Args& a) {
+    studies::Eq27Options o;
+    o.grid = grid_from(a);
+    // Beyond 1e4 the scaled record reaches thousands of g: no physical input.
+    o.ida.q_max = bounded(a, "--q-max", o.ida.q_max, o.ida.q_min, 1e4, "(1, 10000]");
+    return o;
+}
+
+struct Loaded {
+    std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
+    std::vector<studies::Eq27Record> records;
+};
+
+Loaded load(const std::vector<std::string>& files, const Args& a) {
+    Loaded l;
+    for (const std::string& path : files) {
+        const records::Record r = load_record(path, a);
+        const records::HalfPeriods h = half_periods_of(r, path);
+        l.inputs.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
+        if (!(l.inputs.back()->peak() > 0)) throw std::runtime_error(path + ": the record never moves (PGA 0)");
+        l.records.push_back({l.inputs.back().get(), h.to});
+    }
+    return l;
+}
+
+// The definitions with no non-conservative case anywhere on the grid.
+std::string conservative_list(const Eq27Study& s) {
+    std::string text;
+    for (int k = 0; k < kHalfPeriods; ++k)
+        if (s.shares[k].non_conservative == 0) text += (text.empty() ? "to_" : ", to_") + std::to_string(k + 1);
+    return text.empty() ? "none" : text;
+}
+
+int blocks_hit(const Eq27Study& s, int k) {
+    int n = 0;
+    for (const studies::Eq27Cell& c : s.map) n += c.non_conservative[k] > 0;
+    return n;
+}
+
+std::string share_text(const Eq27Study& s, int k) {
+    const studies::Eq27Share& sh = s.shares[k];
+    return std::to_string(sh.non_conservative) + "/" + std::to_string(sh.cases) + " = " + g4(sh.share) + " [" +
+           g4(sh.interval.lo) + ", " + g4(sh.interval.hi) + "]";
+}
+
+std::string censored_text(const Eq27Study& s, double q_max) {
+    return std::to_string(s.censored) + " of " + std::to_string(s.cases.size()) +
+           " cases censored (no overturning up to q_max = " + g7(q_max) + "), counted as conservative";
+}
+
+void print_text(const std::vector<std::string>& files, const studies::Eq27Options& o, const Eq27Study& s) {
+    std::printf("eq. 27 at scale: %zu record(s) x %zu block(s)\n  blocks: %s\n  model: %s\n  IDA: %s\n  %s\n  %s\n",
+                files.size(), s.blocks.size(), o.grid.describe().c_str(), o.ida.describe_model().c_str(),
+                o.ida.describe_grid().c_str(), kVerdict, censored_text(s, o.ida.q_max).c_str());
+    std::printf("  to_k   non-conservative = share [%g %% Wilson interval]   blocks with any\n", 100 * s.level);
+    for (int k = 0; k < kHalfPeriods; ++k)
+        std::printf("  to_%-2d  %s   %d/%zu\n", k + 1, share_text(s, k).c_str(), blocks_hit(s, k), s.blocks.size());
+    std::printf("  conservative on every block and record: %s\n", conservative_list(s).c_str());
+}
+
+std::string counts_json(const std::array<int, kHalfPeriods>& counts) {
+    std::string text = "[";
+    for (int k = 0; k < kHalfPeriods; ++k) text += (k ? ", " : "") + std::to_string(counts[k]);
+    return text + "]";
+}
+
+void print_json(const std::vector<std::string>& files, const studies::Eq27Options& o, const Eq27Study& s) {
+    std::ostringstream js;
+    js << "{\"model\": " << json_string(o.ida.describe_model()) << ", \"ida\": " << json_string(o.ida.describe_grid())
+       << ", \"q_max\": " << json_number(o.ida.q_max) << ", \"blocks\": " << json_string(o.grid.describe())
+       << ", \"verdict\": " << json_string(kVerdict) << ", \"level\": " << json_number(s.level) << ", \"files\": [";
+    for (std::size_t i = 0; i < files.size(); ++i) js << (i ? ", " : "") << json_string(files[i]);
+    js << "], \"cases\": " << s.cases.size() << ", \"censored\": " << s.censored << ", \"shares\": [";
+    for (int k = 0; k < kHalfPeriods; ++k) {
+        const studies::Eq27Share& sh = s.shares[k];
+        js << (k ? ", " : "") << "{\"k\": " << k + 1 << ", \"non_conservative\": " << sh.non_conservative
+           << ", \"cases\": " << sh.cases << ", \"share\": " << json_number(sh.share) << ", \"interval\": ["
+           << json_number(sh.interval.lo) << ", " << json_number(sh.interval.hi)
+           << "], \"blocks_with_any\": " << blocks_hit(s, k) << "}";
+    }
+    js << "], \"map\": [";
+    for (std::size_t b = 0; b < s.map.size(); ++b) {
+        const studies::Eq27Cell& c = s.map[b];
+        js << (b ? ", " : "") << "{\"alpha\": " << json_number(c.block.alpha) << ", \"p\": " << json_number(c.block.p)
+           << ", \"records\": " << c.records << ", \"censored\": " << c.censored
+           << ", \"non_conservative\": " << counts_json(c.non_conservative) << "}";
+    }
+    js << "]}\n";
+    std::cout << js.str();
+}
+
+void write_csv(const std::string& csv, const std::vector<std::string>& files, const studies::Eq27Options& o,
+               const Eq27Study& s) {
+    std::vector<std::string> columns = {"alpha", "p", "records", "censored"};
+    for (int k = 1; k <= kHalfPeriods; ++k) columns.push_back("nc_to" + std::to_string(k));
+    harness::Table t(columns);
+    t.note("command", "rocking eq27");
+    t.note("model", o.ida.describe_model());
+    t.note("solver", dynamics::solver_name(o.ida.model.solver.kind));
+    std::string inputs;
+    for (const std::string& f : files) inputs += (inputs.empty() ? "" : "; ") + f;
+    t.note("inputs", inputs);
+    t.note("grid", o.grid.describe());
+    t.note("ida", o.ida.describe_grid());
+    t.note("verdict", kVerdict);
+    t.note("censored", censored_text(s, o.ida.q_max));
+    for (int k = 0; k < kHalfPeriods; ++k)
+        t.note("share to_" + std::to_string(k + 1) + " (" + g7(100 * s.level) + " % Wilson)", share_text(s, k));
+    t.note("columns", "per block (alpha, p rad/s): records, those censored, and nc_toK the records non-conservative "
+                      "for to_K");
+    for (const studies::Eq27Cell& c : s.map) {
+        t.row().add(c.block.alpha).add(c.block.p).add(c.records).add(c.censored);
+        for (int k = 0; k < kHalfPeriods; ++k) t.add(c.non_conservative[k]);
+    }
+    try {
+        t.write(csv);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(std::string("--output: ") + e.what());
+    }
+}
+
+}  // namespace
+
+int cmd_eq27(int argc, char** argv) {
+    int first = 0;
+    const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
+    const Args a = parse(argc, argv, first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--unit", "--dt",
+                                             "--output"});
+    const studies::Eq27Options o = options_from(a);
+    if (a.values.count("--output") && a.values.at("--output").empty()) throw UsageError("--output: an empty file name");
+    if (files.size() > 1000) throw UsageError("at most 1000 files");
+    const Loaded l = load(files, a);
+    const Eq27Study s = studies::eq27_at_scale(l.records, o);
+    if (a.values.count("--output")) write_csv(a.values.at("--output"), files, o, s);
+    if (a.json) print_json(files, o, s);
+    else print_text(files, o, s);
+    return 0;
+}
+
+}  // namespace rocking::cli
