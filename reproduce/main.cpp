@@ -151,10 +151,36 @@ int bless(const Options& o) {
     const bool same = compare_scene(o, scene, dir, outcome, true);
     std::cout << (same ? "  all within tolerance (" + outcome.detail + ")\n" : "  " + outcome.detail + "\n");
     const harness::ToleranceSpec spec = harness::ToleranceSpec::read(spec_path);
+    // A 'reference' column holds the reference method's verdicts, which a
+    // plain run writes as "not checked": those files come from a --reference
+    // run (the same values elsewhere), and the checks below then hold the
+    // verdicts to the reference method, the plain run to "not checked".
+    std::string source = dir;
+    if (spec.has_reference_columns()) {
+        if (reference_of(scene).empty()) {
+            std::cerr << "reproduce --bless: " << spec_path << " has 'reference' columns but " << scene
+                      << " has no reference method\n";
+            return 2;
+        }
+        source = o.out + "/" + scene + "-reference";
+        const std::string none = o.out + "/.bless-no-expected";
+        fs::create_directories(none);
+        const std::string cmd = quote(self_path()) + " --reference --no-plot --out " + quote(o.out) + " --expected " +
+                                quote(none) + " " + scene + " >/dev/null";
+        std::cout << "the reference method's verdicts: " << cmd << "\n";
+        (void)std::system(cmd.c_str());  // differs from the empty expected folder by design
+        fs::remove_all(none);
+        for (const std::string& file : spec.files())
+            if (!fs::exists(source + "/" + file)) {
+                std::cerr << "reproduce --bless: the reference run wrote no " << source + "/" + file << "\n";
+                return 1;
+            }
+    }
     const std::string backup = target + ".before-bless";
     fs::remove_all(backup);
     fs::copy(target, backup, fs::copy_options::recursive);
-    for (const std::string& file : spec.files()) fs::copy_file(dir + "/" + file, target + "/" + file, fs::copy_options::overwrite_existing);
+    for (const std::string& file : spec.files())
+        fs::copy_file(source + "/" + file, target + "/" + file, fs::copy_options::overwrite_existing);
     // The new values must pass the scene's independent checks: its second
     // implementation (independent.py) and its second method at a much
     // tighter tolerance (--reference), each one the scene has.

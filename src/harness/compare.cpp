@@ -67,6 +67,13 @@ ToleranceSpec ToleranceSpec::read(const std::string& path) {
 
 std::vector<std::string> ToleranceSpec::files() const { return order_; }
 
+bool ToleranceSpec::has_reference_columns() const {
+    for (const auto& [file, columns] : rules_)
+        for (const auto& [column, t] : columns)
+            if (t.reference) return true;
+    return false;
+}
+
 const Tolerance& ToleranceSpec::of(const std::string& file, const std::string& column) const {
     const auto f = rules_.find(file);
     if (f == rules_.end()) throw std::runtime_error(path_ + ": no rule for file " + file);

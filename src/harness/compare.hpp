@@ -35,6 +35,8 @@ public:
     static ToleranceSpec read(const std::string& path);
 
     std::vector<std::string> files() const;
+    // Whether any column is of the 'reference' kind (its values come from a --reference run).
+    bool has_reference_columns() const;
     // Throws std::runtime_error when the file has no rule for the column and no '*'.
     const Tolerance& of(const std::string& file, const std::string& column) const;
 
