@@ -57,5 +57,6 @@ void run_table2(SceneContext& ctx);
 void run_fig11(SceneContext& ctx);
 void run_fig12(SceneContext& ctx);
 void run_fig08(SceneContext& ctx);
+void run_spectrum(SceneContext& ctx);
 
 }  // namespace rocking::scenes
