@@ -181,11 +181,7 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
         t.row().add(c.block.alpha).add(c.block.p).add(c.records).add(c.censored);
         for (int k = 0; k < kHalfPeriods; ++k) t.add(c.non_conservative[k]);
     }
-    try {
-        t.write(csv);
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(std::string("--output: ") + e.what());
-    }
+    write_output(t, csv);
 }
 
 }  // namespace

@@ -34,16 +34,6 @@ std::string g7(double v) {
 }
 
 // The files: every argument before the first option.
-std::vector<std::string> files_from(int argc, char** argv, int& first_option) {
-    std::vector<std::string> files;
-    int i = 2;
-    for (; i < argc && std::string(argv[i]).rfind("--", 0) != 0; ++i) files.push_back(argv[i]);
-    if (files.empty()) throw UsageError(argc > 2 ? "FILE comes first, before '" + std::string(argv[2]) + "': " + kUsage
-                                                 : std::string(kUsage));
-    first_option = i;
-    return files;
-}
-
 std::vector<double> list_in(const Args& a, const std::string& flag, double lo, double hi, const std::string& range) {
     if (!a.values.count(flag)) throw UsageError(flag + " is required");
     const std::vector<double> values = number_list(flag, a.values.at(flag));
@@ -203,18 +193,14 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
         for (std::size_t k = 0; k < files.size(); ++k)
             t.row().add(f.block.alpha).add(f.block.p).add(files[k]).add(f.idas[k].point.q)
                 .add(f.idas[k].point.collapsed).add(interval_list(f.idas[k]));
-    try {
-        t.write(csv);
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(std::string("--output: ") + e.what());
-    }
+    write_output(t, csv);
 }
 
 }  // namespace
 
 int cmd_fragility(int argc, char** argv) {
     int first = 0;
-    const std::vector<std::string> files = files_from(argc, argv, first);
+    const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
     const Args a = parse(argc, argv, first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
                                              "--dt", "--output"});
     const std::vector<double> alphas = list_in(a, "--alpha", 0, 0.7, "(0, 0.7)");

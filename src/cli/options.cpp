@@ -137,6 +137,14 @@ std::vector<std::string> file_arguments(int argc, char** argv, int& first_option
     return files;
 }
 
+void write_output(const harness::Table& table, const std::string& path) {
+    try {
+        table.write(path);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(std::string("--output: ") + e.what());
+    }
+}
+
 Args parse(int argc, char** argv, int first, const std::vector<std::string>& allowed) {
     Args a;
     for (int i = first; i < argc; ++i) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/table.hpp"
 #include "pulse/pulse_train.hpp"
 #include "dynamics/simulate.hpp"
 #include "records/measures.hpp"
@@ -46,6 +47,8 @@ std::string file_argument(int argc, char** argv, int at, const std::string& usag
 // index.  Throws UsageError (with the usage) when there is none.
 std::vector<std::string> file_arguments(int argc, char** argv, int& first_option, const std::string& usage);
 Args parse(int argc, char** argv, int first, const std::vector<std::string>& allowed);
+// table written to path (atomically), a failure named as --output's.
+void write_output(const harness::Table& table, const std::string& path);
 PulseTrain train_from(const Args& a, std::string& equation);
 double x_from(const Args& a);
 std::string four(double v);

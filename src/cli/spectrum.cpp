@@ -226,11 +226,7 @@ void write_csv(const std::string& csv, const std::string& path, const records::R
             if (std::isnan(pt.t_overturn)) t.add("-");
             else t.add(pt.t_overturn);
         }
-    try {
-        t.write(csv);
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(std::string("--output: ") + e.what());
-    }
+    write_output(t, csv);
 }
 
 // A string in a gnuplot script: single quotes, inner ones doubled, and only
