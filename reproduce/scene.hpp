@@ -58,5 +58,6 @@ void run_fig11(SceneContext& ctx);
 void run_fig12(SceneContext& ctx);
 void run_fig08(SceneContext& ctx);
 void run_spectrum(SceneContext& ctx);
+void run_fragility(SceneContext& ctx);
 
 }  // namespace rocking::scenes
