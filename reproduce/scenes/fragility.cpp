@@ -5,6 +5,7 @@
 // per to_k over the same points (no IDA is run twice).
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <atomic>
 #include <cstdio>
 #include <memory>
@@ -197,8 +198,13 @@ void run_fragility(SceneContext& ctx) {
         }
     }
 
-    harness::Table ft({"alpha", "p", "records", "collapsed", "censored", "median", "beta", "log_likelihood",
-                       "median_lo", "median_hi", "beta_lo", "beta_hi", "resamples", "seed", "level"});
+    // A block whose points include an ill-conditioned first collapse (placed by
+    // rounding within its grid gap) has its fit in the *_ill columns, held to
+    // that gap's effect (TOLERANCES); the others' to the bisection's 1e-6.
+    harness::Table ft({"alpha", "p", "records", "collapsed", "censored", "ill_conditioned", "median", "beta",
+                       "log_likelihood", "median_lo", "median_hi", "beta_lo", "beta_hi", "median_ill", "beta_ill",
+                       "log_likelihood_ill", "median_lo_ill", "median_hi_ill", "beta_lo_ill", "beta_hi_ill",
+                       "resamples", "seed", "level"});
     ft.note("scene", "fragility: the lognormal fragility curve of each block over the records, by maximum likelihood");
     ft.note("model", model);
     ft.note("solver",
@@ -207,18 +213,27 @@ void run_fragility(SceneContext& ctx) {
     ft.note("inputs", inputs_text);
     ft.note("columns",
             "P(overturn | q) = Phi(ln(q / median) / beta); median_lo..hi, beta_lo..hi: the bootstrap's percentile "
-            "interval; '-' where the block has no fit");
+            "interval; '-' where the block has no fit; ill_conditioned: the block's first collapses whose bracket is "
+            "ill-conditioned (fragility_points.csv), whose fit is then in the *_ill columns");
     for (const BlockFragility& f : study) {
-        int collapsed = 0;
+        int collapsed = 0, ill = 0;
         for (const studies::IdaPoint& p : f.points) collapsed += p.collapsed;
+        for (const Ida& ida : f.idas)
+            ill += ida.point.collapsed && !ida.intervals.empty() && ida.intervals.front().has_lower &&
+                   ida.intervals.front().lower_check.confirmation == Confirmation::ill_conditioned;
         ft.row().add(label(f.block.alpha)).add(label(f.block.p)).add(static_cast<int>(f.points.size()));
-        ft.add(collapsed).add(static_cast<int>(f.points.size()) - collapsed);
-        if (f.fitted) ft.add(f.fit.median).add(f.fit.beta).add(f.fit.log_likelihood);
-        else ft.add("-").add("-").add("-");
+        ft.add(collapsed).add(static_cast<int>(f.points.size()) - collapsed).add(ill);
+        for (int set = 0; set < 2; ++set) {  // 0: the well-conditioned columns, 1: the *_ill ones
+            const bool mine = (set == 1) == (ill > 0);
+            if (mine && f.fitted) ft.add(f.fit.median).add(f.fit.beta).add(f.fit.log_likelihood);
+            else ft.add("-").add("-").add("-");
+            if (mine && f.bootstrapped)
+                ft.add(f.interval.median.lo).add(f.interval.median.hi).add(f.interval.beta.lo).add(f.interval.beta.hi);
+            else ft.add("-").add("-").add("-").add("-");
+        }
         if (f.bootstrapped)
-            ft.add(f.interval.median.lo).add(f.interval.median.hi).add(f.interval.beta.lo).add(f.interval.beta.hi)
-                .add(f.interval.resamples).add(std::to_string(f.interval.seed)).add(f.interval.level);
-        else ft.add("-").add("-").add("-").add("-").add("-").add("-").add("-");
+            ft.add(f.interval.resamples).add(std::to_string(f.interval.seed)).add(f.interval.level);
+        else ft.add("-").add("-").add("-");
         if (!f.fitted) ft.note("no fit alpha " + label(f.block.alpha) + " p " + label(f.block.p), f.no_fit);
     }
 
@@ -233,6 +248,35 @@ void run_fragility(SceneContext& ctx) {
             "a case (record, block) is non-conservative for k when collapse q < eq. 27's q; a censored record never "
             "is (" + std::to_string(eq27.censored) + " censored cases); " + wil +
                 "; blocks_with_any: blocks on which at least one record is non-conservative");
+    // How near a verdict is to flipping: the smallest |ln(collapse q / eq. 27's q)| over the collapsed cases.
+    // The ill-conditioned first collapses, placed within their grid gap, apart.
+    double margin = 1e300, margin_ill = 1e300;
+    std::string margin_at;
+    for (const studies::Eq27Case& c : eq27.cases) {
+        if (!c.point.collapsed) continue;
+        const Ida& ida = study[c.block].idas[c.record];
+        const bool ill = ida.intervals.front().has_lower &&
+                         ida.intervals.front().lower_check.confirmation == Confirmation::ill_conditioned;
+        for (int k = 0; k < studies::kHalfPeriods; ++k) {
+            const double m = std::fabs(std::log(c.point.q / c.q_eq27[k]));
+            if (ill) {
+                margin_ill = std::min(margin_ill, m);
+                continue;
+            }
+            if (m < margin) {
+                margin = m;
+                margin_at = rows[c.record].file + " alpha " + label(kBlocks[c.block].alpha) + " p " +
+                            label(kBlocks[c.block].p) + " to_" + std::to_string(k + 1);
+            }
+        }
+    }
+    char mg[64], mgi[64];
+    std::snprintf(mg, sizeof mg, "%.3g", margin);
+    std::snprintf(mgi, sizeof mgi, "%.3g", margin_ill);
+    et.note("margin", std::string("the smallest |ln(collapse q / eq. 27's q)| over the collapsed cases with a "
+                                  "well-conditioned first collapse: ") + mg + " (" + margin_at + "); over those with an "
+                                  "ill-conditioned one: " + (margin_ill < 1e300 ? mgi : "none") +
+                          "; a verdict flips only if a collapse q moves by that much");
     for (int k = 0; k < studies::kHalfPeriods; ++k) {
         const studies::Eq27Share& s = eq27.shares[k];
         int with_any = 0;
