@@ -139,7 +139,7 @@ void run_fragility(SceneContext& ctx) {
     const std::string grid = o.ida.describe_grid() + "; q = PGA/(alpha g), the record scaled (studies::scaled)";
     const std::string checks = o.ida.describe_checks() + ", in every run (the verdict is part of the result)";
     const std::string reference_text =
-        ctx.reference() ? "reference: both ends of every confirmed first-collapse bracket re-simulated by "
+        ctx.reference() ? "both ends of every confirmed first-collapse bracket re-simulated by "
                           "records::collapses_at with GSL rk8pd at rtol = atol = 1e-13 alpha (table1_check) on the "
                           "record scaled to each end's q; yes when it sees the same bracket"
                         : "reference column 'not checked' (see reproduce --reference fragility)";
