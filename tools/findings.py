@@ -1001,6 +1001,42 @@ S12 = "fig12/fig12_summary.csv"
 P12 = "fig12/fig12_points.csv"
 
 
+FE = "fragility/fragility_eq27.csv"
+
+
+@entry(id="F11b", section="fig11", scenes=["fragility"],
+       title="Scaled to collapse, to_5 is non-conservative in a quarter of the cases",
+       where="Section 4, Figure 11 and its conclusion on to_5",
+       printed="\"[...] in nearly all the cases analyzed, the resulting formulation provides a conservative (i.e., "
+               "safe) estimate for structural verification.\"",
+       measured="each real record here (not the paper's) scaled until it first overturns each of four blocks (α 0.1, "
+                "0.2 × p 1.5, 3 rad/s; incremental dynamic analysis, every change of outcome bisected to 1e-6, the "
+                "first collapse's bracket checked by the input times 1 ± 1e-13 and GSL rk8pd at 1e-13; linearised "
+                "eq. 3, exact solver, Housner's restitution, overturning at any time); a case is non-conservative "
+                "when that collapse q is below eq. 27's q at x = p·to_k. Figure 11 has one block per record, the p "
+                "of Table 1's search; here every record meets every block.",
+       tests=["reproduce_fragility", "independent_fragility", "reference_fragility", "Eq27AtScale.ACensoredRecordCountsAsConservativeAndInTheDenominator"],
+       command="build/reproduce fragility && cat out/fragility/fragility_eq27.csv",
+       stands="fails",
+       notes=["The Wilson interval takes the cases as independent; the blocks share the records, so it understates "
+              "the uncertainty. `rocking eq27` over the 22 records of all three folders and 50 blocks (α 0.05-0.25, "
+              "p 0.5-10 rad/s) gives to_5 non-conservative in 262 of 1100 cases (`docs/eq27_at_scale.md`)."])
+def _f11b(d):
+    rows = {int(r["k"]): r for r in d.rows(FE)}
+    five, safe = rows[5], [k for k, r in rows.items() if r["non_conservative"] == "0"]
+    worst = max(rows.values(), key=lambda r: float(r["share"]))
+    label = "fails" if float(five["wilson_lo"]) > 0.05 else "holds"
+    return dict(label=label,
+                verdict=f"with to_5 eq. 27 is non-conservative in {five['non_conservative']} of {five['cases']} cases "
+                        f"({pct(five['share'])}; 95 % Wilson interval {pct(five['wilson_lo'])} to {pct(five['wilson_hi'])}), "
+                        f"far from \"nearly all\" conservative; only "
+                        + ", ".join(f"to_{k}" for k in sorted(safe))
+                        + f" are conservative in every case (upper bound {pct(rows[safe[0]]['wilson_hi']) if safe else '-'}), "
+                        f"and to_{worst['k']} is the worst ({worst['non_conservative']} of {worst['cases']}).",
+                evidence=[ev(FE, "row `k = 5`", "non_conservative", five["non_conservative"]),
+                          ev(FE, "row `k = 5`", "wilson_lo", g(five["wilson_lo"], 4))])
+
+
 @entry(id="F12", section="fig12", scenes=["fig12", "errata"],
        title="The code's q = 2 is not conservative for p·to > 0.7",
        where="Section 4, Figure 12",
