@@ -37,11 +37,7 @@ std::string g4(double v) {
     return text;
 }
 
-std::string g7(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.7g", v);
-    return text;
-}
+std::string g7(double v) { return significant(v, 7); }
 
 double bounded(const Args& a, const std::string& flag, double fallback, double lo, double hi, const std::string& range) {
     if (!a.values.count(flag)) return fallback;

@@ -27,11 +27,7 @@ const char* kUsage =
     "usage: rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N] "
     "[--bootstrap K --seed S] [--unit U [--dt DT]] [--output CSV] [--json]";
 
-std::string g7(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.7g", v);
-    return text;
-}
+std::string g7(double v) { return significant(v, 7); }
 
 // The files: every argument before the first option.
 std::vector<double> list_in(const Args& a, const std::string& flag, double lo, double hi, const std::string& range) {

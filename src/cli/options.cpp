@@ -196,6 +196,12 @@ double x_from(const Args& a) {
 
 // A value to 4 decimals, in exponent form from 1e9 on (a record scaled
 // absurdly printed 300 digits).
+std::string significant(double v, int n) {
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*g", n, v);
+    return text;
+}
+
 std::string four(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, std::fabs(v) < 1e9 ? "%.4f" : "%.4e", v);

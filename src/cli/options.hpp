@@ -52,6 +52,8 @@ void write_output(const harness::Table& table, const std::string& path);
 PulseTrain train_from(const Args& a, std::string& equation);
 double x_from(const Args& a);
 std::string four(double v);
+// v to n significant digits (%.*g), as the messages and tables of several commands print it.
+std::string significant(double v, int n);
 records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path);
 // Refuses, naming the file, a record whose velocity (sum of |a| dt) overflows a double.
 void refuse_overflowing_velocity(const records::Record& r, const std::string& path);

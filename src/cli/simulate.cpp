@@ -121,19 +121,14 @@ int cmd_simulate(int argc, char** argv) {
         records::Record r = load_record(a.values.at("--record"), a, "--record-dt");
         std::vector<double> g = r.in_g(kGravity);
         const double peak = r.pga() / kGravity;
-        auto brief = [](double v) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%.6g", v);
-            return std::string(text);
-        };
-        std::string name = r.name + " (" + std::to_string(g.size()) + " samples, dt = " + brief(r.dt) + " s, PGA " +
-                           brief(peak) + " g";
+        std::string name = r.name + " (" + std::to_string(g.size()) + " samples, dt = " + significant(r.dt, 6) + " s, PGA " +
+                           significant(peak, 6) + " g";
         if (has("--pga") || has("--q")) {
             const double pga = pga_or_q();
             if (!(pga > 0)) throw UsageError("the PGA must be > 0");
             if (!(peak > 0)) throw UsageError(a.values.at("--record") + ": the record is zero throughout and cannot be scaled");
             for (double& v : g) v *= pga / peak;
-            name += ", scaled to " + brief(pga) + " g";
+            name += ", scaled to " + significant(pga, 6) + " g";
         }
         input = std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
     } else if (one_sine) {
@@ -141,16 +136,11 @@ int cmd_simulate(int argc, char** argv) {
         // The pulse's bounds (why: ground_input.hpp), said in the options' terms.
         const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
         const double strongest = OneSinePulse::strongest_ap_over_threshold * model.uplift_threshold();
-        auto g6 = [](double v) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%.6g", v);
-            return std::string(text);
-        };
         if (num("--wp") > 0 && num("--wp") < slowest)
-            throw UsageError("--wp: must be at least 1e-6 p = " + g6(slowest) + " rad/s (got " +
+            throw UsageError("--wp: must be at least 1e-6 p = " + significant(slowest, 6) + " rad/s (got " +
                              a.values.at("--wp") + "): slower pulses lift the block by less than the rounding of the input");
         if (num("--ap") > strongest)
-            throw UsageError("--ap: must be at most 1e9 times the uplift threshold, " + g6(strongest) +
+            throw UsageError("--ap: must be at most 1e9 times the uplift threshold, " + significant(strongest, 6) +
                              " g (got " + a.values.at("--ap") + "): above it the fall time drifts from the closed form");
         try {
             input = std::make_unique<OneSinePulse>(num("--ap"), num("--wp"), model.uplift_threshold());

@@ -39,11 +39,7 @@ struct Study {
     records::CollapseResult table1;
 };
 
-std::string g7(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.7g", v);
-    return text;
-}
+std::string g7(double v) { return significant(v, 7); }
 
 std::vector<double> alphas_from(const std::string& text) {
     std::vector<double> out;
