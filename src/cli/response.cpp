@@ -30,11 +30,14 @@ int cmd_response(int argc, char** argv) {
     auto state = [&](double tau) { return at_collapse ? collapse_response(train, x, tau) : response(train, x, q, tau); };
     // A q off the collapse q makes theta grow like e^{x t/to}: past the double
     // range the rows stop, and the output says where, rather than print inf.
-    int last = steps;
-    for (int k = 0; k <= steps && last == steps; ++k) {
+    // The rows are kept, so that each state is evaluated once.
+    std::vector<ResponseState> rows;
+    for (int k = 0; k <= steps; ++k) {
         const ResponseState s = state(train.t_fin() * k / steps);
-        if (!std::isfinite(s.phi) || !std::isfinite(s.dphi)) last = k - 1;
+        if (!std::isfinite(s.phi) || !std::isfinite(s.dphi)) break;
+        rows.push_back(s);
     }
+    const int last = static_cast<int>(rows.size()) - 1;
     const double t_end = last < steps ? train.t_fin() * (last + 1) / steps : NAN;
     const std::string why = "theta/alpha leaves the double range (beyond 1.8e308) on the linearised equation";
     if (a.json) {
@@ -54,7 +57,7 @@ int cmd_response(int argc, char** argv) {
     }
     for (int k = 0; k <= last; ++k) {
         const double tau = train.t_fin() * k / steps;
-        const ResponseState s = state(tau);
+        const ResponseState& s = rows[k];
         if (a.json)
             std::cout << (k ? ", " : "") << "[" << json_number(tau) << ", " << json_number(s.phi)
                       << ", " << json_number(s.dphi) << "]";
