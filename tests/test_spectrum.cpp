@@ -326,6 +326,38 @@ TEST(Spectrum, AScaledInputIsTheInputTimesItsFactor) {
     EXPECT_THROW(scaled(sine, NAN), std::invalid_argument);
 }
 
+TEST(Spectrum, AScaledRecordIsTheRecordBuiltFromScaledSamples) {
+    // scaled_by skips the constructor's checks and peak scans: its peaks
+    // (which first_above reads to skip quiet stretches) must be those the
+    // constructor finds on the scaled samples, bit for bit.  200 samples over
+    // several of its 32-sample blocks, with a loud sample on a block's edge
+    // and a louder one in the last block (the quiet-to-the-end test).
+    std::vector<double> samples;
+    for (int k = 0; k < 200; ++k) samples.push_back(0.01 * std::sin(0.37 * k) * (k % 7 == 3 ? 3.0 : 1.0));
+    samples[64] = -0.04;
+    samples[190] = 0.5;
+    const dynamics::SampledInput record(samples, 0.01, "record");
+    for (double factor : {1 + 1e-13, 0.7, 3.0, 1.0 / 3.0, 1e-300, 1e300}) {
+        std::vector<double> times = samples;
+        for (double& a : times) a *= factor;
+        const dynamics::SampledInput built(times, 0.01, "built");
+        const dynamics::SampledInput fast = record.scaled_by(factor, "fast");
+        EXPECT_EQ(fast.peak(), built.peak()) << factor;
+        EXPECT_EQ(fast.samples(), built.samples()) << factor;
+        EXPECT_EQ(fast.describe(), "fast");
+        // Thresholds just under and over every sample's size, scaled or not:
+        // a peak left unscaled moves some crossing or quiet verdict.
+        std::vector<double> thresholds;
+        for (std::size_t k = 0; k < samples.size(); ++k)
+            for (double size : {std::fabs(samples[k]), std::fabs(times[k])})
+                for (double side : {1 - 1e-9, 1 + 1e-9}) thresholds.push_back(size * side);
+        for (double thr : thresholds)
+            for (double t : {0.0, 0.305, 0.64, 1.2})
+                ASSERT_EQ(fast.first_above(t, fast.t_end(), thr), built.first_above(t, built.t_end(), thr))
+                    << factor << " " << thr << " " << t;
+    }
+}
+
 TEST(Spectrum, BadOptionsAreRefused) {
     const SinglePulse pulse;
     const PulseInput input = pulse.input();

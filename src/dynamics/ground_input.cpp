@@ -79,6 +79,20 @@ SampledInput::SampledInput(std::vector<double> samples_g, double dt, std::string
     for (std::size_t j = tail_peak_.size() - 1; j-- > 0;) tail_peak_[j] = std::max(tail_peak_[j], tail_peak_[j + 1]);
 }
 
+SampledInput SampledInput::scaled_by(double factor, std::string name) const {
+    SampledInput out;
+    out.samples_ = samples_;
+    for (double& a : out.samples_) a *= factor;
+    out.dt_ = dt_;
+    out.name_ = std::move(name);
+    out.peak_ = peak_ * factor;
+    out.block_peak_ = block_peak_;
+    for (double& a : out.block_peak_) a *= factor;
+    out.tail_peak_ = tail_peak_;
+    for (double& a : out.tail_peak_) a *= factor;
+    return out;
+}
+
 std::size_t SampledInput::piece_index(double t) const {
     const std::size_t last = samples_.size() - 1;
     // t / dt can round either way at a sample time: the piece must satisfy

@@ -114,10 +114,18 @@ public:
     std::size_t piece_index(double t) const;
     std::size_t size() const { return samples_.size(); }
     const std::vector<double>& samples() const { return samples_; }
+    // The record times `factor` (finite, > 0; not checked here, the caller's
+    // contract), named `name`.  Equal to SampledInput(samples times factor,
+    // dt, name) bit for bit: a positive factor keeps every maximum's place and
+    // rounding is monotone, so the peaks scale as the samples do.  An IDA
+    // scales one record hundreds of times, and rebuilding (checking every
+    // sample, finding the peaks) cost more than the run itself.
+    SampledInput scaled_by(double factor, std::string name) const;
 
 private:
+    SampledInput() = default;
     std::vector<double> samples_;
-    double dt_;
+    double dt_ = 0;
     std::string name_;
     double peak_ = 0;
     // Largest |a| over samples [kBlock j, kBlock (j + 1)]: first_above()

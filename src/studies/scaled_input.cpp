@@ -46,12 +46,9 @@ private:
 std::unique_ptr<GroundInput> scaled(const GroundInput& input, double factor) {
     if (!(std::isfinite(factor) && factor > 0))
         throw std::invalid_argument("scaled input: the factor must be finite and > 0 (got " + factor_text(factor) + ")");
-    if (const auto* record = dynamic_cast<const dynamics::SampledInput*>(&input)) {
-        std::vector<double> samples = record->samples();
-        for (double& a : samples) a *= factor;
-        return std::make_unique<dynamics::SampledInput>(std::move(samples), record->dt(),
-                                                        record->describe() + ", scaled by " + factor_text(factor));
-    }
+    if (const auto* record = dynamic_cast<const dynamics::SampledInput*>(&input))
+        return std::make_unique<dynamics::SampledInput>(
+            record->scaled_by(factor, record->describe() + ", scaled by " + factor_text(factor)));
     return std::make_unique<ScaledView>(input, factor);
 }
 
