@@ -31,6 +31,9 @@ check "q-max too low"      "--q-max: must be in (1, 10000]" "$rocking" fragility
 status "q-max too low"     2                                 "$rocking" fragility x --alpha 0.1 --p 1 --q-max 1
 check "seed needed"        "--bootstrap needs --seed"       "$rocking" fragility x --alpha 0.1 --p 1 --bootstrap 10
 check "FILE first"         "FILE comes first, before '--alpha'" "$rocking" fragility --alpha 0.1 --p 1
+check "jobs zero"          "--jobs must be an integer from 1 to 4096 (got '0')" "$rocking" fragility x --alpha 0.1 --p 1 --jobs 0
+status "jobs zero"         2                                 "$rocking" fragility x --alpha 0.1 --p 1 --jobs 0
+check "jobs not a number"  "(got '2.5')"                    "$rocking" fragility x --alpha 0.1 --p 1 --jobs 2.5
 check "unknown option"     "unknown option '--criterion'"   "$rocking" fragility x --alpha 0.1 --p 1 --criterion overturning
 # Bad files: exit 1, the file named.
 check "missing file"       "no-such-file"                   "$rocking" fragility "$tmp/sine1.txt" no-such-file --unit g --dt 0.01 --alpha 0.1 --p 1
@@ -44,6 +47,10 @@ check "censored"           "censored at q_max = 1.5"        "${run[@]}" --alpha 
 
 # JSON: strict (no NaN or Infinity), every record and block present.
 "${run[@]}" --alpha 0.1,0.2 --p 2,4 --bootstrap 50 --seed 3 --json >"$tmp/f.json"
+# The threads change the time, never a byte.
+"${run[@]}" --alpha 0.1,0.2 --p 2,4 --bootstrap 50 --seed 3 --json --jobs 1 >"$tmp/f1.json"
+"${run[@]}" --alpha 0.1,0.2 --p 2,4 --bootstrap 50 --seed 3 --json --jobs 3 >"$tmp/f3.json"
+if cmp -s "$tmp/f1.json" "$tmp/f3.json"; then echo "ok: --jobs 1 and 3 identical"; else echo "FAIL: --jobs 1 and 3 differ"; fail=1; fi
 if $py - "$tmp/f.json" <<'PY'
 import json, sys
 def bad(c): raise ValueError(c)

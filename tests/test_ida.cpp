@@ -256,6 +256,46 @@ TEST(Ida, TheStudyFitsEachBlocksPointsFromItsRecords) {
     EXPECT_FALSE(stocky.fitted);
 }
 
+TEST(Ida, TheStudyIsTheSameOnAnyNumberOfThreads) {
+    // The batch engine hands the IDAs and fits back in order: every point,
+    // interval end, check and fit equal to the one-thread study's, bit for bit.
+    const std::vector<double> lengths = {0.3, 0.05, 0.6, 0.9, 1.2, 2.0, 0.45};
+    std::vector<PulseInput> pulses;
+    for (const double d : lengths) pulses.push_back(single_pulse(d));
+    std::vector<const dynamics::GroundInput*> inputs;
+    for (const PulseInput& in : pulses) inputs.push_back(&in);
+    FragilityStudyOptions o;
+    o.resamples = 100;
+    o.seed = 11;
+    const std::vector<BlockShape> blocks = {{0.1, 1.0}, {0.2, 0.03}, {0.15, 2.5}, {0.05, 4.0}};
+    const std::vector<BlockFragility> one = fragility_study(inputs, blocks, o);
+    for (int threads : {2, 3, 8}) {
+        o.threads = threads;
+        const std::vector<BlockFragility> many = fragility_study(inputs, blocks, o);
+        ASSERT_EQ(many.size(), one.size());
+        for (std::size_t b = 0; b < one.size(); ++b) {
+            EXPECT_EQ(many[b].block.p, one[b].block.p);
+            ASSERT_EQ(many[b].idas.size(), inputs.size());
+            for (std::size_t r = 0; r < inputs.size(); ++r) {
+                EXPECT_EQ(many[b].points[r].q, one[b].points[r].q) << threads << " threads, block " << b << ", record " << r;
+                EXPECT_EQ(many[b].points[r].collapsed, one[b].points[r].collapsed);
+                ASSERT_EQ(many[b].idas[r].intervals.size(), one[b].idas[r].intervals.size());
+                for (std::size_t k = 0; k < one[b].idas[r].intervals.size(); ++k) {
+                    EXPECT_EQ(many[b].idas[r].intervals[k].from, one[b].idas[r].intervals[k].from);
+                    EXPECT_EQ(many[b].idas[r].intervals[k].to, one[b].idas[r].intervals[k].to);
+                    EXPECT_EQ(many[b].idas[r].intervals[k].lower_check.confirmation,
+                              one[b].idas[r].intervals[k].lower_check.confirmation);
+                }
+            }
+            EXPECT_EQ(many[b].fitted, one[b].fitted);
+            EXPECT_EQ(many[b].fit.median, one[b].fit.median);
+            EXPECT_EQ(many[b].fit.beta, one[b].fit.beta);
+            EXPECT_EQ(many[b].interval.median.lo, one[b].interval.median.lo);
+            EXPECT_EQ(many[b].interval.beta.hi, one[b].interval.beta.hi);
+        }
+    }
+}
+
 TEST(Ida, RefusesWhatItCannotScale) {
     const PulseInput pulse = single_pulse(0.5);
     EXPECT_THROW(incremental_dynamic_analysis(pulse, 0.1, 0.0, IdaOptions{}), std::invalid_argument);

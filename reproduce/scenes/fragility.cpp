@@ -6,12 +6,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <atomic>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 
+#include "batch/pool.hpp"
 #include "dynamics/ground_input.hpp"
 #include "harness/compare.hpp"
 #include "harness/table.hpp"
@@ -95,39 +94,25 @@ void run_fragility(SceneContext& ctx) {
     }
     const studies::FragilityStudyOptions o = study_options();
 
-    // One study per block, each taken by the next free thread (the blocks with
-    // censored records cost most, in the bootstrap's simplex fits): each is
-    // independent and deterministic, so the threads change the time, never a value.
-    std::vector<BlockFragility> study(kBlocks.size());
+    // The study on the batch engine's threads (every (block, record) IDA a
+    // job), then the reference method's verdicts, one job a (block, record):
+    // the engine returns both in order, so the threads change the time, never a value.
+    studies::FragilityStudyOptions threaded = o;
+    threaded.threads = batch::default_threads();
+    const std::vector<BlockFragility> study = studies::fragility_study(inputs, kBlocks, threaded);
     // reference[b][r]: the reference method's verdict on record r's first-collapse bracket on block b.
     std::vector<std::vector<std::string>> reference(kBlocks.size(), std::vector<std::string>(rows.size()));
-    std::vector<std::string> errors(kBlocks.size());
-    const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), kBlocks.size()));
-    std::vector<std::thread> pool;
-    std::atomic<std::size_t> next{0};
-    for (unsigned w = 0; w < workers; ++w)
-        pool.emplace_back([&] {
-            for (std::size_t b; (b = next++) < kBlocks.size();) {
-                try {
-                    study[b] = studies::fragility_study(inputs, {kBlocks[b]}, o).front();
-                    for (std::size_t r = 0; r < rows.size(); ++r) {
-                        const Ida& ida = study[b].idas[r];
-                        std::string v = harness::kNotChecked;
-                        if (ctx.reference()) {
-                            const bool has = !ida.intervals.empty() && ida.intervals.front().has_lower &&
-                                             ida.intervals.front().lower_check.confirmation == Confirmation::confirmed;
-                            v = has ? reference_verdict(*inputs[r], ida.alpha, ida.p, ida.intervals.front().lower) : "-";
-                        }
-                        reference[b][r] = v;
-                    }
-                } catch (const std::exception& e) {
-                    errors[b] = e.what();
-                }
-            }
-        });
-    for (auto& th : pool) th.join();
-    for (const std::string& e : errors)
-        if (!e.empty()) throw std::runtime_error("fragility: " + e);
+    batch::run_ordered<std::string>(
+        kBlocks.size() * rows.size(), batch::PoolOptions{threaded.threads},
+        [&](std::size_t job) -> std::string {
+            if (!ctx.reference()) return harness::kNotChecked;
+            const Ida& ida = study[job / rows.size()].idas[job % rows.size()];
+            const bool has = !ida.intervals.empty() && ida.intervals.front().has_lower &&
+                             ida.intervals.front().lower_check.confirmation == Confirmation::confirmed;
+            return has ? reference_verdict(*inputs[job % rows.size()], ida.alpha, ida.p, ida.intervals.front().lower)
+                       : "-";
+        },
+        [&](std::size_t job, std::string& v) { reference[job / rows.size()][job % rows.size()] = v; });
 
     // Eq. 27 from the same points: points[r][b].
     std::vector<std::vector<studies::IdaPoint>> points(rows.size());

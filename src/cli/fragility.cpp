@@ -25,7 +25,7 @@ using studies::IdaInterval;
 
 const char* kUsage =
     "usage: rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N] "
-    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--output CSV] [--json]";
+    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]";
 
 std::string g7(double v) { return significant(v, 7); }
 
@@ -53,6 +53,7 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     if (o.resamples > 0 && !a.values.count("--seed"))
         throw UsageError("--bootstrap needs --seed (the interval is reproducible only from a stated seed)");
     if (a.values.count("--seed")) o.seed = seed_option("--seed", a.values.at("--seed"));
+    o.threads = jobs_option(a);
     return o;
 }
 
@@ -198,7 +199,7 @@ int cmd_fragility(int argc, char** argv) {
     int first = 0;
     const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
     const Args a = parse(argc, argv, first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
-                                             "--dt", "--output"});
+                                             "--dt", "--jobs", "--output"});
     const std::vector<double> alphas = list_in(a, "--alpha", 0, 0.7, "(0, 0.7)");
     const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
     const studies::FragilityStudyOptions o = options_from(a);

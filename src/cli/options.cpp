@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/pool.hpp"
 #include "cli/options.hpp"
 #include "harness/table.hpp"
 
@@ -116,6 +117,15 @@ std::uint64_t seed_option(const std::string& flag, const std::string& text) {
     if (seed < 1 || seed > 0xFFFFFFFFu)
         throw UsageError(flag + ": the seed must be a whole number from 1 to 4294967295 (got '" + text + "')");
     return seed;
+}
+
+int jobs_option(const Args& a) {
+    if (!a.values.count("--jobs")) return batch::default_threads();
+    try {
+        return batch::parse_threads(a.values.at("--jobs"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
 }
 
 // The FILE a subcommand takes first: an option there (rocking collapse

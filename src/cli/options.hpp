@@ -42,6 +42,9 @@ std::map<std::string, double> key_values(const std::string& flag, const std::str
                                          const std::vector<std::string>& keys);
 // A random generator's seed: a whole number in [1, 2^32 - 1].
 std::uint64_t seed_option(const std::string& flag, const std::string& text);
+// The batch engine's threads: --jobs N (1 to 4096), by default the cores
+// this process may use.  The results do not depend on it.
+int jobs_option(const Args& a);
 std::string file_argument(int argc, char** argv, int at, const std::string& usage);
 // Every argument from argv[2] up to the first option; sets first_option to its
 // index.  Throws UsageError (with the usage) when there is none.

@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "batch/pool.hpp"
 #include "studies/scaled_input.hpp"
 #include "studies/spectrum.hpp"
 
@@ -154,23 +155,37 @@ void fit_block(BlockFragility& f, const FragilityStudyOptions& o) {
 
 std::vector<BlockFragility> fragility_study(const std::vector<const GroundInput*>& inputs,
                                             const std::vector<BlockShape>& blocks, const FragilityStudyOptions& o) {
-    std::vector<BlockFragility> out;
-    for (const BlockShape& block : blocks) {
-        BlockFragility f;
-        f.block = block;
-        int collapsed = 0;
-        for (const GroundInput* input : inputs) {
-            f.idas.push_back(incremental_dynamic_analysis(*input, block.alpha, block.p, o.ida));
-            f.points.push_back(f.idas.back().point);
-            collapsed += f.points.back().collapsed;
-        }
-        f.empirical = empirical_curve(f.points);
-        // fit_lognormal needs two collapses; fewer is an answer (a block too
-        // stocky for these records), not an error.
-        if (collapsed < 2) f.no_fit = "fewer than 2 records overturn the block below q_max";
-        else fit_block(f, o);
-        out.push_back(std::move(f));
-    }
+    // Every (block, input) IDA is a job of the batch engine, block by block;
+    // then every block's fit.  The pool hands the results back in this order,
+    // so the study is the same on any number of threads.
+    std::vector<BlockFragility> out(blocks.size());
+    for (std::size_t b = 0; b < blocks.size(); ++b) out[b].block = blocks[b];
+    const std::size_t n = inputs.size();
+    const batch::PoolOptions pool{o.threads};
+    batch::run_ordered<Ida>(
+        blocks.size() * n, pool,
+        [&](std::size_t job) {
+            return incremental_dynamic_analysis(*inputs[job % n], blocks[job / n].alpha, blocks[job / n].p, o.ida);
+        },
+        [&](std::size_t job, Ida& ida) {
+            BlockFragility& f = out[job / n];
+            f.points.push_back(ida.point);
+            f.idas.push_back(std::move(ida));
+        });
+    batch::run_ordered<BlockFragility>(
+        blocks.size(), pool,
+        [&](std::size_t b) {
+            BlockFragility f = std::move(out[b]);
+            int collapsed = 0;
+            for (const IdaPoint& point : f.points) collapsed += point.collapsed;
+            f.empirical = empirical_curve(f.points);
+            // fit_lognormal needs two collapses; fewer is an answer (a block too
+            // stocky for these records), not an error.
+            if (collapsed < 2) f.no_fit = "fewer than 2 records overturn the block below q_max";
+            else fit_block(f, o);
+            return f;
+        },
+        [&](std::size_t b, BlockFragility& f) { out[b] = std::move(f); });
     return out;
 }
 

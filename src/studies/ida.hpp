@@ -82,6 +82,8 @@ struct FragilityStudyOptions {
     int resamples = 1000;        // 0: no bootstrap
     std::uint64_t seed = 1;
     double level = 0.9;
+    // Threads of the batch engine (batch/pool.hpp); the result does not depend on it.
+    int threads = 1;
 };
 
 struct BlockFragility {

@@ -1,0 +1,35 @@
+#include "batch/pool.hpp"
+
+#include <sched.h>
+
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace rocking::batch {
+
+int default_threads() {
+    // hardware_concurrency counts the machine's cores, not those this
+    // process may use: under taskset or a container's cpuset it would start
+    // more threads than cores.
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) == 0) {
+        const int n = CPU_COUNT(&set);
+        if (n > 0) return n;
+    }
+    const unsigned n = std::thread::hardware_concurrency();
+    return n > 0 ? static_cast<int>(n) : 1;
+}
+
+int parse_threads(const std::string& text) {
+    errno = 0;
+    char* end = nullptr;
+    const long n = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || n < 1 || n > 4096)
+        throw std::invalid_argument("--jobs must be an integer from 1 to 4096 (got '" + text + "')");
+    return static_cast<int>(n);
+}
+
+}  // namespace rocking::batch
