@@ -2,7 +2,6 @@
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_multimin.h>
-#include <gsl/gsl_rng.h>
 #include <gsl/gsl_sf_erf.h>
 
 #include <algorithm>
@@ -84,13 +83,6 @@ void maximise_with_censoring(const std::vector<IdaPoint>& points, double& mu, do
     beta = std::exp(gsl_vector_get(s->x, 1));
 }
 
-double percentile(std::vector<double> v, double p) {
-    std::sort(v.begin(), v.end());
-    const double at = p * (v.size() - 1);
-    const std::size_t k = static_cast<std::size_t>(std::floor(at));
-    return k + 1 < v.size() ? v[k] + (at - k) * (v[k + 1] - v[k]) : v.back();
-}
-
 }  // namespace
 
 double overturning_probability(const LognormalFragility& f, double q) {
@@ -119,8 +111,7 @@ BootstrapInterval bootstrap(const std::vector<IdaPoint>& points, int resamples, 
     check_points(points);
     if (resamples < 2) throw std::invalid_argument("fragility bootstrap: at least 2 resamples");
     if (!(level > 0 && level < 1)) throw std::invalid_argument("fragility bootstrap: the level must be in (0, 1)");
-    std::unique_ptr<gsl_rng, decltype(&gsl_rng_free)> rng(gsl_rng_alloc(gsl_rng_mt19937), gsl_rng_free);
-    gsl_rng_set(rng.get(), static_cast<unsigned long>(seed));
+    SeededRng rng(seed);
     std::vector<double> medians, betas;
     std::vector<IdaPoint> draw(points.size());
     for (long attempts = 0; static_cast<int>(medians.size()) < resamples; ++attempts) {
@@ -129,7 +120,7 @@ BootstrapInterval bootstrap(const std::vector<IdaPoint>& points, int resamples, 
                                         "overturning records; too few records overturned to resample");
         int collapsed = 0;
         for (IdaPoint& d : draw) {
-            d = points[gsl_rng_uniform_int(rng.get(), points.size())];
+            d = points[rng.index(points.size())];
             collapsed += d.collapsed;
         }
         double mu = 0, beta = 0;
@@ -141,9 +132,8 @@ BootstrapInterval bootstrap(const std::vector<IdaPoint>& points, int resamples, 
         betas.push_back(f.beta);
     }
     BootstrapInterval out;
-    const double tail = (1 - level) / 2;
-    out.median = {percentile(medians, tail), percentile(medians, 1 - tail)};
-    out.beta = {percentile(betas, tail), percentile(betas, 1 - tail)};
+    out.median = percentile_interval(medians, level);
+    out.beta = percentile_interval(betas, level);
     out.resamples = resamples;
     out.seed = seed;
     out.level = level;

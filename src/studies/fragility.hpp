@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "studies/resampling.hpp"
+
 namespace rocking::studies {
 
 // One record's outcome: overturned at q (collapsed), or not up to q (censored).
@@ -46,9 +48,6 @@ double log_likelihood(const std::vector<IdaPoint>& points, const LognormalFragil
 // that is not finite and > 0.
 LognormalFragility fit_lognormal(const std::vector<IdaPoint>& points);
 
-struct Range {
-    double lo = 0, hi = 0;
-};
 struct BootstrapInterval {
     Range median, beta;  // percentile intervals at the given level
     int resamples = 0;   // resamples fitted (those with < 2 collapsed points are redrawn)
@@ -57,8 +56,9 @@ struct BootstrapInterval {
 };
 
 // The records resampled with replacement `resamples` times (GSL's mt19937,
-// seeded: the same seed gives the same interval on any machine), each
-// resample refitted; the percentile interval at `level` (e.g. 0.9).
+// seeded: the same seed gives the same interval on any machine;
+// studies/resampling.hpp), each resample refitted; the percentile interval at
+// `level` (e.g. 0.9).
 BootstrapInterval bootstrap(const std::vector<IdaPoint>& points, int resamples, std::uint64_t seed, double level);
 
 // The empirical curve: at each collapsed point's q, in increasing order, the
