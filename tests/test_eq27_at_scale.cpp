@@ -1,9 +1,12 @@
 // Eq. 27 at scale (studies/eq27_at_scale.hpp): the Wilson interval against
 // published and independently computed values, the verdict of each k on a
 // single rectangular pulse whose collapse q is known in closed form, censored
-// records counted as conservative, and the map over blocks.
+// records counted as conservative, the map over blocks, and the bootstrap
+// over records against binomial quantiles, a second implementation, and the
+// narrower interval a bootstrap over cases would give.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -11,6 +14,7 @@
 #include "dynamics/ground_input.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "studies/eq27_at_scale.hpp"
+#include "studies/resampling.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
@@ -55,6 +59,42 @@ dynamics::PulseInput single_pulse(double d) { return dynamics::PulseInput(PulseT
 // at least 10 % from q* (2.5: 1.128).
 const double kX[kHalfPeriods] = {0.1, 3.0, 0.2, 5.0, 0.3, 8.0, 0.5, 2.5, 0.8, 1.0, 1.2};
 const bool kNonConservative[kHalfPeriods] = {true, false, true, false, true, false, true, false, true, true, true};
+
+// The smallest x with P(X <= x) >= u for X ~ Binomial(n, m/n), and how far
+// the CDF's values stay from u (the empirical percentile of many resamples
+// lands on that x when the margin is wide).
+int binomial_quantile(int n, int m, double u, double& margin) {
+    const double p = double(m) / n;
+    double cdf = 0;
+    int at = -1;
+    margin = 1;
+    for (int x = 0; x <= n; ++x) {
+        double choose = 1;
+        for (int i = 0; i < x; ++i) choose = choose * (n - i) / (i + 1);
+        cdf += choose * std::pow(p, x) * std::pow(1 - p, n - x);
+        margin = std::min(margin, std::fabs(cdf - u));
+        if (at < 0 && cdf >= u - 1e-12) at = x;
+    }
+    return at;
+}
+
+// Points on `blocks` identical blocks (alpha 0.1, p 1 rad/s; every to_k 0.5 s:
+// x = 0.5, eq. 27 = 2.451) for `records` records, the first `failing` of
+// which overturn every block at q = 1.5 (non-conservative for every k), the
+// others at q = 3 (conservative): all-or-nothing records.
+struct AllOrNothing {
+    std::vector<std::vector<IdaPoint>> points;
+    std::vector<std::array<double, kHalfPeriods>> to;
+    std::vector<BlockShape> blocks;
+    AllOrNothing(int records, int failing, int n_blocks) : blocks(n_blocks, BlockShape{0.1, 1.0}) {
+        std::array<double, kHalfPeriods> t{};
+        t.fill(0.5);
+        for (int r = 0; r < records; ++r) {
+            points.push_back(std::vector<IdaPoint>(n_blocks, IdaPoint{r < failing ? 1.5 : 3.0, true}));
+            to.push_back(t);
+        }
+    }
+};
 
 Eq27Options one_block(double alpha, double p) {
     Eq27Options o;
@@ -150,8 +190,8 @@ TEST(Eq27AtScale, ACensoredRecordCountsAsConservativeAndInTheDenominator) {
         EXPECT_EQ(s.shares[k].non_conservative, want) << "to_" << k + 1;
         EXPECT_EQ(s.shares[k].share, want / 2.0);
         const WilsonInterval w = wilson_interval(want, 2, 0.95);
-        EXPECT_EQ(s.shares[k].interval.lo, w.lo);
-        EXPECT_EQ(s.shares[k].interval.hi, w.hi);
+        EXPECT_EQ(s.shares[k].wilson.lo, w.lo);
+        EXPECT_EQ(s.shares[k].wilson.hi, w.hi);
     }
 }
 
@@ -200,4 +240,153 @@ TEST(Eq27AtScale, TheDefaultGridIsTheIssues) {
     EXPECT_EQ(b[9].alpha, 0.05);
     EXPECT_EQ(b[10].alpha, 0.10);
     EXPECT_EQ(b[10].p, 0.5);
+}
+
+TEST(Eq27Bootstrap, AllOrNothingRecordsGiveTheBinomialQuantiles) {
+    // 20 records of 5 blocks each; for k, m_k records are non-conservative on
+    // every block, the rest on none.  A resample's share is then X/20 with
+    // X ~ Binomial(20, m_k/20), so the 80 % percentile interval of 20000
+    // resamples is the binomial's 10 % and 90 % quantiles over 20 (each m_k
+    // chosen with the CDF at least 0.018 from 0.1 and 0.9, 8 standard errors
+    // of the empirical CDF at 20000).  Fails when a resample draws cases
+    // (the quantiles of a binomial over 100 cases, 2.2 times narrower), when
+    // the share is over the drawn records' count alone, or when the counts of
+    // one k are filed under another.
+    const int records = 20, blocks = 5;
+    const int m[kHalfPeriods] = {10, 3, 17, 0, 8, 20, 1, 12, 19, 9, 18};
+    std::vector<std::array<int, kHalfPeriods>> counts(records);
+    for (int r = 0; r < records; ++r)
+        for (int k = 0; k < kHalfPeriods; ++k) counts[r][k] = r < m[k] ? blocks : 0;
+    const std::array<Range, kHalfPeriods> got = record_bootstrap(counts, blocks, {20000, 5, 0.8});
+    for (int k = 0; k < kHalfPeriods; ++k) {
+        double margin_lo = 0, margin_hi = 0;
+        const int lo = binomial_quantile(records, m[k], 0.1, margin_lo), hi = binomial_quantile(records, m[k], 0.9, margin_hi);
+        ASSERT_GT(std::min(margin_lo, margin_hi), 0.018) << "m = " << m[k] << ": the test's premise";
+        EXPECT_EQ(got[k].lo, double(lo) / records) << "to_" << k + 1 << ", m = " << m[k];
+        EXPECT_EQ(got[k].hi, double(hi) / records) << "to_" << k + 1 << ", m = " << m[k];
+    }
+    // Two of them written out: m = 10 gives [7, 13]/20, m = 1 gives [0, 2]/20.
+    EXPECT_EQ(got[0].lo, 0.35);
+    EXPECT_EQ(got[0].hi, 0.65);
+    EXPECT_EQ(got[6].lo, 0.0);
+    EXPECT_EQ(got[6].hi, 0.1);
+}
+
+TEST(Eq27Bootstrap, ResamplingRecordsIsWiderThanResamplingCasesOnCorrelatedData) {
+    // 20 records on 10 blocks, 10 records non-conservative on all of them:
+    // 200 cases, 100 non-conservative, but only 20 independent records.
+    // Through eq27_from_points, the 80 % interval is Binomial(20, 1/2)'s
+    // [7, 13]/20 (the test above); resampling the 200 cases instead gives
+    // about 0.5 -+ 1.28 sqrt(0.25/200) = [0.455, 0.545], computed here with
+    // the same generator.  Fails when the study's bootstrap draws cases, or
+    // draws records but keeps only one block of each.
+    const AllOrNothing d(20, 10, 10);
+    const Eq27Bootstrap b{20000, 3, 0.8};
+    const Eq27Study s = eq27_from_points(d.points, d.to, d.blocks, 0.95, b);
+    EXPECT_EQ(s.bootstrap.resamples, 20000);
+    EXPECT_EQ(s.bootstrap.seed, 3u);
+    EXPECT_EQ(s.bootstrap.level, 0.8);
+
+    std::vector<int> cases;  // the 200 verdicts, record-major
+    for (const Eq27Case& c : s.cases) cases.push_back(c.non_conservative[0]);
+    SeededRng rng(3);
+    std::vector<double> shares;
+    for (int i = 0; i < b.resamples; ++i) {
+        int sum = 0;
+        for (std::size_t j = 0; j < cases.size(); ++j) sum += cases[rng.index(cases.size())];
+        shares.push_back(double(sum) / cases.size());
+    }
+    const Range by_case = percentile_interval(shares, b.level);
+    ASSERT_LT(by_case.hi - by_case.lo, 0.12) << "the test's premise: resampling cases is narrow";
+
+    for (int k = 0; k < kHalfPeriods; ++k) {
+        const Eq27Share& sh = s.shares[k];
+        EXPECT_EQ(sh.share, 0.5);
+        EXPECT_EQ(sh.bootstrap.lo, 0.35) << "to_" << k + 1;
+        EXPECT_EQ(sh.bootstrap.hi, 0.65) << "to_" << k + 1;
+        EXPECT_GT(sh.bootstrap.hi - sh.bootstrap.lo, 2.5 * (by_case.hi - by_case.lo)) << "to_" << k + 1;
+        // Wilson at the same level takes the 200 cases as independent: as narrow as the case bootstrap.
+        const WilsonInterval w = wilson_interval(100, 200, 0.8);
+        EXPECT_LT(w.hi - w.lo, 0.1);
+        EXPECT_EQ(sh.records_with_any, 10);
+        EXPECT_EQ(sh.records, 20);
+    }
+}
+
+TEST(Eq27Bootstrap, TheSameSeedGivesTheSameIntervalAsASecondImplementation) {
+    // 6 records of 4 blocks, counts[r][k] = (3r + 2k + r k^2) mod 5: 300
+    // resamples, seed 43, 90 %.  The bounds are those of a second
+    // implementation in Python (expected/fragility/independent.py's GSL
+    // mt19937 and gsl_rng_uniform_int rebuilt on Python's Mersenne Twister,
+    // its percentile interpolation), to the last bit: the shares are counts
+    // over 24, the interpolation one subtraction, product and sum.  Seed 42
+    // gives other bounds.  Fails when the seed is not used, when the draws
+    // differ from GSL's mt19937 (another generator, a modulo for the rejection
+    // rule), or when the interpolation or the tails differ.
+    const int records = 6, blocks = 4;
+    std::vector<std::array<int, kHalfPeriods>> counts(records);
+    for (int r = 0; r < records; ++r)
+        for (int k = 0; k < kHalfPeriods; ++k) counts[r][k] = (3 * r + 2 * k + r * k * k) % (blocks + 1);
+    const Range want[5] = {{0.16666666666666666, 0.625},
+                           {0.2916666666666667, 0.7083333333333334},
+                           {0.375, 0.8333333333333334},
+                           {0.25, 0.6687500000000004},
+                           {0.3333333333333333, 0.7520833333333338}};
+    const std::array<Range, kHalfPeriods> a = record_bootstrap(counts, blocks, {300, 43, 0.9});
+    const std::array<Range, kHalfPeriods> again = record_bootstrap(counts, blocks, {300, 43, 0.9});
+    const std::array<Range, kHalfPeriods> other = record_bootstrap(counts, blocks, {300, 42, 0.9});
+    int differs = 0;
+    for (int k = 0; k < kHalfPeriods; ++k) {
+        EXPECT_EQ(a[k].lo, want[k % 5].lo) << "to_" << k + 1;
+        EXPECT_EQ(a[k].hi, want[k % 5].hi) << "to_" << k + 1;
+        EXPECT_EQ(again[k].lo, a[k].lo);
+        EXPECT_EQ(again[k].hi, a[k].hi);
+        differs += other[k].lo != a[k].lo || other[k].hi != a[k].hi;
+    }
+    EXPECT_GT(differs, 0);
+}
+
+TEST(Eq27Bootstrap, RecordsWithAnyCaseAndNoBootstrapUnlessAsked) {
+    // The map test's points (3 records on 2 blocks): record 0 is
+    // non-conservative on both blocks, record 1 on block 0 only, record 2 on
+    // neither: 3 non-conservative cases in 2 records.  With 0 resamples the
+    // interval is not run and says so.  Fails when records_with_any counts
+    // cases or blocks.
+    const std::vector<BlockShape> blocks = {{0.1, 1.0}, {0.1, 4.0}};
+    std::array<double, kHalfPeriods> to{};
+    to.fill(0.5);
+    // Block 0 (eq. 27 = 2.451): q 1.5, 2.0 below; block 1 (eq. 27 = 1.218): q 1.1 below.
+    const std::vector<std::vector<IdaPoint>> points = {
+        {{1.5, true}, {1.1, true}}, {{2.0, true}, {1.3, true}}, {{3.0, true}, {20.0, false}}};
+    const Eq27Study s = eq27_from_points(points, {to, to, to}, blocks, 0.95, {0, 1, 0.9});
+    EXPECT_EQ(s.records, 3);
+    EXPECT_EQ(s.bootstrap.resamples, 0);
+    for (int k = 0; k < kHalfPeriods; ++k) {
+        EXPECT_EQ(s.shares[k].non_conservative, 3);
+        EXPECT_EQ(s.shares[k].records_with_any, 2);
+        EXPECT_EQ(s.shares[k].records, 3);
+        EXPECT_EQ(s.shares[k].bootstrap.lo, 0.0);
+        EXPECT_EQ(s.shares[k].bootstrap.hi, 0.0);
+    }
+    // The default runs it: 1000 resamples, seed 1, 90 % (the fragility fit's level).
+    const Eq27Study d = eq27_from_points(points, {to, to, to}, blocks, 0.95);
+    EXPECT_EQ(d.bootstrap.resamples, 1000);
+    EXPECT_EQ(d.bootstrap.seed, 1u);
+    EXPECT_EQ(d.bootstrap.level, 0.9);
+    EXPECT_LE(d.shares[0].bootstrap.lo, d.shares[0].share);
+    EXPECT_GE(d.shares[0].bootstrap.hi, d.shares[0].share);
+}
+
+TEST(Eq27Bootstrap, RefusesNonsense) {
+    const std::vector<std::array<int, kHalfPeriods>> counts(3);
+    EXPECT_THROW(record_bootstrap({}, 2, {10, 1, 0.9}), std::invalid_argument);
+    EXPECT_THROW(record_bootstrap(counts, 0, {10, 1, 0.9}), std::invalid_argument);
+    EXPECT_THROW(record_bootstrap(counts, 2, {1, 1, 0.9}), std::invalid_argument);
+    EXPECT_THROW(record_bootstrap(counts, 2, {10, 1, 1.0}), std::invalid_argument);
+    EXPECT_THROW(record_bootstrap(counts, 2, {10, 1, 0.0}), std::invalid_argument);
+    std::vector<std::array<int, kHalfPeriods>> over(2);
+    over[1][4] = 3;
+    EXPECT_THROW(record_bootstrap(over, 2, {10, 1, 0.9}), std::invalid_argument);
+    const AllOrNothing d(3, 1, 2);
+    EXPECT_THROW(eq27_from_points(d.points, d.to, d.blocks, 0.95, {-1, 1, 0.9}), std::invalid_argument);
 }

@@ -266,7 +266,7 @@ void run_fragility(SceneContext& ctx) {
         const studies::Eq27Share& s = eq27.shares[k];
         int with_any = 0;
         for (const studies::Eq27Cell& c : eq27.map) with_any += c.non_conservative[k] > 0;
-        et.row().add(k + 1).add(s.non_conservative).add(s.cases).add(s.share).add(s.interval.lo).add(s.interval.hi);
+        et.row().add(k + 1).add(s.non_conservative).add(s.cases).add(s.share).add(s.wilson.lo).add(s.wilson.hi);
         et.add(with_any);
     }
 

@@ -105,7 +105,7 @@ int blocks_hit(const Eq27Study& s, int k) {
 std::string share_text(const Eq27Study& s, int k) {
     const studies::Eq27Share& sh = s.shares[k];
     return std::to_string(sh.non_conservative) + "/" + std::to_string(sh.cases) + " = " + g4(sh.share) + " [" +
-           g4(sh.interval.lo) + ", " + g4(sh.interval.hi) + "]";
+           g4(sh.wilson.lo) + ", " + g4(sh.wilson.hi) + "]";
 }
 
 std::string censored_text(const Eq27Study& s, double q_max) {
@@ -140,7 +140,7 @@ void print_json(const std::vector<std::string>& files, const studies::Eq27Option
         const studies::Eq27Share& sh = s.shares[k];
         js << (k ? ", " : "") << "{\"k\": " << k + 1 << ", \"non_conservative\": " << sh.non_conservative
            << ", \"cases\": " << sh.cases << ", \"share\": " << json_number(sh.share) << ", \"interval\": ["
-           << json_number(sh.interval.lo) << ", " << json_number(sh.interval.hi)
+           << json_number(sh.wilson.lo) << ", " << json_number(sh.wilson.hi)
            << "], \"blocks_with_any\": " << blocks_hit(s, k) << "}";
     }
     js << "], \"map\": [";

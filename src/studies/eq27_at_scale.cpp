@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "qfactor/closed_forms.hpp"
+#include "studies/resampling.hpp"
 
 namespace rocking::studies {
 
@@ -73,45 +74,90 @@ Eq27Case case_of(int r, int b, const IdaPoint& point, const std::array<double, k
     return c;
 }
 
-void tally(Eq27Study& s) {
+void check_bootstrap(const Eq27Bootstrap& b) {
+    if (b.resamples < 2) throw std::invalid_argument("eq27 bootstrap: at least 2 resamples");
+    if (!(b.level > 0 && b.level < 1)) throw std::invalid_argument("eq27 bootstrap: the level must be in (0, 1)");
+}
+
+void tally(Eq27Study& s, const Eq27Bootstrap& bootstrap) {
     s.map.assign(s.blocks.size(), Eq27Cell{});
     for (std::size_t b = 0; b < s.blocks.size(); ++b) s.map[b].block = s.blocks[b];
+    // per_record[r][k]: record r's non-conservative cases for k.
+    std::vector<std::array<int, kHalfPeriods>> per_record(s.records, std::array<int, kHalfPeriods>{});
     for (const Eq27Case& c : s.cases) {
         Eq27Cell& cell = s.map[c.block];
         ++cell.records;
         if (!c.point.collapsed) ++cell.censored, ++s.censored;
         for (int k = 0; k < kHalfPeriods; ++k) {
             ++s.shares[k].cases;
-            if (c.non_conservative[k]) ++cell.non_conservative[k], ++s.shares[k].non_conservative;
+            if (c.non_conservative[k])
+                ++cell.non_conservative[k], ++s.shares[k].non_conservative, ++per_record[c.record][k];
         }
     }
-    for (Eq27Share& share : s.shares) {
+    for (int k = 0; k < kHalfPeriods; ++k) {
+        Eq27Share& share = s.shares[k];
         share.share = double(share.non_conservative) / share.cases;
-        share.interval = wilson_interval(share.non_conservative, share.cases, s.level);
+        share.wilson = wilson_interval(share.non_conservative, share.cases, s.level);
+        share.records = s.records;
+        for (const auto& r : per_record) share.records_with_any += r[k] > 0;
     }
+    if (bootstrap.resamples == 0) return;
+    const std::array<Range, kHalfPeriods> boot = record_bootstrap(per_record, int(s.blocks.size()), bootstrap);
+    for (int k = 0; k < kHalfPeriods; ++k) s.shares[k].bootstrap = boot[k];
+    s.bootstrap = bootstrap;
 }
 
 }  // namespace
 
+std::array<Range, kHalfPeriods> record_bootstrap(const std::vector<std::array<int, kHalfPeriods>>& counts, int blocks,
+                                                 const Eq27Bootstrap& b) {
+    if (counts.empty()) throw std::invalid_argument("eq27 bootstrap: at least 1 record");
+    if (blocks < 1) throw std::invalid_argument("eq27 bootstrap: at least 1 block per record");
+    for (const auto& r : counts)
+        for (int c : r)
+            if (c < 0 || c > blocks) throw std::invalid_argument("eq27 bootstrap: a record's count must be in [0, blocks]");
+    check_bootstrap(b);
+    const std::size_t n = counts.size();
+    // Every resample holds n records of `blocks` cases: the share is an
+    // integer count over this one denominator, a single rounding.
+    const double cases = double(n) * blocks;
+    SeededRng rng(b.seed);
+    std::array<std::vector<double>, kHalfPeriods> shares;
+    for (auto& v : shares) v.reserve(b.resamples);
+    for (int i = 0; i < b.resamples; ++i) {
+        std::array<long, kHalfPeriods> sum{};
+        for (std::size_t r = 0; r < n; ++r) {
+            const auto& drawn = counts[rng.index(n)];
+            for (int k = 0; k < kHalfPeriods; ++k) sum[k] += drawn[k];
+        }
+        for (int k = 0; k < kHalfPeriods; ++k) shares[k].push_back(double(sum[k]) / cases);
+    }
+    std::array<Range, kHalfPeriods> out;
+    for (int k = 0; k < kHalfPeriods; ++k) out[k] = percentile_interval(shares[k], b.level);
+    return out;
+}
+
 Eq27Study eq27_from_points(const std::vector<std::vector<IdaPoint>>& points,
                            const std::vector<std::array<double, kHalfPeriods>>& to,
-                           const std::vector<BlockShape>& blocks, double level) {
+                           const std::vector<BlockShape>& blocks, double level, const Eq27Bootstrap& bootstrap) {
     if (points.empty() || blocks.empty()) throw std::invalid_argument("eq27: at least 1 record and 1 block");
     if (to.size() != points.size()) throw std::invalid_argument("eq27: one set of half-periods per record");
     Eq27Study s;
     s.blocks = blocks;
+    s.records = int(points.size());
     s.level = level;
     for (std::size_t r = 0; r < points.size(); ++r) {
         if (points[r].size() != blocks.size()) throw std::invalid_argument("eq27: one point per record and block");
         for (std::size_t b = 0; b < blocks.size(); ++b)
             s.cases.push_back(case_of(int(r), int(b), points[r][b], to[r], blocks[b]));
     }
-    tally(s);
+    tally(s, bootstrap);
     return s;
 }
 
 Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Options& o) {
     const std::vector<BlockShape> blocks = o.grid.blocks();
+    if (o.bootstrap.resamples != 0) check_bootstrap(o.bootstrap);  // before the IDAs, not after
     std::vector<std::vector<IdaPoint>> points;
     std::vector<std::array<double, kHalfPeriods>> to;
     for (const Eq27Record& r : records) {
@@ -121,7 +167,7 @@ Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Option
         points.push_back(row);
         to.push_back(r.to);
     }
-    return eq27_from_points(points, to, blocks, o.level);
+    return eq27_from_points(points, to, blocks, o.level, o.bootstrap);
 }
 
 }  // namespace rocking::studies

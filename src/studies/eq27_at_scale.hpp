@@ -12,19 +12,26 @@
 // is counted as conservative (with q_max above eq. 27's q that is exact;
 // below it, a lower bound on the share).  The censored are counted apart.
 //
-// The share of non-conservative cases per k comes with the Wilson score
-// interval (Wilson 1927), which unlike the normal approximation stays inside
-// [0, 1] and is not empty at 0 or n successes.  It treats the cases as
-// independent draws; cases of one record across blocks are not, so the
-// interval is narrower than a record-level resampling would give.
+// The share of non-conservative cases per k comes with two intervals.  The
+// one to quote is the bootstrap over records (a cluster bootstrap: the
+// records drawn with replacement, each drawn record bringing all its blocks,
+// the share recomputed per k; the percentile interval at 90 % as the
+// fragility fit's, GSL's mt19937 seeded, studies/resampling.hpp): the cases of
+// one record on neighbouring blocks are strongly correlated, and the records
+// are the independent draws.  Beside it the Wilson score interval (Wilson
+// 1927), which stays inside [0, 1] and is not empty at 0 or n successes, but
+// treats every case as an independent draw and so is too narrow here.  And
+// per k the number of records non-conservative on at least one block.
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "dynamics/ground_input.hpp"
 #include "studies/ida.hpp"
+#include "studies/resampling.hpp"
 
 namespace rocking::studies {
 
@@ -56,10 +63,18 @@ struct Eq27Record {
     std::array<double, kHalfPeriods> to{};         // s; records::half_periods(r).to
 };
 
+// The bootstrap over records; resamples 0: none.
+struct Eq27Bootstrap {
+    int resamples = 1000;
+    std::uint64_t seed = 1;
+    double level = 0.9;  // as the fragility fit's (FragilityStudyOptions)
+};
+
 struct Eq27Options {
     Eq27Grid grid{};
     IdaOptions ida{};
-    double level = 0.95;
+    double level = 0.95;  // Wilson's
+    Eq27Bootstrap bootstrap{};
 };
 
 // One record against one block: its IDA point and eq. 27's q per k.
@@ -73,7 +88,10 @@ struct Eq27Case {
 struct Eq27Share {
     int non_conservative = 0, cases = 0;
     double share = 0;
-    WilsonInterval interval;
+    WilsonInterval wilson;     // at the study's level, the cases taken as independent
+    Range bootstrap;           // over records, at the bootstrap's level; {0, 0} without a bootstrap
+    int records_with_any = 0;  // records non-conservative on at least one block
+    int records = 0;
 };
 
 // One block of the map: of its records, how many are non-conservative per k.
@@ -88,21 +106,36 @@ struct Eq27Study {
     std::vector<Eq27Case> cases;  // record-major: cases[r * blocks + b]
     std::array<Eq27Share, kHalfPeriods> shares{};
     std::vector<Eq27Cell> map;    // one per block, in blocks' order
+    int records = 0;
     int censored = 0;             // cases whose record never overturned the block up to q_max
-    double level = 0.95;
+    double level = 0.95;          // Wilson's
+    Eq27Bootstrap bootstrap{0, 0, 0};  // as run; resamples 0: none
 };
 
 // The verdict of one case for one k: the record overturned the block at a q
 // below eq. 27's.  A censored point is never non-conservative.
 bool non_conservative(const IdaPoint& point, double q_eq27);
 
+// The bootstrap of the shares over records: counts[r][k] the cases of record
+// r non-conservative for k, of `blocks` cases per record.  Each of the
+// resamples draws counts.size() records with replacement (SeededRng::index,
+// in order), the share for k is the sum of the drawn records' counts over
+// counts.size() * blocks, and the result per k is the percentile interval of
+// the resamples' shares at the level.  The same draws serve every k.
+// Throws std::invalid_argument with no record, blocks < 1, a count outside
+// [0, blocks], resamples < 2, or the level not in (0, 1).
+std::array<Range, kHalfPeriods> record_bootstrap(const std::vector<std::array<int, kHalfPeriods>>& counts, int blocks,
+                                                 const Eq27Bootstrap& bootstrap);
+
 // The study from the points already known: points[r][b] for record r and
-// block b, to[r] the record's half-periods.  Throws std::invalid_argument when
-// the sizes disagree, there is no record or block, or a p * to_k is not
-// finite and > 0.
+// block b, to[r] the record's half-periods; Wilson at `level`, and the
+// bootstrap over records unless its resamples are 0.  Throws
+// std::invalid_argument when the sizes disagree, there is no record or block,
+// a p * to_k is not finite and > 0, or the bootstrap's arguments are refused.
 Eq27Study eq27_from_points(const std::vector<std::vector<IdaPoint>>& points,
                            const std::vector<std::array<double, kHalfPeriods>>& to,
-                           const std::vector<BlockShape>& blocks, double level);
+                           const std::vector<BlockShape>& blocks, double level,
+                           const Eq27Bootstrap& bootstrap = Eq27Bootstrap{});
 
 // The IDA of every record on every block of the grid, then eq27_from_points.
 // Throws what incremental_dynamic_analysis and eq27_from_points throw.
