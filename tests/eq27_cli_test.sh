@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # rocking eq27 on the command line: errors naming the option or file with
-# their exit codes, strict JSON whose shares add up from its map, the CSV's
-# notes, and each verdict recomputed through three other subcommands
-# (fragility's collapse q, record info's to_k, q's eq. 27).  The study's
-# answers against known ones are the unit tests' (tests/test_eq27_at_scale.cpp).
+# their exit codes, strict JSON whose shares add up from its map and its
+# records, the CSV's notes, each verdict recomputed through three other
+# subcommands (fragility's collapse q, record info's to_k, q's eq. 27), and
+# the bootstrap over records recomputed in Python from the JSON's per-record
+# counts (GSL's mt19937 as expected/fragility/independent.py rebuilds it).
+# The study's answers against known ones are the unit tests'
+# (tests/test_eq27_at_scale.cpp).
 #
 #   tests/eq27_cli_test.sh ROCKING
 set -u
@@ -35,6 +38,11 @@ status "p-max below p-min" 2                                             "$rocki
 check "p-points range"    "--p-points: must be between 1 and 1000"       "$rocking" eq27 x --p-points 0
 check "q-max range"       "--q-max: must be in (1, 10000]"               "$rocking" eq27 x --q-max 1
 check "unknown option"    "unknown option '--p'"                         "$rocking" eq27 x --p 1
+check "seed alone"        "--seed goes with --bootstrap"                 "$rocking" eq27 x --seed 3
+status "seed alone"       2                                              "$rocking" eq27 x --seed 3
+check "bootstrap, no seed" "--bootstrap needs --seed"                    "$rocking" eq27 x --bootstrap 100
+check "bootstrap of 1"    "--bootstrap: must be 0 or between 2 and 100000" "$rocking" eq27 x --bootstrap 1 --seed 3
+check "seed range"        "--seed: the seed must be a whole number"      "$rocking" eq27 x --bootstrap 100 --seed 0
 # Bad files: exit 1, the file named.
 check "missing file"      "no-such-file"                                 "$rocking" eq27 "$tmp/sine1.txt" no-such-file --unit g --dt 0.01
 status "missing file"     1                                              "$rocking" eq27 "$tmp/sine1.txt" no-such-file --unit g --dt 0.01
@@ -44,22 +52,52 @@ status "output in no folder" 1                                           "${run[
 check "text share"        "to_5 "                                        "${run[@]}" "${small[@]}"
 check "text censored"     "counted as conservative"                      "${run[@]}" "${small[@]}"
 check "text conservative" "conservative on every block and record:"      "${run[@]}" "${small[@]}"
+check "text no bootstrap" "bootstrap over records not run (--bootstrap K --seed S)" "${run[@]}" "${small[@]}"
+check "text Wilson label" "95 % Wilson (independent cases)"              "${run[@]}" "${small[@]}"
+check "text bootstrap"    "interval: 90 % bootstrap over records (200 resamples, seed 7)" \
+                                                                         "${run[@]}" "${small[@]}" --bootstrap 200 --seed 7
+check "text records"      "records with any"                             "${run[@]}" "${small[@]}" --bootstrap 200 --seed 7
 
 # JSON: strict (no NaN or Infinity); each share is its map's sum over the
-# blocks, the interval holds it; then every verdict of the block (0.1, 2)
-# recomputed from fragility --json, record info --json and q --json.
-"${run[@]}" "${small[@]}" --json >"$tmp/e.json"
+# blocks and its records' sum, the Wilson interval holds it; the bootstrap
+# recomputed from the per-record counts, the same with the same seed, absent
+# (null, and said so) without --bootstrap; then every verdict of the block
+# (0.1, 2) recomputed from fragility --json, record info --json and q --json.
+"${run[@]}" "${small[@]}" --json --bootstrap 300 --seed 11 >"$tmp/e.json"
+"${run[@]}" "${small[@]}" --json --bootstrap 300 --seed 11 >"$tmp/e2.json"
+"${run[@]}" "${small[@]}" --json >"$tmp/e0.json"
+if cmp -s "$tmp/e.json" "$tmp/e2.json"; then echo "ok: same seed, same output"; else echo "FAIL: same seed, other output"; fail=1; fi
 "$rocking" fragility "${files[@]}" --unit g --dt 0.01 --alpha 0.1 --p 2 --json >"$tmp/f.json"
 for f in "${files[@]}"; do "$rocking" record info "$f" --unit g --dt 0.01 --json; done >"$tmp/info.jsonl"
-if $py - "$tmp/e.json" "$tmp/f.json" "$tmp/info.jsonl" "$rocking" <<'PY'
+if $py - "$tmp/e.json" "$tmp/f.json" "$tmp/info.jsonl" "$rocking" "$tmp/e0.json" "$(dirname "$0")/../expected/fragility" <<'PY'
 import json, subprocess, sys
+sys.path.insert(0, sys.argv[6])
+from independent import GslMt19937, percentile
 def bad(c): raise ValueError(c)
 e = json.load(open(sys.argv[1]), parse_constant=bad)
-assert e["cases"] == 18 and len(e["map"]) == 6, e
+e0 = json.load(open(sys.argv[5]), parse_constant=bad)
+assert e["cases"] == 18 and len(e["map"]) == 6 and e["records"] == 3, e
+assert e["bootstrap_run"] and e["bootstrap"] == {"over": "records", "resamples": 300, "seed": 11, "level": 0.9}, e
+assert e0["bootstrap_run"] is False and e0["bootstrap"] is None and "--bootstrap" in e0["bootstrap_note"], e0
+assert e["wilson"]["level"] == 0.95 and "independent" in e["wilson"]["note"], e
+counts = [r["non_conservative"] for r in e["by_record"]]
+assert [r["file"] for r in e["by_record"]] == e["files"]
+# The bootstrap: 300 resamples of the 3 records, each bringing its 6 blocks.
+rng, boot = GslMt19937(11), [[] for _ in range(11)]
+for _ in range(300):
+    drawn = [counts[rng.uniform_int(3)] for _ in range(3)]
+    for k in range(11):
+        boot[k].append(sum(c[k] for c in drawn) / 18)
 for k, s in enumerate(e["shares"]):
-    assert s["k"] == k + 1 and s["cases"] == 18
+    assert s["k"] == k + 1 and s["cases"] == 18 and s["records"] == 3
     assert s["non_conservative"] == sum(m["non_conservative"][k] for m in e["map"]), s
-    assert s["interval"][0] <= s["share"] <= s["interval"][1], s
+    assert s["non_conservative"] == sum(c[k] for c in counts), s
+    assert s["records_with_any"] == sum(c[k] > 0 for c in counts), s
+    assert s["wilson"][0] <= s["share"] <= s["wilson"][1], s
+    t = (1 - 0.9) / 2
+    want = [percentile(boot[k], t), percentile(boot[k], 1 - t)]
+    assert all(abs(a - b) <= 1e-15 for a, b in zip(s["bootstrap"], want)), (s, want)
+    assert e0["shares"][k]["bootstrap"] is None and e0["shares"][k]["wilson"] == s["wilson"], e0["shares"][k]
 frag = json.load(open(sys.argv[2]), parse_constant=bad)["blocks"][0]["records"]
 infos = [json.loads(line) for line in open(sys.argv[3])]
 cell = next(m for m in e["map"] if m["alpha"] == 0.1 and m["p"] == 2)
@@ -75,10 +113,11 @@ PY
 then echo "ok: json"; else echo "FAIL: json"; fail=1; fi
 
 # CSV: one row per block, the notes naming model, solver, inputs, grids and the rule.
-"${run[@]}" "${small[@]}" --output "$tmp/m.csv" >/dev/null
+"${run[@]}" "${small[@]}" --output "$tmp/m.csv" --bootstrap 50 --seed 2 >/dev/null
 for note in "# command: rocking eq27" "# model: linearised" "# solver: exact" "# inputs: $tmp/sine0.7.txt" \
             "# grid: alpha 0.1, 0.2; p: 3 log-spaced from 1 to 4 rad/s" "# ida: " "# verdict: " \
-            "# share to_5 (95 % Wilson): "; do
+            "# intervals: 90 % bootstrap over records (50 resamples, seed 2); the Wilson interval takes every" \
+            "# share to_5: " "95 % Wilson, cases taken as independent [" "records non-conservative on any block "; do
     if grep -qF "$note" "$tmp/m.csv"; then echo "ok: note $note"; else echo "FAIL: note $note"; fail=1; fi
 done
 rows=$(grep -vc '^#' "$tmp/m.csv")

@@ -18,7 +18,7 @@ trap 'rm -rf "$tmp"' EXIT
 fail=0
 
 cat >"$tmp/check.py" <<'EOF'
-import json, math, os, sys
+import json, math, os, re, sys
 
 out_path, err_path, rc, mode, condition = sys.argv[1:6]
 command = sys.argv[6:]          # ROCKING SUBCOMMAND ...: arg(k) is command[k]
@@ -38,7 +38,8 @@ def line(path_arg, number):
 def finite(v):
     return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
 
-# The only nulls allowed, each with the fields that say why.
+# The only nulls allowed, each with the fields that say why (a list's
+# elements as [], shares[3].bootstrap as shares[].bootstrap).
 NULL_REASONS = {
     "theta_tfin_over_alpha": lambda o: o.get("overturned_during_input") is True,
     "t_overturn": lambda o: o.get("overturned") is False or o.get("overturned_during_input") is False,
@@ -46,6 +47,8 @@ NULL_REASONS = {
     "p_safe": lambda o: o.get("found") is False or o.get("below_range") is True,
     "rows_end_at": lambda o: o.get("rows_complete") is True,
     "rows_end_reason": lambda o: o.get("rows_complete") is True,
+    "bootstrap": lambda o: o.get("bootstrap_run") is False and "bootstrap_note" in o,
+    "shares[].bootstrap": lambda o: o.get("bootstrap_run") is False and "bootstrap_note" in o,
 }
 
 def unexplained(value, top, where):
@@ -56,7 +59,8 @@ def unexplained(value, top, where):
         for i, v in enumerate(value):
             yield from unexplained(v, top, "%s[%d]" % (where, i))
     elif value is None:
-        if not (where in NULL_REASONS and NULL_REASONS[where](top)):
+        key = re.sub(r"\[\d+\]", "[]", where)
+        if not (key in NULL_REASONS and NULL_REASONS[key](top)):
             yield "%s is null without a reason beside it" % where
     elif isinstance(value, float) and not math.isfinite(value):
         yield "%s overflows to %r" % (where, value)
@@ -225,6 +229,24 @@ json_case "assess, q overflows at tiny alpha" either '' \
 json_case "assess, PGV overflows"         either '' "$rocking" assess "$tmp/huge.txt" --alpha 0.15 --height 2 --dt 10 --unit m/s2 --json
 json_case "assess, the smallest height"   either '' "$rocking" assess "$one" --alpha 0.15 --height 1e-300 --dt 0.01 --unit g --json
 json_case "assess, the largest height"    either '' "$rocking" assess "$one" --alpha 1e-300 --height 1e300 --dt 0.01 --unit g --json
+
+# eq27: hostile names back as their bytes, the shares and both intervals
+# finite and in [0, 1], the bootstrap null (and said so) unless asked for.
+shares_ok='all(0 <= s["wilson"][0] <= s["share"] <= s["wilson"][1] <= 1 for s in o["shares"])'
+boot_ok='all(0 <= s["bootstrap"][0] <= s["bootstrap"][1] <= 1 for s in o["shares"])'
+small_grid=(--alpha 0.15 --p-min 2 --p-max 4 --p-points 2)
+json_case "eq27, hostile names, no bootstrap" ok \
+    "o['files'] == [arg(2), arg(3)] and o['by_record'][1]['file'] == arg(3) and o['bootstrap'] is None and $shares_ok" \
+    "$rocking" eq27 "$two" "$controls" --unit g "${small_grid[@]}" --json
+json_case "eq27, hostile names, bootstrap" ok \
+    "o['files'] == [arg(2), arg(3)] and o['bootstrap']['resamples'] == 50 and $shares_ok and $boot_ok" \
+    "$rocking" eq27 "$two" "$controls" --unit g "${small_grid[@]}" --bootstrap 50 --seed 9 --json
+json_case "eq27, a PEER title, one record" ok "o['files'] == [arg(2)] and o['records'] == 1 and $boot_ok" \
+    "$rocking" eq27 "$peer" "${small_grid[@]}" --bootstrap 2 --seed 4294967295 --json
+json_case "eq27, a record that never moves" either '' \
+    "$rocking" eq27 "$tmp/zero.txt" --dt 0.01 --unit g "${small_grid[@]}" --json
+json_case "eq27, 1e300 m/s2 at tiny alpha" either '' \
+    "$rocking" eq27 "$tmp/big.txt" --dt 0.01 --unit m/s2 --alpha 1e-10 --json
 
 # An ESM file with a hostile station code and event name: the header layout
 # is read from a real ESM file at run time; the samples are ours.

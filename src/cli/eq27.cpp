@@ -1,7 +1,10 @@
 // rocking eq27: eq. 27 at scale (studies/eq27_at_scale.hpp).  Each record's
 // first collapse q on every block of a grid against eq. 27 at x = p to_k:
-// the share of non-conservative cases per to_k with its Wilson interval, and
-// the map over (alpha, p) as CSV, as text or JSON.
+// the share of non-conservative cases per to_k with its bootstrap interval
+// over records (--bootstrap K --seed S) and its Wilson interval (the cases
+// taken as independent), the records non-conservative on any block, and the
+// map over (alpha, p) as CSV, as text or JSON.
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -24,7 +27,13 @@ using studies::kHalfPeriods;
 
 const char* kUsage =
     "usage: rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q] "
-    "[--unit U [--dt DT]] [--output CSV] [--json]";
+    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--output CSV] [--json]";
+
+const char* kWilsonNote =
+    "the Wilson interval takes every (record, block) case as independent; the cases of one record are "
+    "correlated, so it misstates the uncertainty (as a rule too narrow): quote the bootstrap over records";
+
+const char* kNoBootstrap = "bootstrap over records not run (--bootstrap K --seed S)";
 
 const char* kVerdict =
     "non-conservative: the record overturns the block at a q below eq. 27's at x = p to_k "
@@ -68,6 +77,15 @@ studies::Eq27Options options_from(const Args& a) {
     o.grid = grid_from(a);
     // Beyond 1e4 the scaled record reaches thousands of g: no physical input.
     o.ida.q_max = bounded(a, "--q-max", o.ida.q_max, o.ida.q_min, 1e4, "(1, 10000]");
+    // As rocking fragility's: no bootstrap unless asked, and then from a stated seed.
+    o.bootstrap.resamples = 0;
+    if (a.values.count("--bootstrap")) o.bootstrap.resamples = integer("--bootstrap", a.values.at("--bootstrap"));
+    if (o.bootstrap.resamples != 0 && (o.bootstrap.resamples < 2 || o.bootstrap.resamples > 100000))
+        throw UsageError("--bootstrap: must be 0 or between 2 and 100000");
+    if (a.values.count("--seed") && !a.values.count("--bootstrap")) throw UsageError("--seed goes with --bootstrap");
+    if (o.bootstrap.resamples > 0 && !a.values.count("--seed"))
+        throw UsageError("--bootstrap needs --seed (the interval is reproducible only from a stated seed)");
+    if (a.values.count("--seed")) o.bootstrap.seed = seed_option("--seed", a.values.at("--seed"));
     return o;
 }
 
@@ -102,10 +120,32 @@ int blocks_hit(const Eq27Study& s, int k) {
     return n;
 }
 
+bool bootstrapped(const Eq27Study& s) { return s.bootstrap.resamples > 0; }
+
+std::string bootstrap_label(const Eq27Study& s) {
+    return g7(100 * s.bootstrap.level) + " % bootstrap over records (" + std::to_string(s.bootstrap.resamples) +
+           " resamples, seed " + std::to_string(s.bootstrap.seed) + ")";
+}
+
+std::string wilson_label(const Eq27Study& s) { return g7(100 * s.level) + " % Wilson, cases taken as independent"; }
+
+std::string range_text(double lo, double hi) { return "[" + g4(lo) + ", " + g4(hi) + "]"; }
+
+std::string count_text(const studies::Eq27Share& sh) {
+    return std::to_string(sh.non_conservative) + "/" + std::to_string(sh.cases) + " = " + g4(sh.share);
+}
+
+std::string records_text(const studies::Eq27Share& sh) {
+    return std::to_string(sh.records_with_any) + "/" + std::to_string(sh.records);
+}
+
+// One k in a sentence, for the CSV's notes.
 std::string share_text(const Eq27Study& s, int k) {
     const studies::Eq27Share& sh = s.shares[k];
-    return std::to_string(sh.non_conservative) + "/" + std::to_string(sh.cases) + " = " + g4(sh.share) + " [" +
-           g4(sh.wilson.lo) + ", " + g4(sh.wilson.hi) + "]";
+    std::string text = count_text(sh) + "; ";
+    if (bootstrapped(s)) text += bootstrap_label(s) + " " + range_text(sh.bootstrap.lo, sh.bootstrap.hi) + "; ";
+    return text + wilson_label(s) + " " + range_text(sh.wilson.lo, sh.wilson.hi) + "; records non-conservative on " +
+           "any block " + records_text(sh);
 }
 
 std::string censored_text(const Eq27Study& s, double q_max) {
@@ -117,9 +157,19 @@ void print_text(const std::vector<std::string>& files, const studies::Eq27Option
     std::printf("eq. 27 at scale: %zu record(s) x %zu block(s)\n  blocks: %s\n  model: %s\n  IDA: %s\n  %s\n  %s\n",
                 files.size(), s.blocks.size(), o.grid.describe().c_str(), o.ida.describe_model().c_str(),
                 o.ida.describe_grid().c_str(), kVerdict, censored_text(s, o.ida.q_max).c_str());
-    std::printf("  to_k   non-conservative = share [%g %% Wilson interval]   blocks with any\n", 100 * s.level);
-    for (int k = 0; k < kHalfPeriods; ++k)
-        std::printf("  to_%-2d  %s   %d/%zu\n", k + 1, share_text(s, k).c_str(), blocks_hit(s, k), s.blocks.size());
+    if (bootstrapped(s)) std::printf("  interval: %s\n", bootstrap_label(s).c_str());
+    else std::printf("  %s\n", kNoBootstrap);
+    std::printf("  Wilson: %s\n", kWilsonNote);
+    std::printf("  to_k   non-conservative = share   %s%g %% Wilson (independent cases)   records with any   blocks "
+                "with any\n", bootstrapped(s) ? (g7(100 * s.bootstrap.level) + " % bootstrap   ").c_str() : "",
+                100 * s.level);
+    for (int k = 0; k < kHalfPeriods; ++k) {
+        const studies::Eq27Share& sh = s.shares[k];
+        std::printf("  to_%-2d  %s   %s%s   %s   %d/%zu\n", k + 1, count_text(sh).c_str(),
+                    bootstrapped(s) ? (range_text(sh.bootstrap.lo, sh.bootstrap.hi) + "   ").c_str() : "",
+                    range_text(sh.wilson.lo, sh.wilson.hi).c_str(), records_text(sh).c_str(), blocks_hit(s, k),
+                    s.blocks.size());
+    }
     std::printf("  conservative on every block and record: %s\n", conservative_list(s).c_str());
 }
 
@@ -133,16 +183,34 @@ void print_json(const std::vector<std::string>& files, const studies::Eq27Option
     std::ostringstream js;
     js << "{\"model\": " << json_string(o.ida.describe_model()) << ", \"ida\": " << json_string(o.ida.describe_grid())
        << ", \"q_max\": " << json_number(o.ida.q_max) << ", \"blocks\": " << json_string(o.grid.describe())
-       << ", \"verdict\": " << json_string(kVerdict) << ", \"level\": " << json_number(s.level) << ", \"files\": [";
+       << ", \"verdict\": " << json_string(kVerdict) << ", \"wilson\": {\"level\": " << json_number(s.level)
+       << ", \"note\": " << json_string(kWilsonNote) << "}, \"bootstrap_run\": " << (bootstrapped(s) ? "true" : "false")
+       << ", \"bootstrap\": ";
+    if (bootstrapped(s))
+        js << "{\"over\": \"records\", \"resamples\": " << s.bootstrap.resamples << ", \"seed\": " << s.bootstrap.seed
+           << ", \"level\": " << json_number(s.bootstrap.level) << "}";
+    else js << "null, \"bootstrap_note\": " << json_string(kNoBootstrap);
+    js << ", \"records\": " << s.records << ", \"files\": [";
     for (std::size_t i = 0; i < files.size(); ++i) js << (i ? ", " : "") << json_string(files[i]);
     js << "], \"cases\": " << s.cases.size() << ", \"censored\": " << s.censored << ", \"shares\": [";
     for (int k = 0; k < kHalfPeriods; ++k) {
         const studies::Eq27Share& sh = s.shares[k];
         js << (k ? ", " : "") << "{\"k\": " << k + 1 << ", \"non_conservative\": " << sh.non_conservative
-           << ", \"cases\": " << sh.cases << ", \"share\": " << json_number(sh.share) << ", \"interval\": ["
-           << json_number(sh.wilson.lo) << ", " << json_number(sh.wilson.hi)
-           << "], \"blocks_with_any\": " << blocks_hit(s, k) << "}";
+           << ", \"cases\": " << sh.cases << ", \"share\": " << json_number(sh.share) << ", \"bootstrap\": "
+           << (bootstrapped(s) ? "[" + json_number(sh.bootstrap.lo) + ", " + json_number(sh.bootstrap.hi) + "]"
+                               : std::string("null"))
+           << ", \"wilson\": [" << json_number(sh.wilson.lo) << ", " << json_number(sh.wilson.hi)
+           << "], \"records_with_any\": " << sh.records_with_any << ", \"records\": " << sh.records
+           << ", \"blocks_with_any\": " << blocks_hit(s, k) << "}";
     }
+    // Each record's non-conservative cases per k: what the bootstrap resamples.
+    std::vector<std::array<int, kHalfPeriods>> by_record(s.records, std::array<int, kHalfPeriods>{});
+    for (const studies::Eq27Case& c : s.cases)
+        for (int k = 0; k < kHalfPeriods; ++k) by_record[c.record][k] += c.non_conservative[k];
+    js << "], \"by_record\": [";
+    for (std::size_t r = 0; r < by_record.size(); ++r)
+        js << (r ? ", " : "") << "{\"file\": " << json_string(files[r])
+           << ", \"non_conservative\": " << counts_json(by_record[r]) << "}";
     js << "], \"map\": [";
     for (std::size_t b = 0; b < s.map.size(); ++b) {
         const studies::Eq27Cell& c = s.map[b];
@@ -169,8 +237,8 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
     t.note("ida", o.ida.describe_grid());
     t.note("verdict", kVerdict);
     t.note("censored", censored_text(s, o.ida.q_max));
-    for (int k = 0; k < kHalfPeriods; ++k)
-        t.note("share to_" + std::to_string(k + 1) + " (" + g7(100 * s.level) + " % Wilson)", share_text(s, k));
+    t.note("intervals", (bootstrapped(s) ? bootstrap_label(s) : std::string(kNoBootstrap)) + "; " + kWilsonNote);
+    for (int k = 0; k < kHalfPeriods; ++k) t.note("share to_" + std::to_string(k + 1), share_text(s, k));
     t.note("columns", "per block (alpha, p rad/s): records, those censored, and nc_toK the records non-conservative "
                       "for to_K");
     for (const studies::Eq27Cell& c : s.map) {
@@ -185,8 +253,8 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
 int cmd_eq27(int argc, char** argv) {
     int first = 0;
     const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
-    const Args a = parse(argc, argv, first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--unit", "--dt",
-                                             "--output"});
+    const Args a = parse(argc, argv, first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
+                                             "--seed", "--unit", "--dt", "--output"});
     const studies::Eq27Options o = options_from(a);
     if (a.values.count("--output") && a.values.at("--output").empty()) throw UsageError("--output: an empty file name");
     if (files.size() > 1000) throw UsageError("at most 1000 files");
