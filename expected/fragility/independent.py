@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Independent check of expected/fragility: the lognormal fits of fragility_fits.csv
 refitted in Python from fragility_points.csv, without numpy or scipy and without the
-C++ code's method.
+C++ code's method, and fragility_eq27.csv recomputed from the same points.
 
 - The fit: maximum likelihood of P(overturn | q) = Phi(ln(q / median) / beta) with the
   censored records kept (Baker 2015).  Without censoring, the closed form (mean and
@@ -13,17 +13,33 @@ C++ code's method.
   random.setstate), gsl_rng_uniform_int's rejection rule, each resample refitted as
   above, and the percentiles with linear interpolation between order statistics.
 - The counts (collapsed, censored, ill-conditioned) and the empirical shares.
+- Eq. 27 at scale: each case's verdict rebuilt from the point's collapse q, the record's
+  to_1..to_11 read from expected/table2/table2_records.csv and eq. 27 as printed (the
+  formula verified in expected/errata) evaluated with mpmath at 30 digits; then the
+  counts per to_k, the share, the Wilson interval (z from Python's NormalDist), the
+  blocks and records with any non-conservative case, and the bootstrap over records
+  (the same mt19937 draws: records drawn with replacement, each bringing its cases on
+  every block, the share per k a count over records x blocks, the same percentile
+  interpolation).
 
-Usage: independent.py DIR (the folder holding the scene's CSV files).  Exit 0 when all
-agree to 1e-7 relative (the simplex stops at a simplex of 1e-12, Newton at a step
-of 1e-13; a step is halved while ln L falls).
+Usage: independent.py DIR (the folder holding the scene's CSV files).  Exit 0 when the
+fits agree to 1e-7 relative (the simplex stops at a simplex of 1e-12, Newton at a step
+of 1e-13; a step is halved while ln L falls), eq. 27's counts and bootstrap bounds
+exactly, its share and Wilson bounds to 1e-12 relative.
 """
 import csv
 import math
+import os
 import random
 import sys
+from statistics import NormalDist
+
+from mpmath import mp, mpf, sinh
 
 TOL = 1e-7
+TOL_EQ27 = 1e-12
+mp.dps = 30
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def read(path):
@@ -151,6 +167,81 @@ def bootstrap(points, resamples, seed, level):
     return (percentile(med, t), percentile(med, 1 - t), percentile(bet, t), percentile(bet, 1 - t))
 
 
+def eq27(x):
+    """Eq. 27 (the behaviour factor for six pulses) as printed, at 30 digits."""
+    x = mpf(x)
+    s2 = lambda v: sinh(v) ** 2
+    return (mpf(2) / 3 * s2(3 * x) + mpf(1) / 3) / (s2(x) - s2(x / 2) + s2(2 * x) - s2(2.5 * x) - s2(1.5 * x)
+                                                    + mpf(2) / 3 * s2(3 * x))
+
+
+def wilson(k, n, level):
+    z = NormalDist().inv_cdf(0.5 + level / 2)
+    ph, z2n = k / n, z * z / n
+    centre = (ph + z2n / 2) / (1 + z2n)
+    half = z * math.sqrt(ph * (1 - ph) / n + z2n / (4 * n)) / (1 + z2n)
+    return (0.0 if k == 0 else centre - half, 1.0 if k == n else centre + half)
+
+
+def record_bootstrap(counts, blocks, resamples, seed, level):
+    """counts[r][k]: record r's non-conservative cases for k, of `blocks`."""
+    rng, n = GslMt19937(seed), len(counts)
+    shares = [[] for _ in range(11)]
+    for _ in range(resamples):
+        drawn = [counts[rng.uniform_int(n)] for _ in range(n)]
+        for k in range(11):
+            shares[k].append(sum(c[k] for c in drawn) / (n * blocks))
+    t = (1 - level) / 2
+    return [(percentile(v, t), percentile(v, 1 - t)) for v in shares]
+
+
+def check_eq27(pts, rows, to_of, failures):
+    """fragility_eq27.csv from fragility_points.csv and table2's to_k; returns the values compared."""
+    records = list(dict.fromkeys(p["record"] for p in pts))
+    blocks = list(dict.fromkeys((p["alpha"], p["p"]) for p in pts))
+    # nc[r][b][k]: the verdict of record r on block b for to_k.
+    nc = {r: {} for r in records}
+    for p in pts:
+        if p["outcome"] == "censored":
+            verdict = [False] * 11  # collapse q above q_max, unknown: counted as conservative
+        else:
+            q = float(p["q_collapse"] if p["q_collapse"] != "-" else p["q_ill_collapse"])
+            verdict = [q < eq27(float(p["p"]) * to) for to in to_of[p["record"]]]
+        nc[p["record"]][(p["alpha"], p["p"])] = verdict
+    counts = [[sum(nc[r][b][k] for b in blocks) for k in range(11)] for r in records]
+    n_cases = len(records) * len(blocks)
+    checked = 0
+    if len(rows) != 11:
+        failures.append("eq27: %d rows, not 11" % len(rows))
+        return checked
+    boot = None
+    for k, row in enumerate(rows):
+        name = "eq27 to_%d" % (k + 1)
+        got = {"k": k + 1, "non_conservative": sum(c[k] for c in counts), "cases": n_cases,
+               "blocks_with_any": sum(any(nc[r][b][k] for r in records) for b in blocks),
+               "records_with_any": sum(c[k] > 0 for c in counts), "records": len(records)}
+        for key, v in got.items():
+            checked += 1
+            if int(row[key]) != v:
+                failures.append("%s %s: Python %d, CSV %s" % (name, key, v, row[key]))
+        share = got["non_conservative"] / n_cases
+        close = {"share": share}
+        close["wilson_lo"], close["wilson_hi"] = wilson(got["non_conservative"], n_cases, 0.95)
+        for key, v in close.items():
+            checked += 1
+            want = float(row[key])
+            if abs(v - want) > TOL_EQ27 * abs(want):
+                failures.append("%s %s: Python %.17g, CSV %.17g" % (name, key, v, want))
+        if boot is None:
+            boot = record_bootstrap(counts, len(blocks), int(row["resamples"]), int(row["seed"]),
+                                    float(row["boot_level"]))
+        for key, v in zip(("boot_lo", "boot_hi"), boot[k]):
+            checked += 1
+            if v != float(row[key]):  # exact: counts over 64, one interpolation, the same on both sides
+                failures.append("%s %s: Python %.17g, CSV %s" % (name, key, v, row[key]))
+    return checked
+
+
 def main():
     d = sys.argv[1] if len(sys.argv) > 1 else "."
     pts = read(d + "/fragility_points.csv")
@@ -192,7 +283,15 @@ def main():
             got = bootstrap(points, int(f["resamples"]), int(f["seed"]), float(f["level"]))
             for v, k in zip(got, ("median_lo", "median_hi", "beta_lo", "beta_hi")):
                 agree(name + " " + k, v, float(f[k + sfx]))
-    print("fragility independent: %d values, worst relative deviation %.2g" % (checked, worst))
+    print("fragility independent: %d fit values, worst relative deviation %.2g" % (checked, worst))
+    t2 = read(os.path.join(HERE, "..", "table2", "table2_records.csv"))
+    to_of = {r["record"]: [float(r["to_%d" % k]) for k in range(1, 12)] for r in t2}
+    missing = sorted({p["record"] for p in pts} - set(to_of))
+    if missing:
+        failures.append("eq27: no to_k in expected/table2 for " + ", ".join(missing))
+    else:
+        n = check_eq27(pts, read(d + "/fragility_eq27.csv"), to_of, failures)
+        print("fragility independent: %d eq. 27 values (counts, bootstrap bounds exact; share, Wilson 1e-12)" % n)
     for x in failures:
         print("  FAIL " + x)
     return 1 if failures else 0

@@ -2,7 +2,8 @@
 // record's incremental dynamic analysis (IDA) on each block, its first
 // collapse q with the check of that bracket, the lognormal fit per block with
 // a seeded bootstrap interval, and eq. 27's share of non-conservative cases
-// per to_k over the same points (no IDA is run twice).
+// per to_k over the same points (no IDA is run twice), with its bootstrap
+// over records (the same resamples, seed and level as the fits').
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -118,7 +119,8 @@ void run_fragility(SceneContext& ctx) {
     std::vector<std::vector<studies::IdaPoint>> points(rows.size());
     for (std::size_t r = 0; r < rows.size(); ++r)
         for (std::size_t b = 0; b < kBlocks.size(); ++b) points[r].push_back(study[b].points[r]);
-    const studies::Eq27Study eq27 = studies::eq27_from_points(points, to, kBlocks, kWilsonLevel);
+    const studies::Eq27Study eq27 =
+        studies::eq27_from_points(points, to, kBlocks, kWilsonLevel, {kResamples, kSeed, kBootstrapLevel});
 
     const std::string model = o.ida.describe_model();
     const std::string grid = o.ida.describe_grid() + "; q = PGA/(alpha g), the record scaled (studies::scaled)";
@@ -222,17 +224,24 @@ void run_fragility(SceneContext& ctx) {
         if (!f.fitted) ft.note("no fit alpha " + label(f.block.alpha) + " p " + label(f.block.p), f.no_fit);
     }
 
-    harness::Table et({"k", "non_conservative", "cases", "share", "wilson_lo", "wilson_hi", "blocks_with_any"});
+    harness::Table et({"k", "non_conservative", "cases", "share", "wilson_lo", "wilson_hi", "blocks_with_any",
+                       "records_with_any", "records", "boot_lo", "boot_hi", "boot_level", "resamples", "seed"});
     et.note("scene", "fragility: eq. 27's share of non-conservative cases per to_k over these records and blocks");
     et.note("model", "eq. 27 (q2_n6 at x = p to_k) against each record's first collapse q (fragility_points.csv)");
-    et.note("solver", "studies::eq27_from_points on the IDA points of this scene (no IDA rerun)");
+    et.note("solver", "studies::eq27_from_points on the IDA points of this scene (no IDA rerun); bootstrap over "
+                      "records: " + std::string(boot) + ", each drawn record bringing its cases on all " +
+                      std::to_string(kBlocks.size()) + " blocks, the same draws for every k");
     et.note("inputs", inputs_text + "; to_k: the records' half-periods (table2)");
     char wil[160];
-    std::snprintf(wil, sizeof wil, "Wilson score interval at %.0f %%, the cases taken as independent", 100 * kWilsonLevel);
+    std::snprintf(wil, sizeof wil,
+                  "wilson_lo..hi: Wilson score interval at %.0f %%, the cases taken as independent (they are not: "
+                  "the blocks share their records)", 100 * kWilsonLevel);
     et.note("columns",
             "a case (record, block) is non-conservative for k when collapse q < eq. 27's q; a censored record never "
             "is (" + std::to_string(eq27.censored) + " censored cases); " + wil +
-                "; blocks_with_any: blocks on which at least one record is non-conservative");
+                "; blocks_with_any: blocks on which at least one record is non-conservative; records_with_any: "
+                "records non-conservative on at least one block, of records; boot_lo..hi: the percentile interval "
+                "at boot_level of the share over resamples of the records (the interval to quote)");
     // How near a verdict is to flipping: the smallest |ln(collapse q / eq. 27's q)| over the collapsed cases.
     // The ill-conditioned first collapses, placed within their grid gap, apart.
     double margin = 1e300, margin_ill = 1e300;
@@ -262,12 +271,43 @@ void run_fragility(SceneContext& ctx) {
                                   "well-conditioned first collapse: ") + mg + " (" + margin_at + "); over those with an "
                                   "ill-conditioned one: " + (margin_ill < 1e300 ? mgi : "none") +
                           "; a verdict flips only if a collapse q moves by that much");
+    // The two intervals at one level: Wilson's at the bootstrap's, width against width.
+    double ratio_lo = 1e300, ratio_hi = 0;
+    std::string zeros;
+    for (int k = 0; k < studies::kHalfPeriods; ++k) {
+        const studies::Eq27Share& s = eq27.shares[k];
+        if (s.non_conservative == 0) {
+            zeros += (zeros.empty() ? "to_" : ", to_") + std::to_string(k + 1);
+            continue;
+        }
+        const studies::WilsonInterval w = studies::wilson_interval(s.non_conservative, s.cases, kBootstrapLevel);
+        const double r = (s.bootstrap.hi - s.bootstrap.lo) / (w.hi - w.lo);
+        ratio_lo = std::min(ratio_lo, r);
+        ratio_hi = std::max(ratio_hi, r);
+    }
+    char lv[400];
+    std::snprintf(lv, sizeof lv,
+                  "the columns hold a %.0f %% bootstrap beside a %.0f %% Wilson interval; at %.0f %% both, the "
+                  "bootstrap's width is %.3g to %.3g times Wilson's over the k with a non-conservative case",
+                  100 * kBootstrapLevel, 100 * kWilsonLevel, 100 * kBootstrapLevel, ratio_lo, ratio_hi);
+    et.note("levels", lv);
+    if (!zeros.empty()) {
+        // Clopper-Pearson's upper bound for 0 of n at the two-sided level: 1 - ((1 - level)/2)^(1/n).
+        char z[400];
+        std::snprintf(z, sizeof z,
+                      ": no case and no record non-conservative, so the bootstrap is [0, 0] (no resample can draw a "
+                      "record that is not there); over records, 0 of %d bounds the share of records non-conservative "
+                      "anywhere, and so the share of cases, by %.3g (Clopper-Pearson at %.0f %%)",
+                      eq27.records, 1 - std::pow((1 - kBootstrapLevel) / 2, 1.0 / eq27.records), 100 * kBootstrapLevel);
+        et.note("zero", zeros + z);
+    }
     for (int k = 0; k < studies::kHalfPeriods; ++k) {
         const studies::Eq27Share& s = eq27.shares[k];
         int with_any = 0;
         for (const studies::Eq27Cell& c : eq27.map) with_any += c.non_conservative[k] > 0;
         et.row().add(k + 1).add(s.non_conservative).add(s.cases).add(s.share).add(s.wilson.lo).add(s.wilson.hi);
-        et.add(with_any);
+        et.add(with_any).add(s.records_with_any).add(s.records).add(s.bootstrap.lo).add(s.bootstrap.hi);
+        et.add(eq27.bootstrap.level).add(eq27.bootstrap.resamples).add(std::to_string(eq27.bootstrap.seed));
     }
 
     harness::Table em({"alpha", "p", "q", "share"});
