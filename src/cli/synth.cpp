@@ -36,7 +36,7 @@ records::PulseParameters pulse_from(const std::string& text) {
 }
 
 // --params: the modulating function as alpha1..3, or as Ia (m/s), D5_95 (s) and
-// tmid (s), each of the last three defaulting to the paper's mean; the filter as
+// tmid (s), each of the last three defaulting to records::StochasticDefaults; the filter as
 // fmid (Hz), fprime (Hz/s), zeta; the post-filter's corner fc (Hz).
 records::StochasticParameters stochastic_from(const Args& a) {
     records::StochasticParameters p = records::default_stochastic_parameters();
@@ -55,8 +55,9 @@ records::StochasticParameters stochastic_from(const Args& a) {
         p.alpha1 = kv.at("alpha1"), p.alpha2 = kv.at("alpha2"), p.alpha3 = kv.at("alpha3");
     } else if (arias) {
         auto value = [&](const char* key, double fallback) { return kv.count(key) ? kv.at(key) : fallback; };
-        p = records::with_arias_modulation(p, value("Ia", 0.0468 * dynamics::kGravity), value("D5_95", 17.3),
-                                           value("tmid", 12.4));
+        using D = records::StochasticDefaults;
+        p = records::with_arias_modulation(p, value("Ia", D::Ia_s_g * dynamics::kGravity), value("D5_95", D::D5_95_s),
+                                           value("tmid", D::tmid_s));
     }
     return p;
 }

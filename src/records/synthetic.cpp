@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <cstdlib>
 #include <limits>
 #include <memory>
@@ -81,6 +82,18 @@ double pulse_acceleration(const PulseParameters& p, double t) {
            (std::sin(envelope) * std::cos(carrier) + p.gamma * std::sin(carrier) * (1 + std::cos(envelope)));
 }
 
+double pulse_displacement(const PulseParameters& p, double t) {
+    const double h = half_width(p), s = std::max(-h, std::min(h, t - p.t0));
+    if (t - p.t0 < -h) return 0;
+    const double b = 2 * M_PI * p.fp, g = p.gamma;
+    auto F = [&](double x) {
+        return p.A / (4 * M_PI * p.fp) *
+               (std::sin(b * x + p.nu) + g / (2 * (g - 1)) * std::sin(b * (g - 1) / g * x + p.nu) +
+                g / (2 * (g + 1)) * std::sin(b * (g + 1) / g * x + p.nu));
+    };
+    return F(s) - F(-h);
+}
+
 Record pulse_record(const PulseParameters& p, double dt, double duration) {
     check_pulse(p);
     const std::size_t n = sample_count(dt, duration);
@@ -114,12 +127,13 @@ Record pulse_record(const PulseParameters& p, double dt, double duration) {
 // ---- stochastic ----
 
 StochasticParameters default_stochastic_parameters() {
+    using D = StochasticDefaults;
     StochasticParameters p;
-    p.omega_mid = 2 * M_PI * 5.87;
-    p.omega_prime = 2 * M_PI * -0.089;
-    p.zeta_f = 0.213;
-    p.omega_c = 2 * M_PI * 0.2;
-    return with_arias_modulation(p, 0.0468 * kGravity, 17.3, 12.4);
+    p.omega_mid = 2 * M_PI * D::fmid_hz;
+    p.omega_prime = 2 * M_PI * D::fprime_hz_s;
+    p.zeta_f = D::zeta_f;
+    p.omega_c = 2 * M_PI * D::fc_hz;
+    return with_arias_modulation(p, D::Ia_s_g * kGravity, D::D5_95_s, D::tmid_s);
 }
 
 namespace {
@@ -303,7 +317,7 @@ Record stochastic_record(const StochasticParameters& p, std::uint64_t seed, doub
     const double Ia = M_PI / (2 * kGravity) * p.alpha1 * p.alpha1 *
                       std::exp(gsl_sf_lngamma(k) - k * std::log(2 * p.alpha3));
     r.header = {{"generator", "Rezaeian & Der Kiureghian (2008) modulated filtered white noise, critically damped "
-                              "high-pass post-filter"},
+                              "high-pass post-filter (Rezaeian & Der Kiureghian 2010)"},
                 {"rng", "gsl_rng_mt19937, gsl_ran_gaussian_ziggurat"},
                 {"seed", std::to_string(seed)},
                 {"alpha1", text_of(p.alpha1)},

@@ -1,6 +1,7 @@
 // Synthetic ground motions whose answers are known: a near-fault velocity pulse
 // in closed form (Mavroeidis & Papageorgiou 2003) and a seeded stochastic
-// far-field record (Rezaeian & Der Kiureghian 2008).  Each comes back as a
+// far-field record (Rezaeian & Der Kiureghian 2008, with the post-filter and
+// the default parameters of their 2010 work).  Each comes back as a
 // Record in m/s^2 whose header names the generator and every parameter, so
 // that a study run on it can state its inputs.  Derivations, the parameters'
 // sources and what was checked: docs/synthetic.md.
@@ -36,6 +37,13 @@ double pulse_velocity(const PulseParameters& p, double t);
 // on the same support, 0 outside: v's exact derivative (not a finite
 // difference), continuous at the support's ends where both brackets vanish.
 double pulse_acceleration(const PulseParameters& p, double t);
+// The displacement from rest before the pulse: int v from t0 - gamma/(2 fp) to t,
+// by the paper's closed form (gamma != 1), s = t - t0, b = 2 pi fp:
+//   F(s) = A/(4 pi fp) [sin(b s + nu) + gamma/(2 (gamma - 1)) sin(b (gamma - 1)/gamma s + nu)
+//                       + gamma/(2 (gamma + 1)) sin(b (gamma + 1)/gamma s + nu)],
+// D(t) = F(s) - F(-gamma/(2 fp)) on the support, 0 before it, and after it the
+// residual displacement F(h) - F(-h) = A cos(nu) sin(pi gamma) / (2 pi fp (1 - gamma^2)), h = gamma/(2 fp).
+double pulse_displacement(const PulseParameters& p, double t);
 // a(k dt), k = 0 .. n - 1 with n - 1 = floor(duration/dt): the whole pulse
 // must lie in [0, duration] (t0 - gamma/(2 fp) >= 0, t0 + gamma/(2 fp) <= duration),
 // so that the velocity integrated from rest at t = 0 is the pulse's.
@@ -57,9 +65,21 @@ struct StochasticParameters {
     double omega_c = 0;  // rad/s
 };
 
-// The defaults: Rezaeian & Der Kiureghian's sample means (Ia = 0.0468 s g,
-// D5-95 = 17.3 s, t_mid = 12.4 s, omega_mid/2pi = 5.87 Hz, omega'/2pi = -0.089 Hz/s,
-// zeta_f = 0.213) with the post-filter at 0.2 Hz; provenance in docs/synthetic.md.
+// The defaults' physical values: the sample means of the parameters Rezaeian &
+// Der Kiureghian (2010) fitted to NGA far-field records on firm ground, and the
+// post-filter's corner.  Each one's source, and how far it was verified, is in
+// docs/synthetic.md ("Parameters and defaults").
+struct StochasticDefaults {
+    static constexpr double Ia_s_g = 0.0468;          // expected Arias intensity, s g (x 9.81 for m/s)
+    static constexpr double D5_95_s = 17.3;           // 5-95 % duration, s
+    static constexpr double tmid_s = 12.4;            // 45 % Arias time, s
+    static constexpr double fmid_hz = 5.87;           // omega_mid / 2 pi, Hz
+    static constexpr double fprime_hz_s = -0.089;     // omega' / 2 pi, Hz/s
+    static constexpr double zeta_f = 0.213;           // filter damping
+    static constexpr double fc_hz = 0.2;              // post-filter corner omega_c / 2 pi, Hz
+};
+
+// StochasticDefaults as model parameters (the alphas through with_arias_modulation).
 StochasticParameters default_stochastic_parameters();
 
 // q(t) = alpha1 t^(alpha2 - 1) exp(-alpha3 t) for t >= 0.
