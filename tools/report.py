@@ -27,6 +27,7 @@ from matplotlib.backends.backend_pdf import PdfPages  # noqa: E402
 from matplotlib.font_manager import FontProperties  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Rectangle  # noqa: E402
+from matplotlib.ticker import FuncFormatter, LogLocator, MaxNLocator, NullFormatter  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import findings  # noqa: E402
@@ -75,6 +76,61 @@ def short(v, n=4):
 def plain(s):
     """Markdown to the page's plain text."""
     return s.replace("`", "").replace("**", "")
+
+
+def dict_rows(table):
+    """The rows of a read() table as dicts by column name: columns are read by name, extra ones ignored."""
+    _, header, rows = table
+    return [dict(zip(header, r)) for r in rows]
+
+
+def num(v):
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        return float("nan")
+
+
+def group_label(row, known):
+    """A set label from the columns a later run may add (a text column beside the known ones, such as
+    one naming synthetic records): '' when there is none, so that today's files form one group."""
+    return ", ".join(f"{k} {v}" for k, v in row.items()
+                     if k not in known and v not in ("", "-") and not math.isfinite(num(v)) and v != "nan")
+
+
+# The columns the fragility pages know; any other text column marks a set of rows (group_label).
+FIT_COLUMNS = ["alpha", "p", "records", "collapsed", "censored", "ill_conditioned", "median", "beta",
+               "log_likelihood", "median_lo", "median_hi", "beta_lo", "beta_hi", "median_ill", "beta_ill",
+               "log_likelihood_ill", "median_lo_ill", "median_hi_ill", "beta_lo_ill", "beta_hi_ill", "resamples",
+               "seed", "level"]
+EQ27_COLUMNS = ["k", "non_conservative", "cases", "share", "wilson_lo", "wilson_hi", "boot_lo", "boot_hi",
+                "blocks_with_any"]
+
+
+def plain_log_ticks(ax):
+    """A log x axis labelled 0.3, 1, 3, 10, 30 rather than in powers of ten."""
+    ax.xaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 3.0)))
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    ax.xaxis.set_minor_formatter(NullFormatter())
+
+
+def ratio_text(v):
+    """A ratio near 1 with the digits that show how near: 0.999994, not 1."""
+    x = num(v)
+    return f"{x:.6f}" if math.isfinite(x) else v
+
+
+def phi_cdf(z):
+    return 0.5 * math.erfc(-z / math.sqrt(2))
+
+
+def record_label(path):
+    """esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC -> NRC HGE 2016-08-24 01:36; otherwise the file's name."""
+    base = os.path.basename(path)
+    f = base.split(".")
+    if len(f) >= 7 and len(f[5]) == 8 and len(f[6]) == 6 and f[5].isdigit():
+        return f"{f[1]} {f[3]} {f[5][:4]}-{f[5][4:6]}-{f[5][6:]} {f[6][:2]}:{f[6][2:4]}"
+    return base
 
 
 SUMMARY = {}
@@ -675,7 +731,329 @@ with PdfPages(os.path.join(OUT, "report.pdf")) as pdf:
         L.text("fig12_summary.csv: " + "; ".join(f"{r[0]}: {short(r[1])}" for r in s12[2]) + ".", 7.5)
         entry_verdicts(L, ["F12"])
 
-    # 10. Work-precision.
+    # 10. The rocking spectrum of the Norcia records (issue 28).
+    sp_iv, sp_sm = read("spectrum", "spectrum_intervals.csv"), read("spectrum", "spectrum_summary.csv")
+    if sp_iv and sp_sm:
+        IV, SM = dict_rows(sp_iv), dict_rows(sp_sm)
+        sp_alphas = sorted({r["alpha"] for r in SM}, key=float)
+        sp_records = list(dict.fromkeys(r["record"] for r in SM))
+        by_pair = {}
+        for r in IV:
+            by_pair.setdefault((r["record"], r["alpha"]), []).append(r)
+        table1_p = {(r["record"], r["alpha"]): num(r["table1_p"]) for r in SM}
+        ends = [(r, s) for r in IV for s in ("from", "to")]
+        checks = [r[f"{s}_check"] for r, s in ends]
+        n_conf, n_ill = checks.count("confirmed"), checks.count("ill-conditioned")
+        n_dis, n_grid = checks.count("second solver disagrees"), sum(c in ("grid start", "grid end") for c in checks)
+        widths = sorted((num(r["to"]) - num(r["from"])) / num(r["from"]) for r in IV)
+        narrow = [w for w in widths if w < 0.01]
+        pairs_over = [k for k in table1_p if by_pair.get(k)]
+        off_grid = [r for r in SM if r["table1_on_island_off_grid"] == "yes"]
+        below = sorted((num(r["lowest_over_table1"]), r["record"], r["alpha"]) for r in SM
+                       if num(r["lowest_over_table1"]) < 0.999)
+
+        def draw_intervals(L, rect):
+            x, y, w, h = rect
+            axs = L.grid((x, y, w, h - 0.25), len(sp_alphas), 1, pad_l=1.5, pad_t=0.22, pad_b=0.36)
+            for ax, a in zip(axs, sp_alphas):
+                for y, rec in enumerate(sp_records):
+                    for r in by_pair.get((rec, a), []):
+                        lo, hi = num(r["from"]), num(r["to"])
+                        ax.plot([lo, hi], [y, y], c="#c0392b", lw=4, solid_capstyle="butt")
+                        if hi / lo < 1.01:      # an island narrower than 1 %: a tick, or it would not show
+                            ax.plot([lo], [y], "|", c="#c0392b", ms=7, mew=1.2)
+                        for s, at in (("from", lo), ("to", hi)):
+                            c = r[f"{s}_check"]
+                            if c == "ill-conditioned":
+                                ax.plot([at], [y], "x", c="k", ms=7, mew=1.5)
+                            elif c == "second solver disagrees":
+                                ax.plot([at], [y], "D", c="orange", ms=5)
+                    tp = table1_p.get((rec, a), math.nan)
+                    if math.isfinite(tp):
+                        ax.plot([tp], [y - 0.3], "v", c="#1f5fbf", ms=4.5, mec="white", mew=0.4)
+                ax.set_xscale("log")
+                ax.set_xlim(0.3, 30)
+                plain_log_ticks(ax)
+                ax.set_ylim(len(sp_records) - 0.5, -0.8)
+                ax.set_yticks(range(len(sp_records)))
+                ax.set_yticklabels([record_label(r) for r in sp_records], fontsize=5.5)
+                ax.tick_params(axis="x", labelsize=6)
+                ax.grid(True, axis="x", which="both", alpha=0.25)
+                ax.set_title(f"α = {a}", fontsize=7.5)
+                ax.set_xlabel("p [rad/s]", fontsize=6.5)
+            handles = [Line2D([], [], c="#c0392b", lw=4), Line2D([], [], ls="", marker="v", c="#1f5fbf"),
+                       Line2D([], [], ls="", marker="x", c="k", mew=1.5),
+                       Line2D([], [], ls="", marker="D", c="orange")]
+            L.legend(handles, ["overturning interval (tick: narrower than 1 %)", "Table 1's p",
+                               "ill-conditioned end", "second solver disagrees"], rect, 0.25, ncol=4)
+
+        L.page("The rocking spectrum of the Norcia records: overturning intervals in p",
+               "Compares the set of p at which each Norcia record overturns the block (linearised eq. 3, exact "
+               "solver, Housner's restitution, free rocking followed; a log grid of 200 + 199 p in 0.3-30 rad/s, "
+               "boundaries bisected to 1e-6 and each checked) with Table 1's single p, the first collapse of its 1 % "
+               f"scan ({verdicts(['T1d'])}); {run_status(['spectrum'])}.")
+        scene_status(L, "spectrum", sp_iv[0])
+        if "grid" in sp_iv[0]:
+            L.text(f"grid: {sp_iv[0]['grid']}", 7, color="#333333")
+        L.text(f"{len(IV)} intervals over the {len(pairs_over)} of {len(SM)} (record, α) pairs that overturn on the "
+               f"grid ({len(SM) - len(pairs_over)} overturn nowhere up to 30 rad/s). Their {len(ends) - n_grid} "
+               f"boundaries: {n_conf} confirmed (the input × (1 ± 1e-13) flips nothing and GSL rk8pd at 1e-13 sees "
+               f"the same bracket), {n_ill} ill-conditioned (rounding places it: flagged, not confirmed), {n_dis} "
+               f"where the second solver disagrees; {n_grid} ends are the grid's own (30 rad/s). "
+               f"{len(narrow)} intervals are narrower than 1 % in p"
+               + (f" (their median width {100 * narrow[len(narrow) // 2]:.2g} %, the narrowest "
+                  f"{narrow[0]:.2g} relative)" if narrow else "") + ".", 8)
+        L.figure(min(7.4, 0.95 + 1.3 * len(sp_alphas)), draw_intervals)
+        L.text(f"Table 1's p lies on an island that no grid point reached (found only through its own bracket) in "
+               f"{len(off_grid)} of the {len(pairs_over)} pairs. The spectrum's lowest overturning p is more than "
+               f"0.1 % below Table 1's in {len(below)} pairs"
+               + (": " + "; ".join(f"{record_label(rec)} α {a}: {100 * (1 - v):.2g} % lower"
+                                   for v, rec, a in below[:4]) + ("; ..." if len(below) > 4 else "") if below else "")
+               + ".", 8)
+        for k, v in sp_iv[0].items():
+            if k.startswith("detail "):
+                L.text(f"Ill-conditioned: {k[len('detail '):]}: {v}.", 7.5, color="#333333", gap=0.03)
+        L.text("Independent checks (make test): reference_spectrum re-simulates both ends of every confirmed "
+               "bracket with rk8pd through table1's path; independent_spectrum does so with a Python "
+               "re-implementation of the model that shares no code with the C++.", 7.5, color="#333333")
+
+        # The spectra themselves, for two pairs picked by the data: the lowest p furthest below Table 1's,
+        # and the first pair whose Table 1 p lies on an island no grid point reached.
+        sp_gd = read("spectrum", "spectrum_grid.csv")
+        picks = []
+        if below:
+            picks.append((below[0][1], below[0][2], "lowest p furthest below Table 1's"))
+        if off_grid and (off_grid[0]["record"], off_grid[0]["alpha"]) not in [(p[0], p[1]) for p in picks]:
+            picks.append((off_grid[0]["record"], off_grid[0]["alpha"], "Table 1's p on an island off the grid"))
+        if sp_gd and picks:
+            GD = {}
+            for r in dict_rows(sp_gd):
+                GD.setdefault((r["record"], r["alpha"]), []).append((num(r["p"]), num(r["max_theta_over_alpha"]),
+                                                                     r["overturning"] == "yes"))
+
+            def draw_spectra(L, rect):
+                axs = L.grid(rect, 2, len(picks), pad_l=0.62, pad_t=0.42, pad_b=0.45)
+                for c, (rec, a, why) in enumerate(picks):
+                    pts = sorted(GD.get((rec, a), []))
+                    tp = table1_p.get((rec, a), math.nan)
+                    ivs = by_pair.get((rec, a), [])
+                    lo_zoom = min([num(r["from"]) for r in ivs[:1]] + ([tp] if math.isfinite(tp) else [])) / 1.06
+                    hi_zoom = (tp if math.isfinite(tp) else lo_zoom * 1.06) * 1.06
+                    for row, (x0, x1) in enumerate([(0.3, 30), (lo_zoom, hi_zoom)]):
+                        ax = axs[row * len(picks) + c]
+                        for r in ivs:
+                            lo, hi = num(r["from"]), num(r["to"])
+                            if hi >= x0 and lo <= x1:
+                                ax.axvspan(lo, hi, color="#f2b8b5", lw=0)
+                                if hi / lo < 1.002:
+                                    ax.axvline(lo, color="#e06666", lw=0.8)
+                        ax.semilogy([p[0] for p in pts], [p[1] for p in pts], "k-", lw=0.7)
+                        ax.plot([p[0] for p in pts if p[2]], [p[1] for p in pts if p[2]], ".", c="#c0392b", ms=2.5)
+                        if math.isfinite(tp):
+                            ax.axvline(tp, c="#1f5fbf", ls="--", lw=1)
+                        if row == 0:
+                            ax.set_xscale("log")
+                            plain_log_ticks(ax)
+                        else:
+                            ax.xaxis.set_major_locator(MaxNLocator(5))
+                        ax.set_xlim(x0, x1)
+                        ax.set_ylim(1e-3, 100)
+                        ax.tick_params(labelsize=6)
+                        ax.set_xlabel("p [rad/s]", fontsize=6.5)
+                        ax.set_ylabel("max |θ|/α during the record", fontsize=6.5)
+                        ax.set_title(f"{record_label(rec)}, α = {a}" + ("" if row == 0 else ", near Table 1's p")
+                                     + ("\n" + why if row == 0 else ""), fontsize=7)
+                        ax.grid(True, which="both", alpha=0.25)
+
+            L.need(5.0)
+            L.text("Two spectra, picked from the data: max |θ|/α during the record at every grid point (black; red "
+                   "dots: the block overturns there), the overturning intervals shaded (a thin red line for one "
+                   "narrower than 0.2 %), Table 1's p dashed blue; below, the same near Table 1's p.", 8)
+            L.figure(6.0, draw_spectra)
+
+        L.text("Per record and α (spectrum_summary.csv): the number of intervals, the spectrum's lowest overturning p "
+               "against Table 1's, and the checks of the boundaries.", 8, weight="bold", gap=0.04)
+        L.text("Columns: intervals; the lowest overturning p [rad/s]; Table 1's p; their ratio; the boundaries, "
+               "confirmed, ill-conditioned and where the second solver disagrees; whether Table 1's p lies on an "
+               "island no grid point reached.", 7, color="#333333", gap=0.04)
+        L.table(["record", "α", "int.", "lowest p", "Table 1's p", "ratio", "bound.", "conf.", "ill", "dis.",
+                 "off grid"],
+                [[record_label(r["record"]), r["alpha"], r["intervals"], short(r["lowest_p"], 7),
+                  short(r["table1_p"], 7), ratio_text(r["lowest_over_table1"]), r["boundaries"], r["confirmed"],
+                  r["ill_conditioned"], r["disagrees"], r["table1_on_island_off_grid"]] for r in SM],
+                [20, 5, 5, 10, 13, 9, 6, 6, 5, 5, 7], size=6.5)
+    else:
+        L.page("The rocking spectrum of the Norcia records",
+               "Would compare the Norcia records' overturning intervals in p with Table 1's p.")
+        L.text(f"No spectrum_intervals.csv / spectrum_summary.csv in {OUT}/spectrum: the scene writes them only "
+               "with the shared records folder (../shared/records or $ROCKING_RECORDS).", 8.5)
+
+    # 11. Fragility over the shared records (issue 28).
+    fr_fit, fr_emp, fr_27 = (read("fragility", n) for n in ("fragility_fits.csv", "fragility_empirical.csv",
+                                                              "fragility_eq27.csv"))
+    fr_pts = read("fragility", "fragility_points.csv")
+    if fr_fit:
+        FITS = dict_rows(fr_fit)
+        known_fit = set(FIT_COLUMNS)
+        EMP = dict_rows(fr_emp) if fr_emp else []
+        blocks = []
+        for r in FITS:
+            key = (r["alpha"], r["p"], group_label(r, known_fit))
+            if key not in blocks:
+                blocks.append(key)
+
+        def fit_of(r):
+            """(median, beta, lo/hi of each, ill): the block's fit, or its fit with the ill-conditioned point."""
+            for suffix, ill in (("", False), ("_ill", True)):
+                m, b = num(r.get("median" + suffix)), num(r.get("beta" + suffix))
+                if math.isfinite(m) and math.isfinite(b):
+                    return (m, b, [num(r.get(f"median_lo{suffix}")), num(r.get(f"median_hi{suffix}"))],
+                            [num(r.get(f"beta_lo{suffix}")), num(r.get(f"beta_hi{suffix}"))], ill)
+            return None
+
+        def draw_fragility(L, rect):
+            ncol = 2 if len(blocks) > 1 else 1
+            nrow = (len(blocks) + ncol - 1) // ncol
+            x, y, w, h = rect
+            axs = L.grid((x, y, w, h - 0.4), nrow, ncol, pad_l=0.6, pad_t=0.42, pad_b=0.45)
+            q_hi = max([20.0] + [num(r["q"]) for r in EMP if math.isfinite(num(r["q"]))])
+            qs = [math.exp(math.log(1.0) + (math.log(q_hi) - math.log(1.0)) * i / 300) for i in range(301)]
+            for ax, (a, p, grp) in zip(axs, blocks):
+                rows = [r for r in FITS if (r["alpha"], r["p"], group_label(r, known_fit)) == (a, p, grp)]
+                fit = fit_of(rows[0]) if rows else None
+                title = f"α = {a}, p = {p} rad/s" + (f" ({grp})" if grp else "")
+                if fit:
+                    m, b, mlh, blh, ill = fit
+                    ax.plot(qs, [phi_cdf(math.log(q / m) / b) for q in qs], c="#b3261e", lw=1.6,
+                            ls="--" if ill else "-")
+                    if all(math.isfinite(v) for v in mlh + blh):
+                        corners = [(mm, bb) for mm in mlh for bb in blh]
+                        env = [[phi_cdf(math.log(q / mm) / bb) for mm, bb in corners] for q in qs]
+                        ax.fill_between(qs, [min(e) for e in env], [max(e) for e in env], color="#f2b8b5",
+                                        alpha=0.7, lw=0)
+                    title += f"\nmedian {m:.3g} [{mlh[0]:.3g}, {mlh[1]:.3g}], β {b:.3g} [{blh[0]:.3g}, {blh[1]:.3g}]"
+                    if ill:
+                        title += " (with its ill-conditioned point)"
+                else:
+                    title += "\nno fit"
+                r0 = rows[0] if rows else {}
+                em = [r for r in EMP if (r["alpha"], r["p"]) == (a, p) and group_label(r, {"alpha", "p", "q", "share"}) == grp]
+                ax.plot([num(r["q"]) for r in em], [num(r["share"]) for r in em], "o", c="k", ms=3)
+                ax.set_xscale("log")
+                ax.set_xlim(1, q_hi)
+                plain_log_ticks(ax)
+                ax.set_ylim(0, 1.02)
+                ax.set_title(title, fontsize=7)
+                ax.set_xlabel("q = PGA/(α g) [-]", fontsize=6.5)
+                ax.set_ylabel("P(overturn | q)", fontsize=6.5)
+                ax.tick_params(labelsize=6)
+                ax.grid(True, which="both", alpha=0.25)
+                if r0:
+                    ax.text(0.98, 0.04, f"{r0.get('records', '?')} records: {r0.get('collapsed', '?')} overturn, "
+                            f"{r0.get('censored', '?')} censored", transform=ax.transAxes, ha="right", va="bottom",
+                            fontsize=5.5)
+            handles = [Line2D([], [], c="#b3261e", lw=1.6), Rectangle((0, 0), 1, 1, color="#f2b8b5"),
+                       Line2D([], [], ls="", marker="o", c="k", ms=3),
+                       Line2D([], [], c="#b3261e", lw=1.6, ls="--")]
+            L.legend(handles, ["lognormal fit (maximum likelihood, censored kept)",
+                               "bootstrap band (curves over the 90 % intervals of median and β)",
+                               "empirical share", "fit with an ill-conditioned first collapse"], rect, 0.3, ncol=2)
+
+        L.page("Fragility over the shared records, and eq. 27 at scale",
+               "Compares, for each block (α, p), the lognormal fragility curve fitted to the records' first collapse q "
+               "(incremental dynamic analysis, q = PGA/(α g) from 1 to 20; linearised eq. 3, exact solver, Housner's "
+               "restitution, overturning) with the empirical share of records overturned, and then eq. 27 with the "
+               "same collapse points for every definition to_k of the half-period "
+               f"({verdicts(['F11b'])}); {run_status(['fragility'])}.")
+        scene_status(L, "fragility", fr_fit[0])
+        if fr_pts:
+            PTS = dict_rows(fr_pts)
+            n_checks = {}
+            for r in PTS:
+                n_checks[r.get("check", "-")] = n_checks.get(r.get("check", "-"), 0) + 1
+            L.text(f"fragility_points.csv: {len(PTS)} (record, block) points; their first-collapse brackets: "
+                   + ", ".join(f"{v} {k}" for k, v in sorted(n_checks.items()) if k != "-")
+                   + f"; {n_checks.get('-', 0)} censored (no collapse up to q_max).", 8)
+        band_note = "The band is the envelope of the lognormal curves over the rectangle of the bootstrap's " \
+                    "percentile intervals of median and β (marginal intervals, not a joint band)."
+        L.figure(min(7.0, 0.4 + 3.2 * ((len(blocks) + 1) // 2)), draw_fragility)
+        L.text(band_note, 7, color="#333333")
+
+        if fr_27:
+            E27 = dict_rows(fr_27)
+            known_27 = set(EQ27_COLUMNS)
+            groups = list(dict.fromkeys(group_label(r, known_27) for r in E27))
+            intervals = [(lo, hi, name) for lo, hi, name in
+                         (("wilson_lo", "wilson_hi", "Wilson 95 %"), ("boot_lo", "boot_hi", "bootstrap"))
+                         if lo in fr_27[1] and hi in fr_27[1]]
+            # any other *_lo / *_hi pair a later run may add
+            for c in fr_27[1]:
+                if c.endswith("_lo") and c[:-3] + "_hi" in fr_27[1] and c not in [i[0] for i in intervals]:
+                    intervals.append((c, c[:-3] + "_hi", c[:-3]))
+
+            def draw27(L, rect):
+                ax = L.grid(rect, 1, 1, pad_l=0.65, pad_t=0.12, pad_b=0.5)[0]
+                n = len(groups) * max(1, len(intervals))
+                w = 0.7 / max(n, 1)
+                colours = ["#1f5fbf", "#b3261e", "#1a7f37", "#9a6700", "#6a3d9a"]
+                j = 0
+                for g in groups:
+                    rows = [r for r in E27 if group_label(r, known_27) == g]
+                    for lo, hi, name in intervals or [(None, None, "")]:
+                        off = (j - (n - 1) / 2) * w
+                        ks = [num(r["k"]) + off for r in rows]
+                        sh = [num(r["share"]) for r in rows]
+                        lab = " ".join(v for v in (g, name) if v)
+                        if lo:
+                            err = [[max(0.0, s - num(r[lo])) for s, r in zip(sh, rows)],
+                                   [max(0.0, num(r[hi]) - s) for s, r in zip(sh, rows)]]
+                            ax.errorbar(ks, sh, yerr=err, fmt="o", ms=4, capsize=2.5, lw=1,
+                                        c=colours[j % len(colours)], label=f"share, {lab} interval" if lab else "share")
+                        else:
+                            ax.plot(ks, sh, "o", c=colours[j % len(colours)], label="share")
+                        j += 1
+                if any(num(r["k"]) == 5 for r in E27):
+                    ax.axvspan(4.6, 5.4, color="#e8e8e8", lw=0, zorder=0)
+                    ax.text(5, 0.01, "the paper's to_5", ha="center", va="bottom", fontsize=6)
+                ax.set_xticks(sorted({int(num(r["k"])) for r in E27}))
+                ax.set_xticklabels([f"to_{int(num(r))}" for r in sorted({num(r['k']) for r in E27})], fontsize=6.5)
+                # room above 1 for the legend, which would otherwise cover the largest shares
+                ax.set_ylim(0, 1.04 + 0.075 * math.ceil(j / 2))
+                ax.set_yticks([0, 0.2, 0.4, 0.6, 0.8, 1.0])
+                ax.set_ylabel("share of cases non-conservative", fontsize=7)
+                ax.set_xlabel("definition of the half-period", fontsize=7)
+                ax.tick_params(labelsize=6.5)
+                ax.grid(True, axis="y", alpha=0.3)
+                ax.legend(fontsize=6.5, loc="upper center", ncol=2, frameon=False)
+
+            L.need(4.2)
+            L.text("Eq. 27's share of non-conservative cases per to_k (fragility_eq27.csv): a case (record, block) is "
+                   "non-conservative when its first collapse q lies below eq. 27's q at x = p·to_k; a censored record "
+                   "never is.", 8, weight="bold", gap=0.04)
+            L.figure(3.0, draw27)
+            header = ["to_k"] + (["set"] if any(groups) else []) + ["non-conservative", "share"] \
+                + [name + " interval" for _, _, name in intervals] + (["blocks with any"] if "blocks_with_any" in fr_27[1] else [])
+            rows = []
+            for r in E27:
+                g = group_label(r, known_27)
+                rows.append([f"to_{int(num(r['k']))}"] + ([g] if any(groups) else [])
+                            + [f"{r['non_conservative']} of {r['cases']}", short(r["share"], 3)]
+                            + [f"[{short(r[lo], 3)}, {short(r[hi], 3)}]" for lo, hi, _ in intervals]
+                            + ([r["blocks_with_any"]] if "blocks_with_any" in r else []))
+            L.table(header, rows, [6] + ([14] if any(groups) else []) + [12, 7] + [12] * len(intervals)
+                    + ([9] if "blocks_with_any" in fr_27[1] else []), size=7)
+            for key in ("columns", "margin"):
+                if key in fr_27[0]:
+                    L.text(f"{key}: {fr_27[0][key]}", 7, color="#333333", gap=0.03)
+        entry_verdicts(L, ["F11b"])
+    else:
+        L.page("Fragility over the shared records, and eq. 27 at scale",
+               "Would compare each block's lognormal fragility curve with the records' empirical share, and eq. 27's "
+               "share of non-conservative cases per to_k.")
+        L.text(f"No fragility_fits.csv in {OUT}/fragility: the scene writes its files only with the shared records "
+               "folder (../shared/records or $ROCKING_RECORDS).", 8.5)
+
+    # 12. Work-precision.
     wp = os.path.join(OUT, "bench", "work_precision.csv")
     compares_wp = ("Compares each solver's error against its CPU time and its right-hand-side evaluations (make bench) "
                    "on a pulse scene with a closed-form truth and on the Amatrice 2016 record at Norcia; not a claim of "
