@@ -1,7 +1,6 @@
 #include "studies/fragility.hpp"
 
 #include <gsl/gsl_cdf.h>
-#include <gsl/gsl_multimin.h>
 #include <gsl/gsl_sf_erf.h>
 
 #include <algorithm>
@@ -52,35 +51,67 @@ void moments(const std::vector<IdaPoint>& points, double& mu, double& beta) {
     beta = std::sqrt(sum2 / n);
 }
 
-struct Objective {
-    const std::vector<IdaPoint>* points;
-};
-
-// -ln L in (mu, ln beta): the dispersion stays positive without a constraint.
-double minus_log_likelihood(const gsl_vector* v, void* params) {
-    const auto* o = static_cast<const Objective*>(params);
-    return -log_likelihood(*o->points, gsl_vector_get(v, 0), std::exp(gsl_vector_get(v, 1)));
-}
-
+// With censored points, Newton's method in Olsen's (1978) parameters
+// theta = 1/beta, gamma = mu/beta, where z_i = theta ln q_i - gamma and
+//     ln L = sum_collapsed [ln theta - z_i^2/2 - ln q_i - ln(2 pi)/2] + sum_censored ln Q(z_i)
+// is concave (Olsen's theorem for the censored normal), so Newton with a
+// step halved until ln L does not fall reaches the one maximum from the
+// collapsed points' closed form.  A simplex took ~30 times as many
+// evaluations of ln L, and a bootstrap fits thousands of resamples.
+// Derivatives: d ln Q(z)/dz = -h(z), d^2/dz^2 = -h(z)(h(z) - z), with the
+// normal hazard h = phi/Q (GSL's gsl_sf_hazard, accurate for large z).
 void maximise_with_censoring(const std::vector<IdaPoint>& points, double& mu, double& beta) {
-    Objective objective{&points};
-    gsl_multimin_function f{&minus_log_likelihood, 2, &objective};
-    std::unique_ptr<gsl_vector, decltype(&gsl_vector_free)> x(gsl_vector_alloc(2), gsl_vector_free),
-        step(gsl_vector_alloc(2), gsl_vector_free);
-    gsl_vector_set(x.get(), 0, mu);
-    gsl_vector_set(x.get(), 1, std::log(std::max(beta, 1e-3)));
-    gsl_vector_set_all(step.get(), 0.1);
-    std::unique_ptr<gsl_multimin_fminimizer, decltype(&gsl_multimin_fminimizer_free)> s(
-        gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, 2), gsl_multimin_fminimizer_free);
-    gsl_multimin_fminimizer_set(s.get(), &f, x.get(), step.get());
-    // The simplex's size in (ln median, ln beta) down to 1e-12: relative
-    // precision of median and beta far below any record set's sampling error.
-    for (int k = 0; k < 10000; ++k) {
-        if (gsl_multimin_fminimizer_iterate(s.get())) break;
-        if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(s.get()), 1e-12) == GSL_SUCCESS) break;
+    double theta = 1 / beta, gamma = mu / beta;
+    auto lnl = [&](double th, double ga) { return log_likelihood(points, ga / th, 1 / th); };
+    double current = lnl(theta, gamma);
+    for (int iteration = 0; iteration < 200; ++iteration) {
+        double g_th = 0, g_ga = 0, h_thth = 0, h_thga = 0, h_gaga = 0;
+        for (const IdaPoint& p : points) {
+            const double y = std::log(p.q), z = theta * y - gamma;
+            if (p.collapsed) {
+                g_th += 1 / theta - z * y;
+                g_ga += z;
+                h_thth -= 1 / (theta * theta) + y * y;
+                h_thga += y;
+                h_gaga -= 1;
+            } else {
+                const double h = gsl_sf_hazard(z), c = h * (h - z);
+                g_th -= h * y;
+                g_ga += h;
+                h_thth -= c * y * y;
+                h_thga += c * y;
+                h_gaga -= c;
+            }
+        }
+        // The Newton step solves H d = -g (H negative definite).
+        const double det = h_thth * h_gaga - h_thga * h_thga;
+        if (!(det > 0)) break;  // not concave here: only rounding at the maximum does this
+        double d_th = (-g_th * h_gaga + g_ga * h_thga) / det, d_ga = (-g_ga * h_thth + g_th * h_thga) / det;
+        // Converged: Newton's last steps shrink quadratically, and one this
+        // small moves ln L by less than its rounding, so the search below
+        // could not tell up from down.
+        if (std::fabs(d_th) <= 1e-13 * theta && std::fabs(d_ga) <= 1e-13 * std::max(1.0, std::fabs(gamma))) {
+            theta += d_th;
+            gamma += d_ga;
+            break;
+        }
+        // Halve the step until ln L does not fall and theta stays > 0.
+        double next = -INFINITY;
+        for (int halving = 0; halving < 60; ++halving) {
+            if (theta + d_th > 0) {
+                next = lnl(theta + d_th, gamma + d_ga);
+                if (next >= current) break;
+            }
+            d_th *= 0.5;
+            d_ga *= 0.5;
+        }
+        if (!(next >= current)) break;  // no step up: at the maximum to rounding
+        theta += d_th;
+        gamma += d_ga;
+        current = next;
     }
-    mu = gsl_vector_get(s->x, 0);
-    beta = std::exp(gsl_vector_get(s->x, 1));
+    mu = gamma / theta;
+    beta = 1 / theta;
 }
 
 }  // namespace

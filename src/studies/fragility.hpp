@@ -43,7 +43,8 @@ double log_likelihood(const std::vector<IdaPoint>& points, const LognormalFragil
 // (Baker 2015's moment estimates, with 1/n where Baker's sample deviation has
 // 1/(n - 1)); with censored points it maximises
 //     sum_collapsed ln[phi(z_i) / (beta q_i)] + sum_censored ln[1 - Phi(z_i)],  z_i = ln(q_i / median) / beta
-// with GSL's Nelder-Mead simplex from the collapsed points' closed form.
+// by Newton's method in Olsen's concave parameters (1/beta, ln median / beta),
+// from the collapsed points' closed form, to a step of 1e-13 relative.
 // Throws std::invalid_argument with fewer than 2 collapsed points, or a q
 // that is not finite and > 0.
 LognormalFragility fit_lognormal(const std::vector<IdaPoint>& points);
