@@ -5,7 +5,7 @@ JOBS    ?= 2
 # Debian packages the project needs (header-only Boost: Odeint, Math, Multiprecision).
 PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath
 
-.PHONY: all deps build reproduce test bless bench bench-records bench-spectrum report clean
+.PHONY: all deps build reproduce test bless bench bench-records bench-spectrum bench-fragility report clean
 
 all: build
 
@@ -54,6 +54,12 @@ bench-records: build
 bench-spectrum: build
 	cmake --build $(BUILD) --target bench_spectrum -j $(JOBS)
 	$(BUILD)/bench_spectrum --out $(OUT)/bench
+
+# A fragility study's speed, 20 records x 25 blocks on 1 and 2 threads (a benchmark, not a
+# test; about two minutes): out/bench/fragility.txt.
+bench-fragility: build
+	cmake --build $(BUILD) --target bench_fragility -j $(JOBS)
+	$(BUILD)/bench_fragility --out $(OUT)/bench
 
 # One PDF for a reviewer: every reproduced figure and table, the paper's claims, the
 # comparison, the errata and the findings (matplotlib, Debian's /usr/bin/python3).
