@@ -43,6 +43,7 @@ status "seed alone"       2                                              "$rocki
 check "bootstrap, no seed" "--bootstrap needs --seed"                    "$rocking" eq27 x --bootstrap 100
 check "bootstrap of 1"    "--bootstrap: must be 0 or between 2 and 100000" "$rocking" eq27 x --bootstrap 1 --seed 3
 check "seed range"        "--seed: the seed must be a whole number"      "$rocking" eq27 x --bootstrap 100 --seed 0
+check "jobs range"        "--jobs must be an integer from 1 to 4096 (got '5000')" "$rocking" eq27 x --jobs 5000
 # Bad files: exit 1, the file named.
 check "missing file"      "no-such-file"                                 "$rocking" eq27 "$tmp/sine1.txt" no-such-file --unit g --dt 0.01
 status "missing file"     1                                              "$rocking" eq27 "$tmp/sine1.txt" no-such-file --unit g --dt 0.01
@@ -67,6 +68,10 @@ check "text records"      "records with any"                             "${run[
 "${run[@]}" "${small[@]}" --json --bootstrap 300 --seed 11 >"$tmp/e2.json"
 "${run[@]}" "${small[@]}" --json >"$tmp/e0.json"
 if cmp -s "$tmp/e.json" "$tmp/e2.json"; then echo "ok: same seed, same output"; else echo "FAIL: same seed, other output"; fail=1; fi
+# The threads change the time, never a byte.
+"${run[@]}" "${small[@]}" --json --bootstrap 300 --seed 11 --jobs 1 >"$tmp/e1.json"
+"${run[@]}" "${small[@]}" --json --bootstrap 300 --seed 11 --jobs 3 >"$tmp/e3.json"
+if cmp -s "$tmp/e1.json" "$tmp/e3.json"; then echo "ok: --jobs 1 and 3 identical"; else echo "FAIL: --jobs 1 and 3 differ"; fail=1; fi
 "$rocking" fragility "${files[@]}" --unit g --dt 0.01 --alpha 0.1 --p 2 --json >"$tmp/f.json"
 for f in "${files[@]}"; do "$rocking" record info "$f" --unit g --dt 0.01 --json; done >"$tmp/info.jsonl"
 if $py - "$tmp/e.json" "$tmp/f.json" "$tmp/info.jsonl" "$rocking" "$tmp/e0.json" "$(dirname "$0")/../expected/fragility" <<'PY'

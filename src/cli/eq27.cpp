@@ -27,7 +27,7 @@ using studies::kHalfPeriods;
 
 const char* kUsage =
     "usage: rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q] "
-    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--output CSV] [--json]";
+    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]";
 
 const char* kWilsonNote =
     "the Wilson interval takes every (record, block) case as independent; the cases of one record are "
@@ -86,6 +86,7 @@ studies::Eq27Options options_from(const Args& a) {
     if (o.bootstrap.resamples > 0 && !a.values.count("--seed"))
         throw UsageError("--bootstrap needs --seed (the interval is reproducible only from a stated seed)");
     if (a.values.count("--seed")) o.bootstrap.seed = seed_option("--seed", a.values.at("--seed"));
+    o.threads = jobs_option(a);
     return o;
 }
 
@@ -254,7 +255,7 @@ int cmd_eq27(int argc, char** argv) {
     int first = 0;
     const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
     const Args a = parse(argc, argv, first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
-                                             "--seed", "--unit", "--dt", "--output"});
+                                             "--seed", "--unit", "--dt", "--jobs", "--output"});
     const studies::Eq27Options o = options_from(a);
     if (a.values.count("--output") && a.values.at("--output").empty()) throw UsageError("--output: an empty file name");
     if (files.size() > 1000) throw UsageError("at most 1000 files");

@@ -29,7 +29,7 @@ const char* kUsage =
     "       rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N]\n"
     "                        [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]\n"
     "       rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q]\n"
-    "                        [--unit U [--dt DT]] [--output CSV] [--json]\n"
+    "                        [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]\n"
     "\n"
     "  --case I     input of Figure 3, I = 1..5 (amplitudes in PGA, durations in to)\n"
     "  --pulses N   repeat the case's pattern to N pulses (case 2, N = 6 is eq. 27)\n"
@@ -92,8 +92,9 @@ const char* kUsage =
     "eq27: each record's first collapse q (fragility's IDA) on every block (--alpha, default 0.05..0.25 by\n"
     "  0.05, with --p-points p log-spaced from --p-min to --p-max, default 10 from 0.5 to 10 rad/s) against\n"
     "  eq. 27 at x = p to_k: per to_k the share of non-conservative cases (collapse q below eq. 27's; a\n"
-    "  record censored at --q-max counts as conservative) with its 95 % Wilson interval. --output writes\n"
-    "  the map: per block, the records non-conservative for each to_k.\n";
+    "  record censored at --q-max counts as conservative) with its 95 % Wilson interval (cases taken as\n"
+    "  independent) and, with --bootstrap K --seed S, a 90 % bootstrap over records. --output writes the\n"
+    "  map: per block, the records non-conservative for each to_k. --jobs N as for fragility.\n";
 
 int run(int argc, char** argv) {
     const std::string command = argc > 1 ? argv[1] : "";

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "batch/pool.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "studies/resampling.hpp"
 
@@ -158,15 +159,21 @@ Eq27Study eq27_from_points(const std::vector<std::vector<IdaPoint>>& points,
 Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Options& o) {
     const std::vector<BlockShape> blocks = o.grid.blocks();
     if (o.bootstrap.resamples != 0) check_bootstrap(o.bootstrap);  // before the IDAs, not after
-    std::vector<std::vector<IdaPoint>> points;
     std::vector<std::array<double, kHalfPeriods>> to;
     for (const Eq27Record& r : records) {
         if (!r.input) throw std::invalid_argument("eq27: a record without an input");
-        std::vector<IdaPoint> row;
-        for (const BlockShape& b : blocks) row.push_back(incremental_dynamic_analysis(*r.input, b.alpha, b.p, o.ida).point);
-        points.push_back(row);
         to.push_back(r.to);
     }
+    // Every (record, block) IDA a job of the batch engine, in this order.
+    std::vector<std::vector<IdaPoint>> points(records.size());
+    const std::size_t n = blocks.size();
+    batch::run_ordered<IdaPoint>(
+        records.size() * n, batch::PoolOptions{o.threads},
+        [&](std::size_t job) {
+            const BlockShape& b = blocks[job % n];
+            return incremental_dynamic_analysis(*records[job / n].input, b.alpha, b.p, o.ida).point;
+        },
+        [&](std::size_t job, IdaPoint& point) { points[job / n].push_back(point); });
     return eq27_from_points(points, to, blocks, o.level, o.bootstrap);
 }
 

@@ -75,6 +75,8 @@ struct Eq27Options {
     IdaOptions ida{};
     double level = 0.95;  // Wilson's
     Eq27Bootstrap bootstrap{};
+    // Threads of the batch engine (batch/pool.hpp); the result does not depend on it.
+    int threads = 1;
 };
 
 // One record against one block: its IDA point and eq. 27's q per k.
