@@ -64,6 +64,11 @@ expect "text: confirmed"       0 "from: confirmed; to: confirmed" "${run[@]}" --
 expect "no lift said"          0 "alpha = 0.5: the record never lifts the block (PGA 0.2764 g <= alpha)" "${run[@]}" --alpha 0.5 --points 10
 out=$("${run[@]}" --alpha 0.1,0.2,0.5 --points 30 2>&1)
 if [[ "$out" == *nan* || "$out" == *inf* ]]; then echo "FAIL: nan or inf in the text: $out"; fail=1; else echo "ok: no nan or inf in the text"; fi
+# The threads change the time, never a byte (one alpha a job, in the given order).
+"${run[@]}" --alpha 0.2,0.1,0.15 --points 40 --json --jobs 1 >"$tmp/j1.json" 2>&1
+"${run[@]}" --alpha 0.2,0.1,0.15 --points 40 --json --jobs 3 >"$tmp/j3.json" 2>&1
+if cmp -s "$tmp/j1.json" "$tmp/j3.json"; then echo "ok: --jobs 1 and 3 identical"; else echo "FAIL: --jobs 1 and 3 differ"; fail=1; fi
+expect "jobs refused"          2 "--jobs must be an integer from 1 to 4096 (got 'x')" "${run[@]}" --alpha 0.1 --jobs x
 
 # JSON, strict (no NaN or Infinity, nothing after the object), with the CSV
 # and the PNG from the same run.

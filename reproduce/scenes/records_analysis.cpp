@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
-#include <thread>
 
+#include "batch/pool.hpp"
 #include "dynamics/ground_input.hpp"
 #include "records/record.hpp"
 
@@ -99,23 +99,20 @@ const std::vector<RecordRow>& shared_records(bool reference) {
             if (e.is_regular_file()) files.push_back(e.path().string());
     }
     std::sort(files.begin(), files.end());
+    // One job a record on the batch engine, taken on demand (a record's cost
+    // varies with how long blocks rock on it), delivered in the files' order.
+    // The first failing record (in that order) is the error, as in one thread.
     rows.resize(files.size());
-    std::vector<std::string> errors(files.size());
-    const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), files.size()));
-    std::vector<std::thread> pool;
-    for (unsigned w = 0; w < workers; ++w)
-        pool.emplace_back([&, w] {
-            for (std::size_t i = w; i < files.size(); i += workers) {
-                try {
-                    rows[i] = analyse(root, files[i], reference);
-                } catch (const std::exception& e) {
-                    errors[i] = e.what();
-                }
+    batch::run_ordered<RecordRow>(
+        files.size(), batch::PoolOptions{batch::default_threads()},
+        [&](std::size_t i) {
+            try {
+                return analyse(root, files[i], reference);
+            } catch (const std::exception& e) {
+                throw std::runtime_error(std::string("record analysis: ") + e.what());
             }
-        });
-    for (auto& t : pool) t.join();
-    for (const auto& e : errors)
-        if (!e.empty()) throw std::runtime_error("record analysis: " + e);
+        },
+        [&](std::size_t i, RecordRow& row) { rows[i] = std::move(row); });
     return rows;
 }
 

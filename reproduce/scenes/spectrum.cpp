@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
-#include <thread>
 
+#include "batch/pool.hpp"
 #include "dynamics/ground_input.hpp"
 #include "harness/compare.hpp"
 #include "harness/table.hpp"
@@ -142,23 +142,20 @@ void run_spectrum(SceneContext& ctx) {
         for (const char* f : kFiles) ctx.skip(f, kNoNorcia);
         return;
     }
-    // Each task is independent and deterministic: the threads change the
-    // time, never a value.
-    const unsigned workers = std::max(1u, std::min<unsigned>(std::thread::hardware_concurrency(), tasks.size()));
-    std::vector<std::thread> pool;
-    for (unsigned w = 0; w < workers; ++w)
-        pool.emplace_back([&, w] {
-            for (std::size_t i = w; i < tasks.size(); i += workers) {
-                try {
-                    run_task(tasks[i], ctx.reference());
-                } catch (const std::exception& e) {
-                    tasks[i].error = e.what();
-                }
+    // Each (record, alpha) a job of the batch engine, taken on demand and
+    // delivered in order: the threads change the time, never a value.
+    batch::run_ordered<Task>(
+        tasks.size(), batch::PoolOptions{batch::default_threads()},
+        [&](std::size_t i) {
+            Task t = tasks[i];
+            try {
+                run_task(t, ctx.reference());
+            } catch (const std::exception& e) {
+                throw std::runtime_error("spectrum: " + t.row->file + ": " + e.what());
             }
-        });
-    for (auto& th : pool) th.join();
-    for (const Task& t : tasks)
-        if (!t.error.empty()) throw std::runtime_error("spectrum: " + t.row->file + ": " + t.error);
+            return t;
+        },
+        [&](std::size_t i, Task& t) { tasks[i] = std::move(t); });
 
     const studies::SpectrumOptions o = spectrum_options(*tasks.front().row, 0);
     const std::string model = o.describe_model();
