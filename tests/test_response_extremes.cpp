@@ -145,13 +145,20 @@ TEST(ResponseExtremes, FlagsAgreeWithMultiprecision) {
         EXPECT_TRUE(near(e.min_dphi, min_dphi, dphi_scale)) << at << ": min dphi " << e.min_dphi << " against " << min_dphi;
         // A highest phi of 1 is the end's own (phi'(t_fin) ~ 0): where its
         // stationary point falls, at t_fin or a rounding before, is a tie.
-        if (std::fabs(max_phi - 1.0) <= 1e-9)
+        if (std::fabs(max_phi - 1.0) <= 1e-9) {
             EXPECT_LE(e.max_phi, 1.0 + 1e-9) << at << ": max phi " << e.max_phi << " against " << max_phi;
-        else
+        } else {
             EXPECT_TRUE(near(e.max_phi, max_phi, phi_scale)) << at << ": max phi " << e.max_phi << " against " << max_phi;
-        if (std::fabs(min_phi) > 1e-9) EXPECT_EQ(e.stays_positive(), onset && min_phi > 0) << at;
-        if (std::fabs(min_dphi) > 1e-9) EXPECT_EQ(e.min_dphi < 0, min_dphi < 0) << at;
-        if (std::fabs(max_phi - 1) > 1e-9) EXPECT_EQ(e.passes_alpha(), max_phi >= 1) << at;
+        }
+        if (std::fabs(min_phi) > 1e-9) {
+            EXPECT_EQ(e.stays_positive(), onset && min_phi > 0) << at;
+        }
+        if (std::fabs(min_dphi) > 1e-9) {
+            EXPECT_EQ(e.min_dphi < 0, min_dphi < 0) << at;
+        }
+        if (std::fabs(max_phi - 1) > 1e-9) {
+            EXPECT_EQ(e.passes_alpha(), max_phi >= 1) << at;
+        }
     }
 }
 
