@@ -82,12 +82,19 @@ bool compare_scene(const Options& o, const std::string& scene, const std::string
     bool all = true;
     double worst_ratio = -1.0;
     long cells = 0;
-    std::string skip_note;
+    // The skipped files, named together under their reason (a scene may skip some of its files and write others).
+    std::vector<std::pair<std::string, std::string>> skipped_here;  // reason, files
     for (const std::string& file : spec.files()) {
         const std::string actual_path = dir + "/" + file;
         bool skip = false;
         for (const auto& [name, why] : skipped)
-            if (name == file) skip = true, skip_note = "; " + file + " skipped: " + why;
+            if (name == file) {
+                skip = true;
+                auto same = std::find_if(skipped_here.begin(), skipped_here.end(),
+                                         [&](const auto& s) { return s.first == why; });
+                if (same == skipped_here.end()) skipped_here.emplace_back(why, file);
+                else same->second += ", " + file;
+            }
         if (skip) continue;
         if (!fs::exists(o.expected + "/" + scene + "/" + file)) {
             all = false;
@@ -118,9 +125,10 @@ bool compare_scene(const Options& o, const std::string& scene, const std::string
         }
         cells += c.cells;
     }
-    if (all && worst_ratio == 0.0) outcome.detail = "identical in all " + std::to_string(cells) + " cells";
+    if (all && cells == 0) outcome.detail = "no cell compared";
+    else if (all && worst_ratio == 0.0) outcome.detail = "identical in all " + std::to_string(cells) + " cells";
     else if (all) outcome.detail += ", " + short_number(100.0 * worst_ratio) + "% of tolerance";
-    outcome.detail += skip_note;
+    for (const auto& [why, files] : skipped_here) outcome.detail += "; skipped " + files + ": " + why;
     return all;
 }
 
