@@ -427,8 +427,8 @@ void run_shared_records(SceneContext& ctx, const std::vector<RecordRow>& rows) {
     ft.note("scene", "fragility: the lognormal fragility curve of each block over the records, by maximum likelihood");
     ft.note("model", model);
     ft.note("solver",
-            "studies::fit_lognormal (Baker 2015, censored records kept: closed form without censoring, GSL "
-            "Nelder-Mead otherwise) on fragility_points.csv's points; bootstrap: " + boot);
+            "studies::fit_lognormal (Baker 2015, censored records kept: closed form without censoring, Newton in "
+            "Olsen's concave parameters otherwise) on fragility_points.csv's points; bootstrap: " + boot);
     ft.note("inputs", inputs_text);
     ft.note("columns",
             "P(overturn | q) = Phi(ln(q / median) / beta); median_lo..hi, beta_lo..hi: the bootstrap's percentile "
@@ -603,8 +603,8 @@ void run_synthetic(SceneContext& ctx) {
                      "likelihood");
     ft.note("model", model);
     ft.note("solver",
-            "studies::fit_lognormal (Baker 2015, censored records kept: closed form without censoring, GSL "
-            "Nelder-Mead otherwise) on fragility_synthetic_points.csv's points of the set; bootstrap: " + boot);
+            "studies::fit_lognormal (Baker 2015, censored records kept: closed form without censoring, Newton in "
+            "Olsen's concave parameters otherwise) on fragility_synthetic_points.csv's points of the set; bootstrap: " + boot);
     ft.note("inputs", inputs_text);
     ft.note("columns",
             "set: " + sets_note + "; P(overturn | q) = Phi(ln(q / median) / beta); median_lo..hi, beta_lo..hi: the "
