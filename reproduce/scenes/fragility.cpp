@@ -79,6 +79,12 @@ constexpr double kStochasticDt = 0.01, kStochasticDuration = 40.0;  // s
 // A to_k "recovers" the pulse's half-period 1/(2 fp) within this relative gap.
 constexpr double kRecoverTol = 0.05;
 
+std::string format_g(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
 std::string label(double v) {
     char b[16];
     std::snprintf(b, sizeof b, "%.2f", v);
@@ -524,13 +530,20 @@ void run_synthetic(SceneContext& ctx) {
     const std::string grid = o.ida.describe_grid() + "; q = PGA/(alpha g), the record scaled (studies::scaled)";
     const std::string checks = o.ida.describe_checks() + ", in every run (the verdict is part of the result)";
     const records::StochasticParameters d = records::default_stochastic_parameters();
-    char pulses[600], stochastic[900];
+    // The set as the constants above define it: fp, T_p and (gamma, nu) listed from them.
+    std::string fps, shapes;
+    for (double fp : kPulseFp) fps += (fps.empty() ? "" : ", ") + format_g(fp);
+    for (const PulseShape& sh : kPulseShapes)
+        shapes += (shapes.empty() ? "(" : " and (") + format_g(sh.gamma) + ", " +
+                  (sh.nu == M_PI / 2 ? std::string("pi/2") : format_g(sh.nu)) + ")";
+    char pulses[800], stochastic[900];
     std::snprintf(pulses, sizeof pulses,
                   "set pulse: %zu Mavroeidis & Papageorgiou (2003) velocity pulses (records::pulse_record, the "
-                  "acceleration its exact derivative), A = %g m/s, fp = 2, 1.25, 0.8, 0.5, 0.32 Hz (T_p = 0.5 to "
-                  "3.125 s), each with (gamma, nu) = (2, 0) and (3, pi/2), t0 = %g s + gamma/(2 fp), %g s of rest "
-                  "after the pulse, dt = %g s; the record label is the generator's name with every parameter",
-                  sets[0].names.size(), kPulseA, kPulseRest, kPulseRest, kPulseDt);
+                  "acceleration its exact derivative), A = %g m/s, fp = %s Hz (T_p = %g to %g s), each with "
+                  "(gamma, nu) = %s, t0 = %g s + gamma/(2 fp), %g s of rest after the pulse, dt = %g s; the record "
+                  "label is the generator's name with every parameter",
+                  sets[0].names.size(), kPulseA, fps.c_str(), 1 / kPulseFp.front(), 1 / kPulseFp.back(),
+                  shapes.c_str(), kPulseRest, kPulseRest, kPulseDt);
     using D = records::StochasticDefaults;
     std::snprintf(stochastic, sizeof stochastic,
                   "set stochastic: %zu Rezaeian & Der Kiureghian (2008) modulated filtered white noise records "
