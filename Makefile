@@ -20,6 +20,10 @@ deps:
 	  || { echo "deps: apt-get failed for$$missing" >&2; exit 1; }; \
 	else echo "deps: missing$$missing; run:  sudo apt-get install -y$$missing" >&2; exit 1; fi
 
+# The Python module rocking_q and its tests (issue 30, docs/python.md): pybind11 for
+# Debian's /usr/bin/python3, its headers (pybind11-dev does not pull them in), numpy and pytest.
+PACKAGES += python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
+
 $(BUILD)/Makefile: CMakeLists.txt | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 

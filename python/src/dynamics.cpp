@@ -1,0 +1,274 @@
+// One block under a pulse train, a one-sine pulse or a record (rocking
+// simulate), and the block's geometry (eqs. 2, 4): src/dynamics.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "common.hpp"
+#include "dynamics/ground_input.hpp"
+#include "qfactor/superposition.hpp"
+
+namespace rocking::python {
+
+namespace {
+
+using namespace rocking::dynamics;
+
+// As simulate --output: its rows are held in memory, at most 10^6 of them.
+constexpr double kMaxRows = 1e6;
+
+double up_to_three_digits(double v) {
+    const double unit = std::pow(10.0, std::floor(std::log10(v)) - 2);
+    return std::ceil(v / unit) * unit;
+}
+
+Block block_of(double alpha, const std::optional<double>& p, const std::optional<double>& half_height,
+               const std::optional<double>& height) {
+    if (p.has_value() + half_height.has_value() + height.has_value() != 1)
+        refuse("give exactly one of p, half_height and height");
+    try {
+        return p ? Block::from_p(*p, alpha) : half_height ? Block::from_half_height(*half_height, alpha)
+                                                          : Block::from_full_height(*height, alpha);
+    } catch (const std::invalid_argument& e) {
+        refuse(e.what());
+    }
+}
+
+// What the command line refuses before the run: a theta(t) record that could
+// exceed its rows (the refusal's message, empty when it does not), or
+// rotations that overflow once divided by alpha.
+std::string rows_refusal(const Model& model, const GroundInput& input, const SimulationOptions& options) {
+    const double rows = max_record_rows(model, input, options);
+    if (rows <= kMaxRows) return "";
+    const double latest = latest_run_time(model, input, options);
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "dt: %g s could give %.3g rows (t_fin = %.4g s and up to %.4g s of free rocking after it), more "
+                  "than the limit of %.0f rows; give dt >= %.3g s",
+                  options.record_dt, rows, input.t_end(), latest - input.t_end(), kMaxRows,
+                  up_to_three_digits(latest * (1 + 1e-12) / (kMaxRows - 1)));
+    return text;
+}
+
+void refuse_overflow(const SimulationResult& r, double alpha) {
+    auto check = [&](const char* what, double value, double in_rad) {
+        if (std::isfinite(value)) return;
+        char text[240];
+        std::snprintf(text, sizeof text, "%s overflows a double (%.6g rad at alpha = %g): the rotation is beyond "
+                      "what this output can express", what, in_rad, alpha);
+        throw std::runtime_error(text);
+    };
+    check("max |theta|/alpha during the input", r.max_abs_theta_input / alpha, r.max_abs_theta_input);
+    if (!r.overturned_during_input) check("theta(t_fin)/alpha", r.theta_at_tfin / alpha, r.theta_at_tfin);
+}
+
+// The record as simulate --record reads it, scaled to scaled_to g if given:
+// built without the GIL, the Record being immutable.
+std::unique_ptr<GroundInput> record_input(const records::Record& r, const std::optional<double>& scaled_to) {
+    std::vector<double> g = r.in_g(kGravity);
+    const double peak = r.pga() / kGravity;
+    std::string name = r.name + " (" + std::to_string(g.size()) + " samples, dt = " + significant(r.dt, 6) + " s, PGA " +
+                       significant(peak, 6) + " g";
+    if (scaled_to) {
+        if (!(peak > 0)) throw std::invalid_argument(label_of(r) + ": the record is zero throughout and cannot be scaled");
+        for (double& v : g) v *= *scaled_to / peak;
+        name += ", scaled to " + significant(*scaled_to, 6) + " g";
+    }
+    return std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
+}
+
+py::dict simulate_of(double alpha, const std::optional<double>& p, const std::optional<double>& half_height,
+                     const std::optional<double>& height, const py::object& which_case, const std::optional<int>& pulses,
+                     const py::object& train, const std::optional<double>& to, const std::optional<double>& x,
+                     const std::optional<double>& pga, const std::optional<double>& q, const std::optional<double>& rd,
+                     bool one_sine, const std::optional<double>& ap, const std::optional<double>& wp,
+                     const py::object& record, const std::string& model_name, const std::optional<std::string>& solver,
+                     const std::optional<double>& rtol, const std::optional<double>& atol, const std::string& criterion_name_,
+                     const py::object& restitution, const std::optional<double>& dt, double free_time) {
+    Model model;
+    model.block = block_of(alpha, p, half_height, height);
+    if (model_name == "full") model.equation = Equation::full;
+    else if (model_name != "linearised") refuse("model: linearised or full (got '" + model_name + "')");
+    const double e = restitution_argument(restitution);
+    model.restitution = std::isnan(e) ? housner_restitution(alpha) : e;
+    SimulationOptions options;
+    try {
+        options.solver.kind = solver ? parse_solver(*solver)
+                                     : (model.equation == Equation::full ? SolverKind::dopri5 : SolverKind::exact);
+    } catch (const std::invalid_argument& err) {
+        refuse(std::string("solver: ") + err.what());
+    }
+    tolerance_arguments(rtol, atol, alpha, options.solver);
+    Criterion criterion = Criterion::final_rotation;
+    try {
+        criterion = parse_criterion(criterion_name_);
+    } catch (const std::invalid_argument& err) {
+        refuse(std::string("criterion: ") + err.what());
+    }
+    const bool has_train = !which_case.is_none() || !train.is_none(), has_record = !record.is_none();
+    if (one_sine + has_record + has_train != 1)
+        refuse("give exactly one input: case or train, one_sine=True, or record");
+    if (!one_sine && (ap || wp)) refuse("ap and wp go with one_sine=True");
+
+    std::unique_ptr<GroundInput> input;
+    RecordPtr kept;  // the record stays alive while the run reads it
+    std::optional<double> scaled_to;  // g
+    if (has_record) {
+        if (rd) refuse("rd does not apply to record");
+        if (to) refuse("to does not apply to record");
+        if (x) refuse("x does not apply to record");
+        if (pulses) refuse("pulses does not apply to record");
+        if (pga && q) refuse("give at most one of pga and q");
+        kept = record_argument(record, "record");
+        if (pga || q) {
+            scaled_to = pga ? *pga : *q * alpha;
+            if (!(*scaled_to > 0)) refuse("the PGA must be > 0");
+        }
+        // The input is made from the record without the GIL (record_input below): a copy of every sample.
+    } else if (one_sine) {
+        if (!ap || !wp) refuse("one_sine needs ap and wp");
+        const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
+        const double strongest = OneSinePulse::strongest_ap_over_threshold * model.uplift_threshold();
+        if (*wp > 0 && *wp < slowest)
+            refuse("wp: must be at least 1e-6 p = " + significant(slowest, 6) + " rad/s (got " + significant(*wp, 17) +
+                   "): slower pulses lift the block by less than the rounding of the input");
+        if (*ap > strongest)
+            refuse("ap: must be at most 1e9 times the uplift threshold, " + significant(strongest, 6) + " g (got " +
+                   significant(*ap, 17) + "): above it the fall time drifts from the closed form");
+        try {
+            input = std::make_unique<OneSinePulse>(*ap, *wp, model.uplift_threshold());
+        } catch (const std::invalid_argument& err) {
+            refuse(err.what());
+        }
+    } else {
+        std::string equation;
+        const PulseTrain t = train_argument(which_case, pulses, train, equation);
+        if (to.has_value() == x.has_value()) refuse("give exactly one of to and x");
+        const char* to_name = to ? "to" : "x";
+        if (!((to ? *to : *x) > 0)) refuse(std::string(to_name) + ": must be > 0");
+        const double to_s = to ? *to : *x / model.block.p;
+        if (!(to_s > 0) || !std::isfinite(to_s))
+            refuse("x: x / p = " + significant(*x, 17) + " / " + significant(model.block.p, 17) +
+                   " s is outside the range of double");
+        if (pga.has_value() + q.has_value() + rd.has_value() != 1) refuse("give exactly one of pga, q and rd");
+        const char* amplitude_name = rd ? "rd" : q ? "q" : "pga";
+        if (!((rd ? *rd : q ? *q : *pga) > 0)) refuse(std::string(amplitude_name) + ": must be > 0");
+        const double peak_g = rd ? *rd * q_factor(t, model.block.p * to_s).q * alpha : pga ? *pga : *q * alpha;
+        if (!(peak_g > 0) || !std::isfinite(peak_g))
+            refuse(std::string(amplitude_name) + ": the PGA it gives, " + significant(peak_g, 17) +
+                   " g, is outside the range of double");
+        input = std::make_unique<PulseInput>(t, peak_g, to_s);
+    }
+    if (dt) {
+        if (!(*dt > 0)) refuse("dt: must be > 0 (got " + significant(*dt, 17) + ")");
+        options.record_dt = *dt;
+        if (!(free_time >= 0) || !std::isfinite(free_time)) refuse("free_time: must be >= 0 s");
+        options.free_record_time = free_time;
+    } else if (free_time != 0) {
+        refuse("free_time goes with dt");
+    }
+
+    SimulationResult r;
+    std::string too_many_rows;
+    {
+        py::gil_scoped_release unlocked;
+        if (kept) input = record_input(*kept, scaled_to);
+        too_many_rows = options.record_dt > 0 ? rows_refusal(model, *input, options) : "";
+        if (too_many_rows.empty()) {
+            r = simulate(model, *input, options);
+            refuse_overflow(r, alpha);
+        }
+    }
+    if (!too_many_rows.empty()) refuse(too_many_rows);
+    char atol_rad[48];
+    std::snprintf(atol_rad, sizeof atol_rad, " = %g rad", options.solver.atol_alpha * alpha);
+    const std::string tolerance = options.solver.kind == SolverKind::exact
+                                      ? std::string(" (closed form between events)")
+                                      : " (" + tolerance_text(options.solver) + atol_rad + ")";
+    const bool collapse = r.collapse(criterion, alpha);
+    py::dict out = result();
+    out["model"] = text(model.describe());
+    out["input"] = text(input->describe());
+    out["solver"] = solver_name(options.solver.kind);
+    out["rtol"] = options.solver.rtol;
+    out["atol_rad"] = options.solver.atol_alpha * alpha;
+    out["criterion"] = dynamics::criterion_name(criterion);
+    out["collapse"] = collapse;
+    out["t_fin"] = r.t_fin;
+    out["theta_tfin_over_alpha"] = r.overturned_during_input ? py::object(py::none()) : py::object(py::float_(r.theta_at_tfin / alpha));
+    out["max_theta_input_over_alpha"] = r.max_abs_theta_input / alpha;
+    out["input_lifts_block"] = input->peak() > model.uplift_threshold();
+    out["impacts"] = r.impacts;
+    out["overturned"] = r.overturned;
+    out["overturned_during_input"] = r.overturned_during_input;
+    out["t_overturn"] = std::isnan(r.t_overturn) ? py::object(py::none()) : py::object(py::float_(r.t_overturn));
+    out["collapse_final_rotation"] = r.collapse(Criterion::final_rotation, alpha);
+    out["collapse_peak_rotation"] = r.collapse(Criterion::peak_rotation, alpha);
+    out["collapse_overturning"] = r.collapse(Criterion::overturning, alpha);
+    // What the text output and --output's notes state beside the JSON's fields.
+    out["solver_description"] = solver_name(options.solver.kind) + tolerance;
+    out["alpha"] = alpha;
+    out["p"] = model.block.p;
+    out["restitution"] = model.restitution;
+    out["impact_times"] = to_array(r.impact_times);
+    // theta(t) every dt, as --output's rows (t, theta/alpha, theta'/(alpha p)), and in rad and rad/s.
+    const std::size_t n = r.samples.size();
+    py::array_t<double> t(n), theta(n), omega(n), theta_a(n), omega_ap(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const Sample& s = r.samples[k];
+        t.mutable_at(k) = s.t;
+        theta.mutable_at(k) = s.theta;
+        omega.mutable_at(k) = s.omega;
+        theta_a.mutable_at(k) = s.theta / alpha;
+        omega_ap.mutable_at(k) = s.omega / (alpha * model.block.p);
+    }
+    out["t"] = t;
+    out["theta"] = theta;
+    out["omega"] = omega;
+    out["theta_over_alpha"] = theta_a;
+    out["omega_over_alpha_p"] = omega_ap;
+    return out;
+}
+
+}  // namespace
+
+void init_dynamics(py::module_& m) {
+    using namespace py::literals;
+    m.def("simulate", &simulate_of, py::kw_only(), "alpha"_a, "p"_a = py::none(), "half_height"_a = py::none(),
+          "height"_a = py::none(), "case"_a = py::none(), "pulses"_a = py::none(), "train"_a = py::none(),
+          "to"_a = py::none(), "x"_a = py::none(), "pga"_a = py::none(), "q"_a = py::none(), "rd"_a = py::none(),
+          "one_sine"_a = false, "ap"_a = py::none(), "wp"_a = py::none(), "record"_a = py::none(),
+          "model"_a = "linearised", "solver"_a = py::none(), "rtol"_a = py::none(), "atol"_a = py::none(),
+          "criterion"_a = "final-rotation", "restitution"_a = 1.0, "dt"_a = 0.01, "free_time"_a = 0.0,
+          R"(`rocking simulate --json`: one block under a pulse train, a one-sine pulse or a record.
+
+Geometry: alpha with p (rad/s), half_height (m, eq. 2's H) or height (m).
+Input: case (1..5, with pulses) or train, with to (s) or x = p*to, and pga (g), q (PGA = q alpha g)
+or rd (PGA = q_I(x) rd alpha g); or one_sine=True with ap (g) and wp (rad/s); or record
+(a Record or a path), as recorded or scaled to pga (g) or q.
+model "linearised" | "full"; solver "exact" | "dopri5" | "rkf78" | "bulirsch-stoer" | "gsl-rk8pd";
+rtol, atol (rad); criterion "final-rotation" | "peak-rotation" | "overturning"; restitution a
+factor or "housner".  dt: theta(t) every dt seconds as t, theta, omega (rad, rad/s) and
+theta_over_alpha, omega_over_alpha_p (as --output; None: no record of theta(t), as simulate
+without --output: the record kernel then runs, whose last digits may differ), free_time: seconds
+of free rocking after t_fin to keep.  Releases the GIL.)");
+    m.def(
+        "block",
+        [](double alpha, const std::optional<double>& p, const std::optional<double>& half_height,
+           const std::optional<double>& height) {
+            const Block b = block_of(alpha, p, half_height, height);
+            py::dict out = result();
+            out["alpha"] = b.alpha;
+            out["p"] = b.p;
+            out["R"] = b.R;
+            out["half_height"] = b.R > 0 ? py::object(py::float_(b.R * std::cos(b.alpha))) : py::object(py::none());
+            out["housner_restitution"] = housner_restitution(b.alpha);
+            out["uplift_threshold_linearised"] = b.alpha;
+            out["uplift_threshold_full"] = std::tan(b.alpha);
+            return out;
+        },
+        py::kw_only(), "alpha"_a, "p"_a = py::none(), "half_height"_a = py::none(), "height"_a = py::none(),
+        "A block's alpha, p (rad/s, eqs. 2, 4), R (m; 0 when given by p), half-height, Housner's restitution and uplift thresholds (g).");
+}
+
+}  // namespace rocking::python

@@ -1,0 +1,20 @@
+// rocking_q: the Python front end of the one library (rocking_core), with the
+// command line's names and units; docs/python.md.
+#include "common.hpp"
+
+PYBIND11_MODULE(rocking_q, m) {
+    using namespace rocking::python;
+    m.doc() = R"(rocking_q: Housner's rocking block and the q-factor of Coccia (Buildings 2025, 15, 2622).
+
+The command line's subcommands as functions, with its option names (--half-height as half_height)
+and units, returning its --json fields as a Result (a dict readable by attribute) with NumPy arrays:
+q, q_info, response, q1..q5, q_case, q2_n6, q4_n6; simulate, block; Record, read_record,
+record_info, half_periods, peak_motion, record_synth; collapse, assess; spectrum, fragility, eq27.
+Errors raise ValueError (RecordError for a malformed file, naming file and line), TypeError, or
+RuntimeError, with the library's message.  Long calls release the GIL.  docs/python.md)";
+    define_result(m);
+    init_qfactor(m);
+    init_records(m);
+    init_dynamics(m);
+    init_studies(m);
+}

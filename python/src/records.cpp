@@ -1,0 +1,354 @@
+// Records (rocking record info, record synth), the collapse search (rocking
+// collapse) and the paper's check (rocking assess): src/records.
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "common.hpp"
+#include "dynamics/ground_input.hpp"
+#include "qfactor/closed_forms.hpp"
+#include "qfactor/superposition.hpp"
+#include "records/collapse.hpp"
+#include "records/synthetic.hpp"
+
+namespace rocking::python {
+
+namespace {
+
+using records::Record;
+
+// A unit's factor to m/s^2, as the plain-text reader applies it (records/record.cpp).
+double unit_scale(const std::string& unit) {
+    if (unit == "g") return 9.81;
+    if (unit == "m/s2" || unit == "m/s^2") return 1.0;
+    if (unit == "cm/s2" || unit == "cm/s^2") return 0.01;
+    refuse("unit: '" + unit + "' is not a unit it knows (g, m/s2, cm/s2)");
+}
+
+// Record(accel, dt, unit=, name=): the samples times the unit's factor, as
+// the plain-text reader multiplies a file's values, so that the same numbers
+// give the same record bit for bit.
+std::shared_ptr<Record> record_from_array(py::handle accel, double dt, const std::string& unit, const std::string& name) {
+    const double scale = unit_scale(unit);
+    std::vector<double> a = real_vector(accel, "accel");
+    if (!(dt > 0) || !std::isfinite(dt)) refuse(name + ": dt must be > 0 (got " + significant(dt, 17) + ")");
+    if (a.size() < 2) refuse(name + ": a record needs at least 2 samples (got " + std::to_string(a.size()) + ")");
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        const double given = a[k];
+        a[k] *= scale;
+        if (!std::isfinite(a[k]))
+            refuse(name + ": accel[" + std::to_string(k) + "] = " + significant(given, 17) + " " + unit +
+                   (std::isfinite(given) ? " is out of range for a double in m/s^2" : " is not finite"));
+    }
+    auto r = std::make_shared<Record>();
+    r->format = "array";
+    r->name = name;
+    r->dt = dt;
+    r->accel = std::move(a);
+    return r;
+}
+
+std::shared_ptr<Record> read_record(py::handle path, const std::optional<std::string>& unit, const std::optional<double>& dt) {
+    if (!unit && !dt) {
+        RecordPtr r = record_argument(path, "path");
+        return std::const_pointer_cast<Record>(r);
+    }
+    // A plain-text file, as --unit and --dt read it (src/cli/options.cpp, load_record).
+    if (!unit) refuse("unit is required for a plain-text record (g, m/s2, cm/s2)");
+    unit_scale(*unit);
+    if (dt && !(*dt > 0)) refuse("dt: must be > 0 (got " + significant(*dt, 17) + ")");
+    if (!py::isinstance<py::str>(path) && !py::isinstance<py::bytes>(path) && !py::hasattr(path, "__fspath__"))
+        throw py::type_error("path: expected a file's path");
+    const std::string file = py::module_::import("os").attr("fsencode")(path).cast<std::string>();
+    py::gil_scoped_release unlocked;
+    return std::make_shared<Record>(records::read_plain(file, *unit, dt.value_or(0.0)));
+}
+
+// A read-only view of the samples that keeps the record alive.
+py::array_t<double> accel_view(py::object self) {
+    const Record& r = self.cast<const Record&>();
+    py::array_t<double> a({static_cast<py::ssize_t>(r.accel.size())}, {static_cast<py::ssize_t>(sizeof(double))},
+                          r.accel.data(), self);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
+py::dict record_info(py::handle record) {
+    const RecordPtr r = record_argument(record, "record");
+    records::HalfPeriods h;
+    {
+        py::gil_scoped_release unlocked;  // the CWT: seconds on 10^6 samples
+        h = checked_half_periods(*r);
+    }
+    py::dict out = result();
+    out["file"] = file_of(*r);
+    out["format"] = text(r->format);
+    out["name"] = text(r->name);
+    out["samples"] = r->accel.size();
+    out["dt"] = r->dt;
+    out["pga_ms2"] = h.pga;
+    out["pgv_ms"] = h.pgv;
+    out["amax_ms"] = h.amax;
+    out["to"] = to_array(std::vector<double>(h.to.begin(), h.to.end()));
+    py::list edge;
+    for (int k = 0; k < 4; ++k)
+        if (h.cwt_at_band_edge[k]) edge.append(8 + k);
+    out["to_at_band_edge"] = edge;
+    out["cwt_band_hz"] = to_array({h.cwt_band_hz[0], h.cwt_band_hz[1]});
+    out["f_fourier_acc"] = h.f_fourier_acc;
+    out["f_fourier_vel"] = h.f_fourier_vel;
+    out["f_cwt"] = to_array({h.f_cwt[0], h.f_cwt[1], h.f_cwt[2], h.f_cwt[3]});
+    return out;
+}
+
+records::PeakMotion checked_peak_motion(const Record& r) {
+    double bound = 0;
+    for (double a : r.accel) bound += std::fabs(a) * r.dt;
+    if (!std::isfinite(bound))
+        throw std::runtime_error(label_of(r) + ": the record's velocity overflows a double (the sum of |a| dt exceeds "
+                                               "1.8e308 m/s); scale the record down");
+    try {
+        return records::peak_motion(r.accel, r.dt);
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(label_of(r) + ": " + e.what());
+    }
+}
+
+py::dict peak_motion(py::handle record) {
+    const RecordPtr r = record_argument(record, "record");
+    const records::PeakMotion m = checked_peak_motion(*r);
+    py::dict out = result();
+    out["pga_ms2"] = m.pga;
+    out["pgv_ms"] = m.pgv;
+    out["to5_s"] = m.to5;
+    return out;
+}
+
+// rocking record synth: --pulse A,fp,nu,gamma[,t0] or --stochastic SEED [--params K=V,...].
+std::shared_ptr<Record> record_synth(const std::optional<std::vector<double>>& pulse, const std::optional<long long>& stochastic,
+                                     const std::optional<std::map<std::string, double>>& params, double dt, double duration) {
+    if (pulse.has_value() == stochastic.has_value()) refuse("give exactly one of pulse=(A, fp, nu, gamma[, t0]) and stochastic=SEED");
+    if (pulse && params) refuse("params goes with stochastic");
+    if (!(dt > 0)) refuse("dt: must be > 0 (got " + significant(dt, 17) + ")");
+    if (!(duration > 0)) refuse("duration: must be > 0 (got " + significant(duration, 17) + ")");
+    const std::string flag = pulse ? "pulse" : params ? "params" : "stochastic";
+    records::PulseParameters pp{};
+    records::StochasticParameters sp = records::default_stochastic_parameters();
+    std::uint64_t seed = 0;
+    if (pulse) {
+        const std::vector<double>& v = *pulse;
+        if (v.size() != 4 && v.size() != 5)
+            refuse("pulse: takes (A, fp, nu, gamma[, t0]) (m/s, Hz, rad, -, s), got " + std::to_string(v.size()) + " values");
+        pp = {v[0], v[1], v[2], v[3], 0};
+        pp.t0 = v.size() == 5 ? v[4] : (pp.fp > 0 ? pp.gamma / (2 * pp.fp) : 0);
+    } else {
+        if (*stochastic < 1 || *stochastic > 4294967295LL)
+            refuse("stochastic: the seed must be a whole number from 1 to 4294967295 (got " + std::to_string(*stochastic) + ")");
+        seed = static_cast<std::uint64_t>(*stochastic);
+        if (params) {
+            // As the command line's --params (src/cli/synth.cpp).
+            const std::map<std::string, double>& kv = *params;
+            static const char* keys[] = {"alpha1", "alpha2", "alpha3", "Ia", "D5_95", "tmid", "fmid", "fprime", "zeta", "fc"};
+            for (const auto& [key, value] : kv) {
+                bool known = false;
+                for (const char* k : keys) known = known || key == k;
+                if (!known)
+                    refuse("params: unknown key '" + key + "' (keys: alpha1, alpha2, alpha3, Ia, D5_95, tmid, fmid, fprime, zeta, fc)");
+                if (!std::isfinite(value)) refuse("params " + key + ": not a finite number");
+            }
+            if (kv.count("fmid")) sp.omega_mid = 2 * M_PI * kv.at("fmid");
+            if (kv.count("fprime")) sp.omega_prime = 2 * M_PI * kv.at("fprime");
+            if (kv.count("zeta")) sp.zeta_f = kv.at("zeta");
+            if (kv.count("fc")) sp.omega_c = 2 * M_PI * kv.at("fc");
+            const int alphas = kv.count("alpha1") + kv.count("alpha2") + kv.count("alpha3");
+            const int arias = kv.count("Ia") + kv.count("D5_95") + kv.count("tmid");
+            if (alphas && arias) refuse("params: give the alphas or Ia, D5_95, tmid, not both");
+            if (alphas && alphas != 3) refuse("params: alpha1, alpha2 and alpha3 go together");
+            if (alphas) {
+                sp.alpha1 = kv.at("alpha1"), sp.alpha2 = kv.at("alpha2"), sp.alpha3 = kv.at("alpha3");
+            } else if (arias) {
+                auto value = [&](const char* key, double fallback) { return kv.count(key) ? kv.at(key) : fallback; };
+                using D = records::StochasticDefaults;
+                try {
+                    sp = records::with_arias_modulation(sp, value("Ia", D::Ia_s_g * dynamics::kGravity),
+                                                        value("D5_95", D::D5_95_s), value("tmid", D::tmid_s));
+                } catch (const std::invalid_argument& e) {
+                    refuse(std::string("params: ") + e.what());
+                }
+            }
+        }
+    }
+    std::string error;
+    std::shared_ptr<Record> r;
+    {
+        py::gil_scoped_release unlocked;
+        try {
+            r = std::make_shared<Record>(pulse ? records::pulse_record(pp, dt, duration)
+                                               : records::stochastic_record(sp, seed, dt, duration));
+        } catch (const std::invalid_argument& e) {
+            // The argument to change, as the command line names it.
+            const std::string what = e.what();
+            const std::string option = what.find("Nyquist") != std::string::npos ? "dt"
+                                       : what.rfind("duration/dt", 0) == 0        ? "duration"
+                                                                                  : flag;
+            error = option + ": " + what;
+        }
+    }
+    if (!error.empty()) refuse(error);
+    return r;
+}
+
+// --alpha of collapse, the options of its search.
+records::CollapseOptions collapse_options(double alpha, const std::string& model, const std::optional<std::string>& solver,
+                                          const std::optional<std::string>& criterion, const py::object& restitution,
+                                          const std::optional<double>& rtol, const std::optional<double>& atol) {
+    if (!(alpha > 0 && alpha < 0.7)) refuse("alpha: must be in (0, 0.7) (got " + significant(alpha, 17) + ")");
+    records::CollapseOptions o;
+    if (model == "full") o.equation = dynamics::Equation::full, o.solver.kind = dynamics::SolverKind::dopri5;
+    else if (model != "linearised") refuse("model: linearised or full (got '" + model + "')");
+    try {
+        if (solver) o.solver.kind = dynamics::parse_solver(*solver);
+    } catch (const std::invalid_argument& e) {
+        refuse(std::string("solver: ") + e.what());
+    }
+    try {
+        if (criterion) o.criterion = dynamics::parse_criterion(*criterion);
+    } catch (const std::invalid_argument& e) {
+        refuse(std::string("criterion: ") + e.what());
+    }
+    tolerance_arguments(rtol, atol, alpha, o.solver);
+    const double e = restitution_argument(restitution);
+    o.housner_restitution = std::isnan(e);
+    if (!o.housner_restitution) o.restitution = e;
+    if (o.equation == dynamics::Equation::full && o.solver.kind == dynamics::SolverKind::exact)
+        refuse("the exact solver handles the linearised equation only");
+    return o;
+}
+
+py::dict collapse(py::handle record, double alpha, const std::string& model, const std::optional<std::string>& solver,
+                  const std::optional<std::string>& criterion, const py::object& restitution,
+                  const std::optional<double>& rtol, const std::optional<double>& atol) {
+    const records::CollapseOptions o = collapse_options(alpha, model, solver, criterion, restitution, rtol, atol);
+    const RecordPtr r = record_argument(record, "record");
+    records::CollapseResult c;
+    {
+        py::gil_scoped_release unlocked;
+        const dynamics::SampledInput input(r->in_g(dynamics::kGravity), r->dt, r->name);
+        c = records::smallest_collapse_p(input, alpha, o);
+    }
+    py::dict out = result();
+    out["file"] = file_of(*r);
+    out["alpha"] = alpha;
+    out["found"] = c.found;
+    out["p"] = c.found ? py::object(py::float_(c.p)) : py::object(py::none());
+    out["p_safe"] = c.found && !c.below_range() ? py::object(py::float_(c.p_safe)) : py::object(py::none());
+    out["below_range"] = c.below_range();
+    out["simulations"] = c.simulations;
+    out["search"] = o.describe();
+    return out;
+}
+
+py::dict assess(py::handle record, double alpha, const std::optional<double>& height, const std::optional<double>& half_height) {
+    if (height.has_value() == half_height.has_value()) refuse("give exactly one of height and half_height");
+    dynamics::Block b{};
+    try {
+        b = height ? dynamics::Block::from_full_height(*height, alpha) : dynamics::Block::from_half_height(*half_height, alpha);
+    } catch (const std::invalid_argument& e) {
+        refuse(e.what());
+    }
+    const RecordPtr r = record_argument(record, "record");
+    records::PeakMotion m;
+    {
+        py::gil_scoped_release unlocked;
+        m = checked_peak_motion(*r);
+    }
+    const double to5 = m.to5, x = b.p * to5;
+    if (!(x >= kSmallestX)) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
+                      "1e-150, where eq. 27 overflows", height ? "height" : "half_height", b.p, to5);
+        refuse(text);
+    }
+    const double q27 = q2_n6(x), q_record = m.pga / (alpha * dynamics::kGravity);
+    if (!std::isfinite(q_record))
+        throw std::runtime_error(label_of(*r) + ": the record's q = PGA/(alpha g) overflows a double at alpha " +
+                                 significant(alpha, 17));
+    py::dict out = result();
+    out["file"] = file_of(*r);
+    out["alpha"] = alpha;
+    out["p"] = b.p;
+    out["to5"] = to5;
+    out["x"] = x;
+    out["q_eq27"] = q27;
+    out["q_record"] = q_record;
+    out["passes"] = q_record < q27;
+    out["name"] = text(r->name);
+    out["half_height"] = b.R * std::cos(alpha);
+    out["pga_g"] = m.pga / dynamics::kGravity;
+    return out;
+}
+
+}  // namespace
+
+void init_records(py::module_& m) {
+    using namespace py::literals;
+    py::register_exception<records::RecordError>(m, "RecordError", PyExc_ValueError);
+
+    py::class_<Record, std::shared_ptr<Record>>(m, "Record", R"(A strong-motion record: samples in m/s^2 every dt seconds.
+
+Record(accel, dt, unit="m/s2", name="array") makes one from a 1-D array in unit
+(g, m/s2 or cm/s2), multiplied to m/s^2 as the plain-text reader does; read_record(path)
+reads a file.  Immutable: accel is a read-only view.)")
+        .def(py::init(&record_from_array), "accel"_a, "dt"_a, py::kw_only(), "unit"_a = "m/s2", "name"_a = "array")
+        .def_property_readonly("path", [](const Record& r) { return path_of(r); }, "the file as given; None for an array")
+        .def_property_readonly("format", [](const Record& r) { return text(r.format); })
+        .def_property_readonly("name", [](const Record& r) { return text(r.name); })
+        .def_readonly("dt", &Record::dt, "s")
+        .def_property_readonly("accel", [](py::object self) { return accel_view(self); }, "the samples, m/s^2 (read-only)")
+        .def_property_readonly("samples", [](const Record& r) { return r.accel.size(); }, "how many samples")
+        .def_property_readonly("header", [](const Record& r) {
+            py::dict h;
+            for (const auto& [key, value] : r.header) h[text(key)] = text(value);
+            return h;
+        }, "the source's header fields (text)")
+        .def_property_readonly("duration", &Record::duration, "s")
+        .def_property_readonly("pga_ms2", &Record::pga, "max |a|, m/s^2")
+        .def_property_readonly("pga_g", [](const Record& r) { return r.pga() / dynamics::kGravity; }, "max |a|, g")
+        .def("in_g", [](const Record& r) { return to_array(r.in_g(dynamics::kGravity)); }, "the samples in g (a copy)")
+        .def("__len__", [](const Record& r) { return r.accel.size(); })
+        .def("__repr__", [](const Record& r) {
+            return text("<rocking_q.Record '" + r.name + "' (" + r.format + "): " + std::to_string(r.accel.size()) +
+                        " samples, dt = " + significant(r.dt, 6) + " s>");
+        });
+
+    m.def("read_record", &read_record, "path"_a, py::kw_only(), "unit"_a = py::none(), "dt"_a = py::none(),
+          R"(A record file, as `rocking record info FILE` reads it: ESM/ITACA ASCII or PEER AT2 by content,
+or plain one- or two-column text with unit (g, m/s2, cm/s2) and, for one column, dt.
+A malformed file raises RecordError naming the file and line.)");
+    m.def("record_info", &record_info, "record"_a,
+          "`rocking record info --json`: PGA, PGV, Amax and the eleven half-periods to_1..to_11 (s) of a Record or a path.");
+    m.def("half_periods", [](py::handle record) {
+              const RecordPtr r = record_argument(record, "record");
+              py::gil_scoped_release unlocked;
+              const records::HalfPeriods h = checked_half_periods(*r);
+              py::gil_scoped_acquire locked;
+              return to_array(std::vector<double>(h.to.begin(), h.to.end()));
+          },
+          "record"_a, "to_1..to_11 (s) of a record, as an array of 11 (records/measures.hpp).");
+    m.def("peak_motion", &peak_motion, "record"_a, "PGA (m/s^2), PGV (m/s) and to_5 = pi PGV/PGA (s), as assess measures them.");
+    m.def("record_synth", &record_synth, py::kw_only(), "pulse"_a = py::none(), "stochastic"_a = py::none(),
+          "params"_a = py::none(), "dt"_a, "duration"_a,
+          R"(`rocking record synth`: a synthetic Record (docs/synthetic.md).
+
+pulse=(A, fp, nu, gamma[, t0]): Mavroeidis & Papageorgiou's velocity pulse (m/s, Hz, rad, -, s);
+stochastic=SEED with params={"Ia": ..., "D5_95": ..., ...}: Rezaeian & Der Kiureghian's filtered noise.)");
+    m.def("collapse", &collapse, "record"_a, py::kw_only(), "alpha"_a, "model"_a = "linearised", "solver"_a = py::none(),
+          "criterion"_a = py::none(), "restitution"_a = "housner", "rtol"_a = py::none(), "atol"_a = py::none(),
+          R"(`rocking collapse --json`: Table 1's search, the first p (rad/s) raised from 0.3 by 1 % at which the
+record overturns the block, then refined.  Not a bound (docs/findings.md, T1b).  Releases the GIL.)");
+    m.def("assess", &assess, "record"_a, py::kw_only(), "alpha"_a, "height"_a = py::none(), "half_height"_a = py::none(),
+          R"(`rocking assess --json`: the block's p (eqs. 2, 4), the record's to_5, eq. 27's q at x = p to_5 and
+the record's q = PGA/(alpha g); passes when the record's q is below eq. 27's (the paper's check).)");
+}
+
+}  // namespace rocking::python

@@ -1,0 +1,455 @@
+// The studies over many runs (rocking spectrum, fragility, eq27):
+// src/studies.  Each runs without the GIL, on `jobs` threads of the batch
+// engine; the results do not depend on them.
+#include <array>
+#include <cmath>
+
+#include "batch/pool.hpp"
+#include "common.hpp"
+#include "dynamics/ground_input.hpp"
+#include "records/collapse.hpp"
+#include "studies/eq27_at_scale.hpp"
+#include "studies/ida.hpp"
+#include "studies/spectrum.hpp"
+
+namespace rocking::python {
+
+namespace {
+
+using studies::BlockFragility;
+using studies::Ida;
+
+std::string g7(double v) { return significant(v, 7); }
+
+py::object null_or(bool has, double v) { return has ? py::object(py::float_(v)) : py::object(py::none()); }
+
+// A list of numbers, or one number, each in (lo, hi): --alpha A[,A...], --p P[,P...].
+std::vector<double> values_in(const py::object& given, const std::string& what, double lo, double hi,
+                              const std::string& range, std::size_t most) {
+    std::vector<double> v;
+    if (py::isinstance<py::float_>(given) || py::isinstance<py::int_>(given)) v = {given.cast<double>()};
+    else v = real_vector(given, what);
+    if (v.empty() || v.size() > most) refuse(what + ": from 1 to " + std::to_string(most) + " values");
+    for (double x : v)
+        if (!(x > lo && x < hi)) refuse(what + ": each must be in " + range + " (got " + g7(x) + ")");
+    return v;
+}
+
+std::unique_ptr<dynamics::SampledInput> input_of(const records::Record& r) {
+    return std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name);
+}
+
+// ---- rocking spectrum ----
+
+struct Study {
+    studies::Spectrum spectrum;
+    records::CollapseResult table1;
+};
+
+py::object boundary(const studies::Interval& in, bool lower) {
+    if (!(lower ? in.has_lower : in.has_upper)) return py::none();
+    const studies::Boundary& b = lower ? in.lower : in.upper;
+    py::dict d = result();
+    d["p_safe"] = b.p_safe;
+    d["p_collapse"] = b.p_collapse;
+    d["confirmation"] = studies::confirmation_name(b.confirmation);
+    d["detail"] = text(b.detail);
+    return std::move(d);
+}
+
+py::dict spectrum(py::handle record, const py::object& alpha, double p_min, double p_max, int points,
+                  const std::optional<int>& jobs) {
+    const std::vector<double> alphas = values_in(alpha, "alpha", 0, 0.7, "(0, 0.7)", 20);
+    studies::SpectrumOptions o;
+    o.p_min = p_min, o.p_max = p_max, o.points = points;
+    if (!(o.p_min >= 0.01 && o.p_min <= 1000)) refuse("p_min: must be in [0.01, 1000] rad/s");
+    if (!(o.p_max >= 0.01 && o.p_max <= 1000)) refuse("p_max: must be in [0.01, 1000] rad/s");
+    if (!(o.p_max > o.p_min)) refuse("p_max: must be above p_min (" + g7(o.p_min) + " rad/s)");
+    if (o.points < 2 || o.points > 100000) refuse("points: must be between 2 and 100000");
+    const int threads = jobs_argument(jobs);
+    const RecordPtr r = record_argument(record, "record");
+    std::vector<Study> found;
+    {
+        py::gil_scoped_release unlocked;
+        const auto input = input_of(*r);
+        // As rocking spectrum: Table 1's bracket joins each alpha's grid.
+        batch::run_ordered<Study>(
+            alphas.size(), batch::PoolOptions{threads},
+            [&](std::size_t k) {
+                const records::CollapseResult table1 = records::smallest_collapse_p(*input, alphas[k], {});
+                studies::SpectrumOptions with_table1 = o;
+                if (table1.found) with_table1.extra_points = {table1.p};
+                if (table1.found && !table1.below_range()) with_table1.extra_points.push_back(table1.p_safe);
+                return Study{studies::rocking_spectrum(*input, alphas[k], with_table1), table1};
+            },
+            [&](std::size_t, Study& s) { found.push_back(std::move(s)); });
+    }
+    py::dict out = result();
+    out["file"] = file_of(*r);
+    out["name"] = text(r->name);
+    out["samples"] = r->accel.size();
+    out["dt"] = r->dt;
+    out["pga_g"] = r->pga() / dynamics::kGravity;
+    out["model"] = o.describe_model();
+    py::dict grid = result();
+    grid["p_min"] = o.p_min;
+    grid["p_max"] = o.p_max;
+    grid["points"] = o.points;
+    grid["step"] = o.step();
+    grid["offset_grid"] = true;
+    grid["islands_missed_below_ratio"] = std::sqrt(o.step());
+    grid["note"] = o.describe_grid() + "; Table 1's bracket of each alpha added as extra points";
+    out["grid"] = grid;
+    out["rel_tol"] = o.rel_tol;
+    out["refinement"] = o.describe_refinement();
+    out["t_overturn_null"] =
+        "the block does not overturn, or is taken to overturn by its energy after 200/p of free rocking";
+    py::list spectra;
+    for (const Study& s : found) {
+        const studies::Spectrum& sp = s.spectrum;
+        py::dict d = result();
+        d["alpha"] = sp.alpha;
+        d["lifts"] = sp.lifts;
+        py::list intervals;
+        for (const studies::Interval& in : sp.intervals) {
+            py::dict i = result();
+            i["from"] = in.from;
+            i["to"] = in.to;
+            i["lower"] = boundary(in, true);
+            i["upper"] = boundary(in, false);
+            intervals.append(i);
+        }
+        d["intervals"] = intervals;
+        py::dict t1 = result();
+        t1["found"] = s.table1.found;
+        t1["p"] = null_or(s.table1.found, s.table1.p);
+        t1["p_safe"] = null_or(s.table1.found && !s.table1.below_range(), s.table1.p_safe);
+        t1["below_range"] = s.table1.below_range();
+        d["table1"] = t1;
+        d["simulations"] = sp.simulations;
+        d["check_simulations"] = sp.check_simulations;
+        // The grid as arrays, one per --json points' field (the plot's data).
+        const std::size_t n = sp.points.size();
+        py::array_t<double> p(n), max_theta(n), t_overturn(n);
+        py::array_t<bool> final_rotation(n), peak_rotation(n), overturning(n);
+        py::list kinds;
+        for (std::size_t k = 0; k < n; ++k) {
+            const studies::SpectrumPoint& pt = sp.points[k];
+            p.mutable_at(k) = pt.p;
+            max_theta.mutable_at(k) = pt.max_theta;
+            t_overturn.mutable_at(k) = pt.t_overturn;
+            final_rotation.mutable_at(k) = pt.final_rotation;
+            peak_rotation.mutable_at(k) = pt.peak_rotation;
+            overturning.mutable_at(k) = pt.overturning;
+            kinds.append(studies::grid_kind_name(pt.grid));
+        }
+        py::dict pts = result();
+        pts["p"] = p;
+        pts["grid"] = kinds;
+        pts["max_theta"] = max_theta;
+        pts["final_rotation"] = final_rotation;
+        pts["peak_rotation"] = peak_rotation;
+        pts["overturning"] = overturning;
+        pts["t_overturn"] = t_overturn;  // NaN where --json writes null
+        d["points"] = pts;
+        spectra.append(d);
+    }
+    out["spectra"] = spectra;
+    return out;
+}
+
+// ---- rocking fragility ----
+
+py::object bracket(bool has, const studies::Bracket& b) {
+    if (!has) return py::none();
+    py::dict d = result();
+    d["q_safe"] = b.safe;
+    d["q_collapse"] = b.collapse;
+    return std::move(d);
+}
+
+py::array_t<double> range(const studies::Range& r) { return to_array({r.lo, r.hi}); }
+
+py::object fit(const BlockFragility& f) {
+    if (!f.fitted) return py::none();
+    py::dict d = result();
+    d["median"] = f.fit.median;
+    d["beta"] = f.fit.beta;
+    d["collapsed"] = f.fit.collapsed;
+    d["censored"] = f.fit.censored;
+    if (!f.bootstrapped) {
+        d["bootstrap"] = py::none();
+    } else {
+        py::dict b = result();
+        b["resamples"] = f.interval.resamples;
+        b["seed"] = f.interval.seed;
+        b["level"] = f.interval.level;
+        b["median"] = range(f.interval.median);
+        b["beta"] = range(f.interval.beta);
+        d["bootstrap"] = b;
+    }
+    d["log_likelihood"] = f.fit.log_likelihood;
+    return std::move(d);
+}
+
+int bootstrap_argument(const std::optional<int>& bootstrap, const std::optional<long long>& seed, std::uint64_t& seed_out) {
+    const int resamples = bootstrap.value_or(0);
+    if (seed && !bootstrap) refuse("seed goes with bootstrap");
+    if (resamples > 0 && !seed) refuse("bootstrap needs seed (the interval is reproducible only from a stated seed)");
+    if (seed) {
+        if (*seed < 1 || *seed > 4294967295LL)
+            refuse("seed: the seed must be a whole number from 1 to 4294967295 (got " + std::to_string(*seed) + ")");
+        seed_out = static_cast<std::uint64_t>(*seed);
+    }
+    return resamples;
+}
+
+py::dict fragility(const py::object& records_given, const py::object& alpha, const py::object& p, double q_max,
+                   int points, const std::optional<int>& bootstrap, const std::optional<long long>& seed,
+                   const std::optional<int>& jobs) {
+    const std::vector<double> alphas = values_in(alpha, "alpha", 0, 0.7, "(0, 0.7)", 50);
+    const std::vector<double> ps = values_in(p, "p", 0.01, 1000, "(0.01, 1000) rad/s", 50);
+    studies::FragilityStudyOptions o;
+    o.ida.q_max = q_max;
+    if (!(o.ida.q_max > o.ida.q_min && o.ida.q_max <= 1e4)) refuse("q_max: must be in (1, 10000]");
+    o.ida.points = points;
+    if (o.ida.points < 2 || o.ida.points > 10000) refuse("points: must be between 2 and 10000");
+    o.resamples = bootstrap_argument(bootstrap, seed, o.seed);
+    if (o.resamples < 0 || o.resamples > 100000) refuse("bootstrap: must be between 0 and 100000");
+    o.threads = jobs_argument(jobs);
+    const std::vector<RecordPtr> recs = record_list(records_given, "records");
+    if (recs.size() > 1000) refuse("records: at most 1000");
+    std::vector<studies::BlockShape> blocks;
+    for (double a : alphas)
+        for (double v : ps) blocks.push_back({a, v});
+    std::vector<BlockFragility> study;
+    {
+        py::gil_scoped_release unlocked;
+        std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
+        for (const RecordPtr& r : recs) {
+            inputs.push_back(input_of(*r));
+            if (!(inputs.back()->peak() > 0)) throw std::runtime_error(label_of(*r) + ": the record never moves (PGA 0)");
+        }
+        std::vector<const dynamics::GroundInput*> views;
+        for (const auto& in : inputs) views.push_back(in.get());
+        study = studies::fragility_study(views, blocks, o);
+    }
+    py::dict out = result();
+    out["model"] = o.ida.describe_model();
+    py::dict grid = result();
+    grid["q_min"] = o.ida.q_min;
+    grid["q_max"] = o.ida.q_max;
+    grid["points"] = o.ida.points;
+    grid["rel_tol"] = o.ida.rel_tol;
+    grid["note"] = o.ida.describe_grid() +
+                   "; q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold; " +
+                   o.ida.describe_checks();
+    out["grid"] = grid;
+    py::list blocks_out;
+    for (const BlockFragility& f : study) {
+        py::dict b = result();
+        b["alpha"] = f.block.alpha;
+        b["p"] = f.block.p;
+        py::list rows;
+        for (std::size_t k = 0; k < recs.size(); ++k) {
+            const Ida& ida = f.idas[k];
+            py::dict d = result();
+            d["file"] = file_of(*recs[k]);
+            d["q_input"] = ida.q_input;
+            d["q"] = ida.point.q;
+            d["collapsed"] = ida.point.collapsed;
+            if (ida.point.collapsed && ida.intervals.front().has_lower) {
+                py::dict c = result();
+                c["confirmation"] = studies::confirmation_name(ida.intervals.front().lower_check.confirmation);
+                c["detail"] = text(ida.intervals.front().lower_check.detail);
+                d["point_check"] = c;
+            } else {
+                d["point_check"] = py::none();
+            }
+            d["simulations"] = ida.simulations;
+            d["check_simulations"] = ida.check_simulations;
+            py::list intervals;
+            for (const studies::IdaInterval& in : ida.intervals) {
+                py::dict i = result();
+                i["from"] = in.from;
+                i["to"] = in.to;
+                i["lower"] = bracket(in.has_lower, in.lower);
+                i["upper"] = bracket(in.has_upper, in.upper);
+                intervals.append(i);
+            }
+            d["intervals"] = intervals;
+            rows.append(d);
+        }
+        b["records"] = rows;
+        b["fit"] = fit(f);
+        b["no_fit"] = f.fitted ? py::object(py::none()) : py::object(text(f.no_fit));
+        std::vector<double> q, share;
+        for (const studies::EmpiricalPoint& e : f.empirical) q.push_back(e.q), share.push_back(e.share);
+        py::dict empirical = result();
+        empirical["q"] = to_array(q);
+        empirical["share"] = to_array(share);
+        b["empirical"] = empirical;
+        blocks_out.append(b);
+    }
+    out["blocks"] = blocks_out;
+    return out;
+}
+
+// ---- rocking eq27 ----
+
+const char* kWilsonNote =
+    "the Wilson interval takes every (record, block) case as independent; the cases of one record are "
+    "correlated, so it misstates the uncertainty (as a rule too narrow): quote the bootstrap over records";
+const char* kNoBootstrap = "bootstrap over records not run (--bootstrap K --seed S)";
+const char* kVerdict =
+    "non-conservative: the record overturns the block at a q below eq. 27's at x = p to_k "
+    "(collapse q < q2_n6(p to_k)); a record that never overturns the block up to q_max is censored "
+    "and counted as conservative";
+
+py::array_t<int> counts(const std::array<int, studies::kHalfPeriods>& c) {
+    py::array_t<int> a(studies::kHalfPeriods);
+    for (int k = 0; k < studies::kHalfPeriods; ++k) a.mutable_at(k) = c[k];
+    return a;
+}
+
+py::dict eq27(const py::object& records_given, const py::object& alpha, double p_min, double p_max, int p_points,
+              double q_max, const std::optional<int>& bootstrap, const std::optional<long long>& seed,
+              const std::optional<int>& jobs) {
+    studies::Eq27Options o;
+    if (!alpha.is_none()) o.grid.alphas = values_in(alpha, "alpha", 0, 0.7, "(0, 0.7)", 50);
+    auto bounded = [](double v, const std::string& what, double lo, double hi, const std::string& range) {
+        if (!(v > lo && v <= hi)) refuse(what + ": must be in " + range + " (got " + g7(v) + ")");
+        return v;
+    };
+    o.grid.p_min = bounded(p_min, "p_min", 0.01, 1000, "(0.01, 1000] rad/s");
+    o.grid.p_max = bounded(p_max, "p_max", 0.01, 1000, "(0.01, 1000] rad/s");
+    if (o.grid.p_max < o.grid.p_min) refuse("p_max: must not be below p_min (" + g7(o.grid.p_min) + ")");
+    o.grid.p_points = p_points;
+    if (p_points < 1 || p_points > 1000) refuse("p_points: must be between 1 and 1000");
+    if (p_points > 1 && o.grid.p_max == o.grid.p_min) refuse("p_points: more than 1 needs p_max above p_min");
+    o.ida.q_max = bounded(q_max, "q_max", o.ida.q_min, 1e4, "(1, 10000]");
+    o.bootstrap.resamples = bootstrap_argument(bootstrap, seed, o.bootstrap.seed);
+    if (o.bootstrap.resamples != 0 && (o.bootstrap.resamples < 2 || o.bootstrap.resamples > 100000))
+        refuse("bootstrap: must be 0 or between 2 and 100000");
+    o.threads = jobs_argument(jobs);
+    const std::vector<RecordPtr> recs = record_list(records_given, "records");
+    if (recs.size() > 1000) refuse("records: at most 1000");
+    std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
+    std::vector<studies::Eq27Record> rows;
+    studies::Eq27Study s;
+    {
+        py::gil_scoped_release unlocked;  // the half-periods' CWT too
+        for (const RecordPtr& r : recs) {
+            const records::HalfPeriods h = checked_half_periods(*r);
+            inputs.push_back(input_of(*r));
+            if (!(inputs.back()->peak() > 0)) throw std::runtime_error(label_of(*r) + ": the record never moves (PGA 0)");
+            rows.push_back({inputs.back().get(), h.to});
+        }
+        s = studies::eq27_at_scale(rows, o);
+    }
+    const bool boot = s.bootstrap.resamples > 0;
+    py::dict out = result();
+    out["model"] = o.ida.describe_model();
+    out["ida"] = o.ida.describe_grid();
+    out["q_max"] = o.ida.q_max;
+    out["blocks"] = o.grid.describe();
+    out["verdict"] = kVerdict;
+    py::dict wilson = result();
+    wilson["level"] = s.level;
+    wilson["note"] = kWilsonNote;
+    out["wilson"] = wilson;
+    out["bootstrap_run"] = boot;
+    if (boot) {
+        py::dict b = result();
+        b["over"] = "records";
+        b["resamples"] = s.bootstrap.resamples;
+        b["seed"] = s.bootstrap.seed;
+        b["level"] = s.bootstrap.level;
+        out["bootstrap"] = b;
+    } else {
+        out["bootstrap"] = py::none();
+        out["bootstrap_note"] = kNoBootstrap;
+    }
+    out["records"] = s.records;
+    py::list files;
+    for (const RecordPtr& r : recs) files.append(file_of(*r));
+    out["files"] = files;
+    out["cases"] = s.cases.size();
+    out["censored"] = s.censored;
+    py::list shares;
+    for (int k = 0; k < studies::kHalfPeriods; ++k) {
+        const studies::Eq27Share& sh = s.shares[k];
+        int blocks_with_any = 0;
+        for (const studies::Eq27Cell& c : s.map) blocks_with_any += c.non_conservative[k] > 0;
+        py::dict d = result();
+        d["k"] = k + 1;
+        d["non_conservative"] = sh.non_conservative;
+        d["cases"] = sh.cases;
+        d["share"] = sh.share;
+        d["bootstrap"] = boot ? py::object(range(sh.bootstrap)) : py::object(py::none());
+        d["wilson"] = to_array({sh.wilson.lo, sh.wilson.hi});
+        d["records_with_any"] = sh.records_with_any;
+        d["records"] = sh.records;
+        d["blocks_with_any"] = blocks_with_any;
+        shares.append(d);
+    }
+    out["shares"] = shares;
+    std::vector<std::array<int, studies::kHalfPeriods>> by_record(s.records, std::array<int, studies::kHalfPeriods>{});
+    for (const studies::Eq27Case& c : s.cases)
+        for (int k = 0; k < studies::kHalfPeriods; ++k) by_record[c.record][k] += c.non_conservative[k];
+    py::list records_out;
+    for (std::size_t r = 0; r < by_record.size(); ++r) {
+        py::dict d = result();
+        d["file"] = file_of(*recs[r]);
+        d["non_conservative"] = counts(by_record[r]);
+        records_out.append(d);
+    }
+    out["by_record"] = records_out;
+    py::list map;
+    for (const studies::Eq27Cell& c : s.map) {
+        py::dict d = result();
+        d["alpha"] = c.block.alpha;
+        d["p"] = c.block.p;
+        d["records"] = c.records;
+        d["censored"] = c.censored;
+        d["non_conservative"] = counts(c.non_conservative);
+        map.append(d);
+    }
+    out["map"] = map;
+    // Each case's first collapse q (or q_max, censored), record-major, for a plot of one's own.
+    const std::size_t n = s.cases.size();
+    py::array_t<double> q(n);
+    py::array_t<bool> collapsed(n);
+    for (std::size_t k = 0; k < n; ++k) q.mutable_at(k) = s.cases[k].point.q, collapsed.mutable_at(k) = s.cases[k].point.collapsed;
+    py::dict cases = result();
+    cases["q"] = q;
+    cases["collapsed"] = collapsed;
+    out["case_points"] = cases;
+    return out;
+}
+
+}  // namespace
+
+void init_studies(py::module_& m) {
+    using namespace py::literals;
+    m.def("spectrum", &spectrum, "record"_a, py::kw_only(), "alpha"_a, "p_min"_a = 0.3, "p_max"_a = 30.0,
+          "points"_a = 200, "jobs"_a = py::none(),
+          R"(`rocking spectrum --json`: for each alpha (a number or a list), the overturning intervals in p
+(rad/s), each end bisected to 1e-6 and checked, beside Table 1's first collapse, and the grid: each
+spectrum's points as arrays (p, grid, max_theta, final_rotation, peak_rotation, overturning,
+t_overturn with NaN for null).  jobs: threads (default: the cores this process may use).
+Releases the GIL.)");
+    m.def("fragility", &fragility, "records"_a, py::kw_only(), "alpha"_a, "p"_a, "q_max"_a = 20.0, "points"_a = 100,
+          "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
+          R"(`rocking fragility --json`: for each block (every alpha with every p) and record, the IDA's
+overturning intervals in q = PGA/(alpha g), the first collapse q or a censored point, the lognormal
+fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).
+Releases the GIL.)");
+    m.def("eq27", &eq27, "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = 0.5, "p_max"_a = 10.0,
+          "p_points"_a = 10, "q_max"_a = 20.0, "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
+          R"(`rocking eq27 --json`: each record's first collapse q on every block of the grid against eq. 27
+at x = p to_k; per to_k the share of non-conservative cases with its Wilson and bootstrap
+intervals, by record and the map over blocks.  Releases the GIL.)");
+}
+
+}  // namespace rocking::python

@@ -1,0 +1,168 @@
+"""Records (read_record, Record, record_info, peak_motion, record_synth), collapse and assess
+against `rocking record info`, `record synth`, `collapse` and `assess`."""
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rocking_q as rq
+from conftest import NORCIA, assert_same, cli, cli_error
+
+SOME = [NORCIA, "esm/IT.AQK..HNN.D.20090406.013240.C.ACC.ASC", "esm/TV.MIR01..HNE.D.20120529.070002.C.ACC.ASC",
+        "peer/RSN1158_KOCAELI_DZC180.AT2", "peer/RSN1158_KOCAELI_DZC270.AT2"]
+
+
+@pytest.mark.parametrize("name", SOME)
+def test_record_info_is_rocking_record_info(records, name):
+    path = str(records / name)
+    expected = cli("record", "info", path)
+    got = rq.record_info(path)
+    assert_same(got, expected)
+    record = rq.read_record(path)
+    assert_same(rq.record_info(record), expected)
+    assert rq.half_periods(record).tolist() == expected["to"]
+    assert record.samples == expected["samples"] == len(record) == len(record.accel)
+    assert record.path == path and record.format == expected["format"] and record.name == expected["name"]
+
+
+def esm_values(path):
+    """The samples of an ESM file as written (cm/s^2): every line after the 'KEY: value' header."""
+    return [float(line) for line in Path(path).read_text().splitlines() if line.strip() and ":" not in line]
+
+
+def test_a_record_from_an_array_is_the_record_from_its_file(records):
+    path = records / NORCIA
+    from_file = rq.read_record(path)
+    from_array = rq.Record(esm_values(path), 0.005, unit="cm/s2", name="Norcia")
+    assert from_array.accel.tolist() == from_file.accel.tolist()  # bit for bit: the same x 0.01
+    assert from_array.dt == from_file.dt and from_array.path is None and from_array.name == "Norcia"
+    expected = {k: v.tolist() if isinstance(v, np.ndarray) else v
+                for k, v in rq.record_info(from_file).items() if k not in ("file", "format", "name")}
+    assert_same(rq.record_info(from_array), expected)
+    # PEER: samples in g, four header lines.
+    peer = records / "peer/RSN1158_KOCAELI_DZC270.AT2"
+    values = [float(v) for line in peer.read_text().splitlines()[4:] for v in line.split()]
+    assert rq.Record(values, 0.005, unit="g").accel.tolist() == rq.read_record(peer).accel.tolist()
+
+
+def test_a_record_from_an_array_is_the_plain_text_file_of_its_numbers(tmp_path):
+    rng = np.random.default_rng(7)
+    values = rng.normal(0, 50, 3001)  # cm/s^2
+    one = tmp_path / "one.txt"
+    one.write_text("".join("%.17g\n" % v for v in values))
+    two = tmp_path / "two.txt"
+    two.write_text("".join("%.17g,%.17g\n" % (0.01 * k, v) for k, v in enumerate(values)))
+    from_array = rq.Record(values, 0.01, unit="cm/s2", name=str(one))
+    for path, words, kwargs in [(one, ["--unit", "cm/s2", "--dt", 0.01], dict(unit="cm/s2", dt=0.01)),
+                                (two, ["--unit", "cm/s2"], dict(unit="cm/s2"))]:
+        from_file = rq.read_record(path, **kwargs)
+        assert from_file.accel.tolist() == from_array.accel.tolist()
+        expected = cli("record", "info", path, *words)
+        assert_same(rq.record_info(from_file), expected)
+        numbers = {k: v for k, v in expected.items() if k not in ("file", "format", "name")}
+        assert_same(rq.record_info(from_array), numbers)
+    # The one-column file's dt is given; the two-column file's dt is its times' step, 0.01 - 0.
+    assert rq.read_record(two, unit="cm/s2").dt == 0.01
+
+
+def test_the_record_s_numbers_and_its_immutability():
+    r = rq.Record([0.0, 1.0, -2.0, 0.5], 0.02, unit="g", name="four")
+    assert r.accel.tolist() == [0.0, 9.81, -2 * 9.81, 0.5 * 9.81]
+    assert r.pga_ms2 == 2 * 9.81 and r.pga_g == 2 * 9.81 / 9.81 and r.duration == 3 * 0.02
+    assert r.in_g().tolist() == [v / 9.81 for v in r.accel.tolist()]
+    with pytest.raises(ValueError):
+        r.accel[0] = 1.0  # read-only: a study may be reading it in another thread
+    view = r.accel
+    del r
+    assert view.tolist()[1] == 9.81  # the view keeps the record alive
+
+
+def test_peak_motion_and_record_synth_are_rocking_record_synth(tmp_path):
+    cases = [(["--pulse", "0.5,1,0.3,2.5"], dict(pulse=(0.5, 1, 0.3, 2.5))),
+             (["--pulse", "-0.3,0.7,1,1.8,3"], dict(pulse=[-0.3, 0.7, 1, 1.8, 3])),
+             (["--stochastic", 11], dict(stochastic=11)),
+             (["--stochastic", 5, "--params", "Ia=0.3,D5_95=8,tmid=5,fmid=4"],
+              dict(stochastic=5, params={"Ia": 0.3, "D5_95": 8, "tmid": 5, "fmid": 4}))]
+    for words, kwargs in cases:
+        out = tmp_path / "synth.txt"
+        expected = cli("record", "synth", *words, "--dt", 0.01, "--duration", 20, "--output", out)
+        got = rq.record_synth(dt=0.01, duration=20, **kwargs)
+        assert got.name == expected["name"] and got.format == expected["format"]
+        assert got.samples == expected["samples"] and got.dt == expected["dt"]
+        assert got.accel.tolist() == rq.read_record(out, unit="m/s2").accel.tolist()
+        m = rq.peak_motion(got)
+        assert_same(m, {k: expected[k] for k in ("pga_ms2", "pgv_ms", "to5_s")})
+        for key, value in expected["parameters"].items():
+            assert got.header[key] == value or float(got.header[key]) == value, key
+
+
+@pytest.mark.parametrize("options", [
+    dict(),
+    dict(restitution=0.9, criterion="final-rotation"),
+    dict(criterion="peak-rotation", restitution=1.0),
+])
+def test_collapse_is_rocking_collapse(records, options):
+    path = str(records / NORCIA)
+    words = []
+    for key, value in options.items():
+        words += ["--" + key, value]
+    expected = cli("collapse", path, "--alpha", 0.15, *words)
+    assert_same(rq.collapse(path, alpha=0.15, **options), expected)
+
+
+def test_collapse_below_the_range_or_never(tmp_path):
+    # A strong constant-ish record overturns at the lowest p; a weak one never lifts the block.
+    t = np.arange(0, 10, 0.01)
+    strong = rq.Record(0.9 * np.sign(np.sin(0.3 * t + 0.1)), 0.01, unit="g", name="strong")
+    weak = rq.Record(0.01 * np.sin(6 * t), 0.01, unit="g", name="weak")
+    for record, found in [(strong, True), (weak, False)]:
+        path = tmp_path / (record.name + ".txt")
+        path.write_text("".join("%.17g\n" % v for v in record.in_g()))
+        expected = cli("collapse", path, "--alpha", 0.15, "--unit", "g", "--dt", 0.01)
+        got = rq.collapse(rq.read_record(path, unit="g", dt=0.01), alpha=0.15)
+        assert_same(got, expected)
+        assert got.found is found and (got.below_range is True) == found
+
+
+@pytest.mark.parametrize("name", SOME)
+def test_assess_is_rocking_assess(records, name):
+    path = str(records / name)
+    for alpha, geometry in [(0.15, ("height", 3)), (0.1, ("half_height", 0.8)), (0.25, ("height", 12))]:
+        expected = cli("assess", path, "--alpha", alpha, "--" + geometry[0].replace("_", "-"), geometry[1])
+        got = rq.assess(path, alpha=alpha, **{geometry[0]: geometry[1]})
+        assert_same(got, expected)
+        assert rq.q2_n6(got.x) == expected["q_eq27"]
+        assert rq.peak_motion(path).to5_s == expected["to5"]
+    assert rq.assess(str(records / NORCIA), alpha=0.15, height=3).passes is False  # README: FAILS
+
+
+def test_a_bad_record_names_its_file_and_line(tmp_path, records):
+    # An ESM file whose NDATA disagrees with its samples: RecordError (a ValueError), the reader's message.
+    lines = (records / NORCIA).read_text().splitlines()
+    bad = tmp_path / "bad.asc"
+    bad.write_text("\n".join(lines[:-3]) + "\n")
+    message, code = cli_error("record", "info", bad)
+    assert code == 1 and message.startswith(str(bad) + ":")
+    for call in (lambda: rq.read_record(bad), lambda: rq.record_info(str(bad)), lambda: rq.collapse(bad, alpha=0.15)):
+        with pytest.raises(rq.RecordError) as e:
+            call()
+        assert str(e.value) == message
+        assert isinstance(e.value, ValueError)
+
+
+def test_a_bad_plain_file_names_its_line(tmp_path):
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0.1\n0.2\nx\n0.3\n")
+    message, _ = cli_error("record", "info", bad, "--unit", "g", "--dt", 0.01)
+    with pytest.raises(rq.RecordError) as e:
+        rq.read_record(bad, unit="g", dt=0.01)
+    assert str(e.value) == message and (":3:" in message)
+    with pytest.raises(ValueError, match="^unit is required"):
+        rq.read_record(bad, dt=0.01)
+    with pytest.raises(ValueError, match="^unit: 'furlong' is not a unit"):
+        rq.read_record(bad, unit="furlong")
+    missing = tmp_path / "missing.asc"
+    message, _ = cli_error("record", "info", missing)
+    with pytest.raises(rq.RecordError) as e:
+        rq.read_record(missing)
+    assert str(e.value) == message

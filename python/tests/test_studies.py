@@ -1,0 +1,110 @@
+"""spectrum, fragility and eq27 against `rocking spectrum`, `fragility` and `eq27`, on synthetic
+records written by `rocking record synth` (no shared records needed) and on a shared record."""
+import numpy as np
+import pytest
+
+import rocking_q as rq
+from conftest import NORCIA, assert_columns, assert_same, cli
+
+
+@pytest.fixture(scope="module")
+def synthetic(tmp_path_factory):
+    """Three synthetic records as files (t, a in m/s^2) and as the module's Records read from them."""
+    folder = tmp_path_factory.mktemp("synthetic")
+    paths = []
+    for name, words in [("pulse", ["--pulse", "0.6,0.8,0.4,2.2"]), ("noise", ["--stochastic", 3]),
+                        ("pulse2", ["--pulse", "-0.4,1.5,1.2,1.6,2"])]:
+        path = folder / (name + ".txt")
+        cli("record", "synth", *words, "--dt", 0.01, "--duration", 12, "--output", path)
+        paths.append(str(path))
+    return paths
+
+
+def without(result, *keys):
+    return {k: v for k, v in result.items() if k not in keys}
+
+
+def check_spectrum(got, expected):
+    assert_same(without(got, "spectra"), without(expected, "spectra"))
+    assert len(got.spectra) == len(expected["spectra"])
+    for k, (g, e) in enumerate(zip(got.spectra, expected["spectra"])):
+        assert_same(without(g, "points"), without(e, "points"), "spectra[%d]" % k)
+        assert_columns(g.points, e["points"], "spectra[%d].points" % k)
+
+
+def test_spectrum_is_rocking_spectrum(synthetic):
+    path = synthetic[0]
+    expected = cli("spectrum", path, "--alpha", "0.1,0.15", "--points", 30, "--p-min", 1, "--p-max", 10,
+                   "--unit", "m/s2")
+    record = rq.read_record(path, unit="m/s2")
+    for jobs in (1, 2):
+        check_spectrum(rq.spectrum(record, alpha=[0.1, 0.15], points=30, p_min=1, p_max=10, jobs=jobs), expected)
+    assert any(s["intervals"] for s in expected["spectra"])  # the test sees intervals, not only empty lists
+
+
+def test_spectrum_on_a_shared_record(records):
+    path = str(records / NORCIA)
+    expected = cli("spectrum", path, "--alpha", 0.15, "--points", 40, "--p-min", 1, "--p-max", 4)
+    check_spectrum(rq.spectrum(path, alpha=0.15, points=40, p_min=1, p_max=4), expected)
+
+
+def check_fragility(got, expected):
+    assert_same(without(got, "blocks"), without(expected, "blocks"))
+    for k, (g, e) in enumerate(zip(got.blocks, expected["blocks"])):
+        assert_same(without(g, "empirical"), without(e, "empirical"), "blocks[%d]" % k)
+        assert_columns(g.empirical, e["empirical"], "blocks[%d].empirical" % k)
+    assert len(got.blocks) == len(expected["blocks"])
+
+
+def test_fragility_is_rocking_fragility(synthetic):
+    expected = cli("fragility", *synthetic, "--alpha", "0.1,0.15", "--p", "2,4", "--points", 20, "--q-max", 8,
+                   "--bootstrap", 50, "--seed", 3, "--unit", "m/s2")
+    records = [rq.read_record(p, unit="m/s2") for p in synthetic]
+    for jobs in (1, 2):
+        got = rq.fragility(records, alpha=[0.1, 0.15], p=[2, 4], points=20, q_max=8, bootstrap=50, seed=3, jobs=jobs)
+        check_fragility(got, expected)
+    assert any(b["fit"] and b["fit"]["bootstrap"] for b in expected["blocks"])
+    # Without a bootstrap: fit.bootstrap is None, as the JSON's null.
+    expected = cli("fragility", *synthetic[:2], "--alpha", 0.15, "--p", 3, "--points", 15, "--unit", "m/s2")
+    check_fragility(rq.fragility(records[:2], alpha=0.15, p=3, points=15), expected)
+
+
+def test_eq27_is_rocking_eq27(synthetic):
+    words = ["--alpha", "0.1,0.2", "--p-min", 1, "--p-max", 4, "--p-points", 2, "--q-max", 8, "--unit", "m/s2"]
+    records = [rq.read_record(p, unit="m/s2") for p in synthetic]
+    kwargs = dict(alpha=[0.1, 0.2], p_min=1, p_max=4, p_points=2, q_max=8)
+    expected = cli("eq27", *synthetic, *words, "--bootstrap", 30, "--seed", 2)
+    got = rq.eq27(records, bootstrap=30, seed=2, jobs=2, **kwargs)
+    assert_same(got, expected)
+    assert len(got.case_points["q"]) == expected["cases"]
+    expected = cli("eq27", *synthetic, *words)
+    assert_same(rq.eq27(records, jobs=1, **kwargs), expected)
+    assert expected["bootstrap"] is None
+
+
+def test_a_study_takes_records_made_from_arrays(synthetic):
+    # The same samples as an array give the same study; only the record's name and file differ.
+    from_file = rq.read_record(synthetic[1], unit="m/s2")
+    from_array = rq.Record(np.array(from_file.accel), from_file.dt, name="noise")
+    a = rq.spectrum(from_file, alpha=0.12, points=25, p_min=1, p_max=8)
+    b = rq.spectrum(from_array, alpha=0.12, points=25, p_min=1, p_max=8)
+    assert b.file == "noise" and b.name == "noise"
+    assert a.spectra[0].points.max_theta.tolist() == b.spectra[0].points.max_theta.tolist()
+    assert [dict(i, lower=dict(i["lower"] or {}), upper=dict(i["upper"] or {})) for i in a.spectra[0].intervals] == \
+        [dict(i, lower=dict(i["lower"] or {}), upper=dict(i["upper"] or {})) for i in b.spectra[0].intervals]
+
+
+def test_study_arguments_are_checked():
+    r = rq.record_synth(pulse=(0.6, 0.8, 0.4, 2.2), dt=0.01, duration=12)
+    with pytest.raises(ValueError, match=r"^alpha: each must be in \(0, 0.7\)"):
+        rq.spectrum(r, alpha=[0.1, 0.9])
+    with pytest.raises(ValueError, match="^p_max: must be above p_min"):
+        rq.spectrum(r, alpha=0.1, p_min=5, p_max=2)
+    with pytest.raises(ValueError, match="^bootstrap needs seed"):
+        rq.fragility([r], alpha=0.1, p=2, bootstrap=10)
+    with pytest.raises(ValueError, match="^seed goes with bootstrap"):
+        rq.eq27([r], seed=3)
+    with pytest.raises(ValueError, match="^jobs: must be between 1 and 4096"):
+        rq.fragility([r], alpha=0.1, p=2, jobs=0)
+    with pytest.raises(TypeError, match="^records: expected a list of records"):
+        rq.fragility(r, alpha=0.1, p=2)
