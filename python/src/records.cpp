@@ -69,7 +69,7 @@ py::array_t<double> accel_view(py::object self) {
     const Record& r = self.cast<const Record&>();
     py::array_t<double> a({static_cast<py::ssize_t>(r.accel.size())}, {static_cast<py::ssize_t>(sizeof(double))},
                           r.accel.data(), self);
-    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    a.attr("flags").attr("writeable") = false;
     return a;
 }
 
@@ -133,6 +133,9 @@ std::shared_ptr<Record> record_synth(const std::optional<std::vector<double>>& p
     if (!(duration > 0)) refuse("duration: must be > 0 (got " + significant(duration, 17) + ")");
     const std::string flag = pulse ? "pulse" : params ? "params" : "stochastic";
     records::PulseParameters pp{};
+    // default_stochastic_parameters and with_arias_modulation swap GSL's process-wide error
+    // handler and put it back: they run with the GIL held, so that two Python threads never
+    // swap it at once.
     records::StochasticParameters sp = records::default_stochastic_parameters();
     std::uint64_t seed = 0;
     if (pulse) {
@@ -316,6 +319,25 @@ reads a file.  Immutable: accel is a read-only view.)")
         .def_property_readonly("pga_g", [](const Record& r) { return r.pga() / dynamics::kGravity; }, "max |a|, g")
         .def("in_g", [](const Record& r) { return to_array(r.in_g(dynamics::kGravity)); }, "the samples in g (a copy)")
         .def("__len__", [](const Record& r) { return r.accel.size(); })
+        // Pickled whole, so that a ProcessPoolExecutor can send one to its workers.
+        .def(py::pickle(
+            [](const Record& r) {
+                py::dict header;  // bytes, as read: a file's header need not be UTF-8
+                for (const auto& [key, value] : r.header) header[py::bytes(key)] = py::bytes(value);
+                return py::make_tuple(py::bytes(r.path), py::bytes(r.format), py::bytes(r.name), r.dt, to_array(r.accel),
+                                      header);
+            },
+            [](py::tuple t) {
+                if (t.size() != 6) throw std::runtime_error("Record: not a pickled rocking_q.Record");
+                auto r = std::make_shared<Record>();
+                r->path = t[0].cast<std::string>();
+                r->format = t[1].cast<std::string>();
+                r->name = t[2].cast<std::string>();
+                r->dt = t[3].cast<double>();
+                r->accel = real_vector(t[4], "accel");
+                r->header = t[5].cast<std::map<std::string, std::string>>();
+                return r;
+            }))
         .def("__repr__", [](const Record& r) {
             return text("<rocking_q.Record '" + r.name + "' (" + r.format + "): " + std::to_string(r.accel.size()) +
                         " samples, dt = " + significant(r.dt, 6) + " s>");

@@ -77,6 +77,18 @@ def test_the_record_s_numbers_and_its_immutability():
     assert view.tolist()[1] == 9.81  # the view keeps the record alive
 
 
+def test_a_record_pickles_whole(records):
+    import pickle
+    for record in (rq.read_record(records / NORCIA), rq.Record([0.1, -0.2, 0.3, 0.05, -0.1], 0.01, unit="g", name="five"),
+                   rq.record_synth(stochastic=4, dt=0.01, duration=5)):
+        again = pickle.loads(pickle.dumps(record))
+        assert again.accel.tolist() == record.accel.tolist() and again.dt == record.dt
+        assert (again.path, again.format, again.name, again.header) == (record.path, record.format, record.name,
+                                                                        record.header)
+        assert_same(rq.record_info(again), {k: v.tolist() if isinstance(v, np.ndarray) else v
+                                            for k, v in rq.record_info(record).items()})
+
+
 def test_peak_motion_and_record_synth_are_rocking_record_synth(tmp_path):
     cases = [(["--pulse", "0.5,1,0.3,2.5"], dict(pulse=(0.5, 1, 0.3, 2.5))),
              (["--pulse", "-0.3,0.7,1,1.8,3"], dict(pulse=[-0.3, 0.7, 1, 1.8, 3])),
