@@ -30,6 +30,8 @@ const char* kUsage =
     "                        [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]\n"
     "       rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q]\n"
     "                        [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]\n"
+    "       rocking batch MANIFEST [--jobs N] [--output FILE] [--resume] [--quiet]\n"
+    "       mpirun -np K rocking batch MANIFEST --output FILE [--resume]\n"
     "\n"
     "  --case I     input of Figure 3, I = 1..5 (amplitudes in PGA, durations in to)\n"
     "  --pulses N   repeat the case's pattern to N pulses (case 2, N = 6 is eq. 27)\n"
@@ -94,7 +96,16 @@ const char* kUsage =
     "  eq. 27 at x = p to_k: per to_k the share of non-conservative cases (collapse q below eq. 27's; a\n"
     "  record censored at --q-max counts as conservative) with its 95 % Wilson interval (cases taken as\n"
     "  independent) and, with --bootstrap K --seed S, a 90 % bootstrap over records. --output writes the\n"
-    "  map: per block, the records non-conservative for each to_k. --jobs N as for fragility.\n";
+    "  map: per block, the records non-conservative for each to_k. --jobs N as for fragility.\n"
+    "batch: a CSV manifest, one job a row (kind simulate|collapse|ida|spectrum, record, alpha, p|height|\n"
+    "  half_height, scaling q=Q|pga=G, model, solver, rtol, atol, restitution, criterion, q_max, points,\n"
+    "  p_min, p_max; relative record paths from the manifest's folder; an empty cell takes the default of\n"
+    "  the command that runs that study alone): one results row per job in the manifest's order, whatever\n"
+    "  the threads (--jobs N, default the cores) or ranks (mpirun; 1 thread a rank unless --jobs); a job\n"
+    "  that fails gets its error in its row and the rest run. --output FILE is written as FILE.partial\n"
+    "  and renamed when complete; --resume completes an interrupted one (Ctrl-C, SIGTERM, a kill), refusing\n"
+    "  a changed manifest. Progress on stderr when a terminal, unless --quiet. Exit 0, or 3 when some job\n"
+    "  failed (docs/batch.md).\n";
 
 int run(int argc, char** argv) {
     const std::string command = argc > 1 ? argv[1] : "";
@@ -116,6 +127,7 @@ int run(int argc, char** argv) {
         if (command == "spectrum") return cmd_spectrum(argc, argv);
         if (command == "fragility") return cmd_fragility(argc, argv);
         if (command == "eq27") return cmd_eq27(argc, argv);
+        if (command == "batch") return cmd_batch(argc, argv);
         throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
     } catch (const UsageError& e) {
         // The whole usage would bury the one line that says what is wrong.

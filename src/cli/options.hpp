@@ -75,5 +75,6 @@ int cmd_record_synth(int argc, char** argv);  // rocking record synth (synth.cpp
 int cmd_spectrum(int argc, char** argv);
 int cmd_fragility(int argc, char** argv);
 int cmd_eq27(int argc, char** argv);
+int cmd_batch(int argc, char** argv);
 
 }  // namespace rocking::cli

@@ -1,0 +1,53 @@
+// The batch engine: a plan of jobs, each giving one row, run on threads on
+// one machine or on the ranks of an MPI run, the rows written in the jobs'
+// order to a results file that a killed batch resumes (results_file.hpp),
+// with progress on stderr.  It knows jobs and rows, no physics: what job i
+// computes and what its row says is the plan's (src/jobs/batch_plan.hpp).
+//
+// Memory is bounded whatever the number of jobs: at most `window` rows wait
+// for their turn (by default 64 per thread, or per rank and thread under
+// MPI), and the rows not yet flushed to the file are at most 4 MiB; the plan
+// holds what it needs for its jobs (the manifest's text, and the records'
+// cache with its own budget).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "batch/job_row.hpp"
+#include "batch/ranks.hpp"
+
+namespace rocking::batch {
+
+struct BatchPlan {
+    std::size_t jobs = 0;
+    std::string header;  // the results' lines after the digest's, each ending '\n'
+    std::string digest;  // the manifest's SHA-256: the results' identity on resume
+    JobFunction run;     // job i's row; never throws
+};
+
+struct EngineOptions {
+    std::string output;  // "" for standard output
+    bool resume = false;
+    bool quiet = false;     // no progress line even on a terminal
+    int threads = 1;        // per process
+    std::size_t window = 0; // rows held at most; 0 for the default
+    double flush_seconds = 1.0;
+};
+
+struct BatchOutcome {
+    std::size_t jobs = 0;     // in the results (all of them, unless interrupted)
+    std::size_t failed = 0;   // rows marked failed, those of a resumed part included
+    std::size_t ran = 0;      // jobs run by this call
+    bool already_complete = false;  // --resume found the results finished
+};
+
+// `ranks` null: threads in this process.  Otherwise this process's part of
+// an MPI run: rank 0 writes and returns the outcome; the other ranks return
+// an empty one.  Throws ResultsError (and, on the ranks that did not fail
+// themselves, OtherRankFailed) when the results cannot be written or resumed.
+// SIGINT and SIGTERM flush the rows delivered so far and end the process by
+// the signal, after a line on stderr saying how to resume.
+BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Ranks* ranks);
+
+}  // namespace rocking::batch

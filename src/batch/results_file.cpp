@@ -1,0 +1,253 @@
+#include "batch/results_file.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace rocking::batch {
+
+namespace {
+
+const char kDigestLine[] = "# manifest sha256: ";
+const char kStateLine[] = "rocking batch state:";
+
+bool exists(const std::string& path) {
+    struct stat s {};
+    return ::stat(path.c_str(), &s) == 0;
+}
+
+std::string why(int error) { return std::strerror(error); }
+
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+std::string end_line(std::size_t jobs, std::size_t failed) {
+    return "# end: " + std::to_string(jobs) + " jobs, " + std::to_string(failed) + " failed\n";
+}
+
+// The file's text, or throws naming it.
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ResultsError(path + ": cannot read: " + why(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+}  // namespace
+
+ResultsFile::ResultsFile(const ResultsOptions& options, const std::string& header, const std::string& digest,
+                         std::size_t jobs)
+    : options_(options), jobs_(jobs), last_flush_(std::chrono::steady_clock::now()) {
+    const std::string preamble = kDigestLine + digest + "\n" + header;
+    try {
+        open(preamble, digest);
+    } catch (...) {
+        if (fd_ >= 0) ::close(fd_);  // and its lock: the destructor does not run
+        fd_ = -1;
+        throw;
+    }
+}
+
+void ResultsFile::open(const std::string& preamble, const std::string& digest) {
+    if (options_.path.empty()) {
+        if (options_.resume) throw ResultsError("--resume needs --output: rows written to standard output cannot be resumed");
+        write_all(preamble);
+        return;
+    }
+    struct stat target {};
+    if (::stat(options_.path.c_str(), &target) == 0 && !S_ISREG(target.st_mode))
+        throw ResultsError(options_.path + ": not a regular file (the results are written beside it as " + partial_path() +
+                           ", then renamed)");
+    if (!options_.resume) {
+        if (exists(partial_path()))
+            throw ResultsError(partial_path() + " exists: an interrupted batch's results. Add --resume to complete it, or "
+                               "remove " + partial_path() + " and " + state_path() + " to start over");
+        start_fresh(preamble);
+        return;
+    }
+    if (exists(partial_path()) && resume_partial(digest)) return;
+    if (!exists(partial_path()) && exists(options_.path)) {
+        check_complete(digest);
+        return;
+    }
+    start_fresh(preamble);  // nothing was committed yet
+}
+
+ResultsFile::~ResultsFile() {
+    if (fd_ >= 0) ::close(fd_);  // the lock goes with it
+}
+
+std::size_t ResultsFile::done() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return done_;
+}
+
+std::size_t ResultsFile::failed() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return failed_;
+}
+
+void ResultsFile::start_fresh(const std::string& preamble) {
+    if (fd_ < 0) {
+        fd_ = ::open(partial_path().c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+        if (fd_ < 0) throw ResultsError(partial_path() + ": cannot create: " + why(errno));
+        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0)
+            throw ResultsError(partial_path() + ": another rocking batch is writing these results (the file is locked)");
+    }
+    if (::ftruncate(fd_, 0) != 0 || ::lseek(fd_, 0, SEEK_SET) != 0)
+        throw ResultsError(partial_path() + ": cannot write: " + why(errno));
+    hash_ = Sha256();
+    bytes_ = 0;
+    done_ = failed_ = written_done_ = written_failed_ = 0;
+    held_ = preamble;
+    flush_locked();
+}
+
+// Takes up OUT.partial where its state says it is good.  False when it has
+// no state yet (killed before its header was committed): start over.
+bool ResultsFile::resume_partial(const std::string& digest) {
+    fd_ = ::open(partial_path().c_str(), O_RDWR | O_CLOEXEC);
+    if (fd_ < 0) throw ResultsError(partial_path() + ": cannot open: " + why(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0)
+        throw ResultsError(partial_path() + ": another rocking batch is writing these results (the file is locked)");
+    if (!exists(state_path())) return false;
+    const std::string state = slurp(state_path());
+    unsigned long long jobs = 0, failed = 0, bytes = 0;
+    char hex[65] = {};
+    if (std::sscanf(state.c_str(), "rocking batch state: jobs %llu failed %llu bytes %llu sha256 %64s", &jobs, &failed,
+                    &bytes, hex) != 4 ||
+        std::strlen(hex) != 64)
+        throw ResultsError(state_path() + ": not a state file of rocking batch; remove it and " + partial_path() +
+                           " to start over");
+    std::vector<char> kept(bytes);
+    const ssize_t got = bytes ? ::pread(fd_, kept.data(), bytes, 0) : 0;
+    Sha256 hash;
+    hash.update(kept.data(), kept.size());
+    if (got != static_cast<ssize_t>(bytes) || hash.hex() != hex)
+        throw ResultsError(partial_path() + ": its first " + std::to_string(bytes) +
+                           " bytes do not match the checksum in " + state_path() +
+                           " (the file was changed or damaged); remove both to start over");
+    const std::string head = first_line(std::string(kept.begin(), kept.end()));
+    if (head != kDigestLine + digest)
+        throw ResultsError("the manifest has changed since " + partial_path() + " was begun (its sha256 was " +
+                           head.substr(std::min(head.size(), sizeof kDigestLine - 1)) + ", it is now " + digest +
+                           "): the rows written are another manifest's jobs. Run the manifest it was begun with, or "
+                           "remove " + partial_path() + " and " + state_path() + " to start over");
+    if (jobs > jobs_ || failed > jobs)
+        throw ResultsError(state_path() + ": counts " + std::to_string(jobs) + " jobs, more than the manifest's " +
+                           std::to_string(jobs_));
+    if (::ftruncate(fd_, static_cast<off_t>(bytes)) != 0 || ::lseek(fd_, 0, SEEK_END) != static_cast<off_t>(bytes))
+        throw ResultsError(partial_path() + ": cannot cut off the rows its state does not count: " + why(errno));
+    hash_ = hash;
+    bytes_ = bytes;
+    done_ = written_done_ = jobs;
+    failed_ = written_failed_ = failed;
+    return true;
+}
+
+// --resume where OUT.partial is gone: the results at the path, when they are
+// this manifest's and complete, are the answer.
+void ResultsFile::check_complete(const std::string& digest) {
+    const std::string text = slurp(options_.path);
+    if (first_line(text) != kDigestLine + digest)
+        throw ResultsError(options_.path + " holds no results of this manifest (its first line is not '" + kDigestLine +
+                           digest + "'): --resume has nothing to complete; run without --resume to replace it");
+    const std::size_t last = text.rfind('\n', text.size() >= 2 ? text.size() - 2 : 0);
+    const std::string end = text.substr(last == std::string::npos ? 0 : last + 1);
+    unsigned long long jobs = 0, failed = 0;
+    if (text.empty() || text.back() != '\n' ||
+        std::sscanf(end.c_str(), "# end: %llu jobs, %llu failed", &jobs, &failed) != 2 || jobs != jobs_)
+        throw ResultsError(options_.path + ": no '# end: " + std::to_string(jobs_) +
+                           " jobs' line closes it: not a complete results file, and no " + partial_path() +
+                           " to resume; run without --resume to replace it");
+    ::unlink(state_path().c_str());  // a kill between the last rename and this removal left it
+    done_ = written_done_ = jobs;
+    failed_ = written_failed_ = failed;
+    complete_ = true;
+}
+
+void ResultsFile::append(const std::string& row, bool failed) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    held_ += row;
+    held_ += '\n';
+    ++done_;
+    failed_ += failed;
+    const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_flush_).count();
+    if (held_.size() >= options_.flush_bytes || since >= options_.flush_seconds) flush_locked();
+}
+
+void ResultsFile::flush() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!finished_ && !complete_) flush_locked();
+}
+
+void ResultsFile::write_all(const std::string& text) {
+    if (options_.path.empty()) {
+        if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
+            throw ResultsError("standard output: cannot write the results: " + why(errno));
+        return;
+    }
+    for (std::size_t at = 0; at < text.size();) {
+        const ssize_t n = ::write(fd_, text.data() + at, text.size() - at);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw ResultsError(partial_path() + ": cannot write: " + why(errno));
+        at += static_cast<std::size_t>(n);
+    }
+}
+
+void ResultsFile::flush_locked() {
+    last_flush_ = std::chrono::steady_clock::now();
+    if (held_.empty()) return;
+    write_all(held_);
+    if (options_.path.empty()) {
+        held_.clear();
+        return;
+    }
+    hash_.update(held_);
+    bytes_ += held_.size();
+    held_.clear();
+    // The rows reach the disk before the state that counts them.
+    if (::fdatasync(fd_) != 0) throw ResultsError(partial_path() + ": cannot sync: " + why(errno));
+    written_done_ = done_;
+    written_failed_ = failed_;
+    write_state();
+}
+
+void ResultsFile::write_state() {
+    const std::string temporary = state_path() + ".tmp";
+    char text[200];
+    std::snprintf(text, sizeof text, "%s jobs %zu failed %zu bytes %llu sha256 %s\n", kStateLine, written_done_,
+                  written_failed_, bytes_, hash_.hex().c_str());
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) throw ResultsError(temporary + ": cannot create: " + why(errno));
+    const std::size_t size = std::strlen(text);
+    const bool ok = ::write(fd, text, size) == static_cast<ssize_t>(size) && ::fsync(fd) == 0;
+    const int error = errno;
+    ::close(fd);
+    if (!ok || std::rename(temporary.c_str(), state_path().c_str()) != 0)
+        throw ResultsError(state_path() + ": cannot write: " + why(ok ? errno : error));
+}
+
+void ResultsFile::finish() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (complete_ || finished_) return;
+    held_ += end_line(done_, failed_);
+    write_all(held_);
+    held_.clear();
+    finished_ = true;
+    if (options_.path.empty()) return;
+    if (::fsync(fd_) != 0) throw ResultsError(partial_path() + ": cannot sync: " + why(errno));
+    if (std::rename(partial_path().c_str(), options_.path.c_str()) != 0)
+        throw ResultsError(options_.path + ": cannot move " + partial_path() + " into its place: " + why(errno));
+    ::unlink(state_path().c_str());
+}
+
+}  // namespace rocking::batch

@@ -1,0 +1,95 @@
+// The results of a batch on disk: rows streamed out in the jobs' order,
+// made durable piece by piece so that a batch killed at any moment can be
+// resumed, and the finished file appearing at its name whole or not at all.
+// It knows rows of text and whether each failed, not what they hold.
+//
+// While the batch runs, the rows go to OUT.partial and a state file beside
+// it, OUT.partial.state, records how far that file is good: the jobs
+// written, the failed ones among them, its length in bytes and the SHA-256 of
+// those bytes.  A flush appends the rows held, syncs them to the disk, then
+// replaces the state file atomically (a temporary file, synced, renamed): a
+// kill between the two leaves rows beyond the recorded length, which a resume
+// cuts off, and a kill inside the rename leaves the old state, still true.
+// The state moves only after the rows it counts are on the disk, so a
+// half-written piece is never taken for a finished one.  When every job is
+// written, a last line '# end: N jobs, K failed' closes the file and it is
+// renamed to OUT.
+//
+// The file's first line is '# manifest sha256: HEX': a resume on a manifest
+// whose digest differs is refused, since its jobs are not the ones counted.
+// Resuming keeps the header already written and appends the rows after it,
+// so that a resumed batch ends with the same bytes as one never interrupted.
+// Without a path the rows go to standard output, and nothing can be resumed.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+#include "batch/sha256.hpp"
+
+namespace rocking::batch {
+
+// A results file that cannot be written, or a resume refused: the message
+// says which file and why, and what to do.
+struct ResultsError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+struct ResultsOptions {
+    std::string path;       // "" for standard output
+    bool resume = false;
+    // A flush at the first row after this many seconds since the last one,
+    // or once this many bytes are held: what a kill can lose, and the
+    // memory the rows not yet written take.
+    double flush_seconds = 1.0;
+    std::size_t flush_bytes = std::size_t{4} << 20;
+};
+
+class ResultsFile {
+public:
+    // `header`: the lines after the digest's, each ending with '\n'.
+    // Throws ResultsError when the files cannot be made, when a partial file
+    // exists and resume is off, and when a resume is refused.
+    ResultsFile(const ResultsOptions& options, const std::string& header, const std::string& digest, std::size_t jobs);
+    ~ResultsFile();
+    ResultsFile(const ResultsFile&) = delete;
+    ResultsFile& operator=(const ResultsFile&) = delete;
+
+    std::size_t done() const;    // the jobs written, those a resume skips included
+    std::size_t failed() const;  // among them, the rows marked failed
+    // A resume found the results already complete at the path (nothing to run).
+    bool complete() const { return complete_; }
+    // Job done()'s row (its text without the newline), and whether it failed.
+    void append(const std::string& row, bool failed);
+    // The rows held reach the file, synced, and the state counts them.
+    void flush();
+    // Every job written: the end line, and the file moves to its path.
+    void finish();
+    std::string partial_path() const { return options_.path + ".partial"; }
+    std::string state_path() const { return options_.path + ".partial.state"; }
+
+private:
+    void open(const std::string& preamble, const std::string& digest);
+    void flush_locked();
+    void write_all(const std::string& text);
+    void write_state();
+    void start_fresh(const std::string& preamble);
+    bool resume_partial(const std::string& digest);
+    void check_complete(const std::string& digest);
+
+    ResultsOptions options_;
+    std::size_t jobs_ = 0;
+    mutable std::mutex mutex_;
+    int fd_ = -1;
+    std::string held_;
+    std::size_t done_ = 0, failed_ = 0, written_done_ = 0, written_failed_ = 0;
+    unsigned long long bytes_ = 0;
+    Sha256 hash_;  // of the bytes written
+    bool complete_ = false, finished_ = false;
+    std::chrono::steady_clock::time_point last_flush_;
+};
+
+}  // namespace rocking::batch

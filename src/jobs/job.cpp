@@ -1,0 +1,276 @@
+#include "jobs/job.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include "dynamics/stepper.hpp"
+
+namespace rocking::jobs {
+
+using dynamics::Block;
+using dynamics::Equation;
+
+std::string kind_name(Kind kind) {
+    switch (kind) {
+        case Kind::simulate: return "simulate";
+        case Kind::collapse: return "collapse";
+        case Kind::ida: return "ida";
+        case Kind::spectrum: return "spectrum";
+    }
+    return "?";
+}
+
+const std::vector<std::string>& manifest_columns() {
+    static const std::vector<std::string> names = {
+        "id",   "kind",        "record",      "unit",   "record_dt", "alpha",     "p",      "height",
+        "half_height", "scaling", "model", "solver", "rtol",      "atol",      "restitution", "criterion",
+        "q_max", "points",     "p_min",       "p_max"};
+    return names;
+}
+
+Columns::Columns(const std::vector<std::string>& header) : names_(header) {
+    std::string known;
+    for (const std::string& n : manifest_columns()) known += (known.empty() ? "" : ", ") + n;
+    for (const std::string& name : header) {
+        bool ok = false;
+        for (const std::string& n : manifest_columns()) ok = ok || n == name;
+        if (!ok) throw std::invalid_argument("unknown column '" + name + "' (the columns: " + known + ")");
+    }
+    for (const char* needed : {"record", "alpha"}) {
+        bool found = false;
+        for (const std::string& name : header) found = found || name == needed;
+        if (!found) throw std::invalid_argument(std::string("no '") + needed + "' column: every job needs one");
+    }
+}
+
+const std::string& Columns::cell(const std::vector<std::string>& row, const std::string& name) const {
+    static const std::string none;
+    for (std::size_t c = 0; c < names_.size() && c < row.size(); ++c)
+        if (names_[c] == name) return row[c];
+    return none;
+}
+
+double Job::restitution_factor() const { return housner ? dynamics::housner_restitution(alpha) : restitution; }
+
+std::string Job::solver_text() const {
+    if (solver.kind == dynamics::SolverKind::exact) return "exact";
+    char text[120];
+    std::snprintf(text, sizeof text, "%s rtol %g atol %g alpha", dynamics::solver_name(solver.kind).c_str(), solver.rtol,
+                  solver.atol_alpha);
+    return text;
+}
+
+namespace {
+
+[[noreturn]] void bad(const std::string& column, const std::string& problem) {
+    throw std::invalid_argument(column + ": " + problem);
+}
+
+double number(const std::string& column, const std::string& text) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        bad(column, "'" + text + "' is not a number");
+    }
+    if (used != text.size() || !std::isfinite(v)) bad(column, "'" + text + "' is not a finite number");
+    return v;
+}
+
+int whole(const std::string& column, const std::string& text) {
+    const double v = number(column, text);
+    if (v != std::floor(v) || std::fabs(v) > 1e6) bad(column, "'" + text + "' is not a whole number");
+    return static_cast<int>(v);
+}
+
+std::string g(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", v);
+    return text;
+}
+
+// The columns each kind takes besides id, kind, record, unit, record_dt, alpha
+// and the model's (model, solver, rtol, atol, restitution, criterion).
+const std::set<std::string>& own_columns(Kind kind) {
+    static const std::set<std::string> simulate = {"p", "height", "half_height", "scaling"};
+    static const std::set<std::string> collapse = {"scaling"};
+    static const std::set<std::string> ida = {"p", "height", "half_height", "q_max", "points"};
+    static const std::set<std::string> spectrum = {"scaling", "points", "p_min", "p_max"};
+    switch (kind) {
+        case Kind::simulate: return simulate;
+        case Kind::collapse: return collapse;
+        case Kind::ida: return ida;
+        case Kind::spectrum: return spectrum;
+    }
+    return simulate;
+}
+
+const char* why_not(Kind kind, const std::string& column) {
+    if (column == "scaling" && kind == Kind::ida) return "the IDA scales the record itself, over q";
+    if ((column == "p" || column == "height" || column == "half_height") &&
+        (kind == Kind::collapse || kind == Kind::spectrum))
+        return "it searches p";
+    return "not one of its columns";
+}
+
+Kind kind_from(const std::string& text) {
+    if (text.empty() || text == "simulate") return Kind::simulate;
+    if (text == "collapse") return Kind::collapse;
+    if (text == "ida") return Kind::ida;
+    if (text == "spectrum") return Kind::spectrum;
+    bad("kind", "'" + text + "' is not a kind (simulate, collapse, ida, spectrum)");
+}
+
+RecordSource record_from(const Columns& c, const std::vector<std::string>& row, const std::string& folder) {
+    RecordSource r;
+    r.cell = c.cell(row, "record");
+    if (r.cell.empty()) bad("record", "empty: every job needs a record file");
+    r.path = r.cell.front() == '/' ? r.cell : folder + "/" + r.cell;
+    r.unit = c.cell(row, "unit");
+    if (!r.unit.empty() && r.unit != "g" && r.unit != "m/s2" && r.unit != "cm/s2")
+        bad("unit", "'" + r.unit + "' is not a unit it knows (g, m/s2, cm/s2)");
+    const std::string& dt = c.cell(row, "record_dt");
+    if (!dt.empty()) {
+        if (r.unit.empty()) bad("record_dt", "goes with unit (a plain-text record in g, m/s2 or cm/s2)");
+        r.dt = number("record_dt", dt);
+        if (!(r.dt > 0)) bad("record_dt", "must be > 0 (got " + dt + ")");
+    }
+    return r;
+}
+
+Block block_from(const Columns& c, const std::vector<std::string>& row, Kind kind, double alpha) {
+    const std::string &p = c.cell(row, "p"), &h = c.cell(row, "height"), &hh = c.cell(row, "half_height");
+    if (!p.empty() + !h.empty() + !hh.empty() != 1)
+        bad(p.empty() && h.empty() && hh.empty() ? "p" : "p, height, half_height",
+            "give exactly one of p (rad/s), height and half_height (m) for " + std::string(kind == Kind::ida ? "an " : "a ") +
+                kind_name(kind) + " job");
+    Block b{};
+    try {
+        if (!p.empty()) b = Block::from_p(number("p", p), alpha);
+        else if (!h.empty()) b = Block::from_full_height(number("height", h), alpha);
+        else b = Block::from_half_height(number("half_height", hh), alpha);
+    } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        if (what.rfind("p:", 0) == 0 || what.rfind("height:", 0) == 0 || what.rfind("half_height:", 0) == 0) throw;
+        // Block's own message, "block: p must be > 0", under the column's name.
+        bad(!p.empty() ? "p" : !h.empty() ? "height" : "half_height", what.rfind("block: ", 0) == 0 ? what.substr(7) : what);
+    }
+    // fragility's range: beyond it no block is physical and a run's free rocking grows without bound.
+    if (kind == Kind::ida && !(b.p > 0.01 && b.p < 1000))
+        bad(!p.empty() ? "p" : !h.empty() ? "height" : "half_height",
+            "the block's p must be in (0.01, 1000) rad/s for an ida job (got " + g(b.p) + ")");
+    return b;
+}
+
+Scaling scaling_from(const std::string& text) {
+    Scaling s;
+    if (text.empty()) return s;
+    const auto eq = text.find('=');
+    const std::string key = text.substr(0, eq);
+    if (eq == std::string::npos || (key != "q" && key != "pga"))
+        bad("scaling", "'" + text + "' is not q=Q (PGA = Q alpha g) or pga=G (in g), or empty (as recorded)");
+    s.by = key == "q" ? Scaling::By::q : Scaling::By::pga;
+    s.value = number("scaling", text.substr(eq + 1));
+    if (!(s.value > 0)) bad("scaling", key + " must be > 0 (got " + text.substr(eq + 1) + ")");
+    return s;
+}
+
+void model_from(const Columns& c, const std::vector<std::string>& row, Job& job) {
+    const std::string& model = c.cell(row, "model");
+    if (model == "full") job.equation = Equation::full;
+    else if (!model.empty() && model != "linearised") bad("model", "linearised or full (got '" + model + "')");
+    const std::string& solver = c.cell(row, "solver");
+    job.solver.kind = job.equation == Equation::full ? dynamics::SolverKind::dopri5 : dynamics::SolverKind::exact;
+    if (!solver.empty()) {
+        try {
+            job.solver.kind = dynamics::parse_solver(solver);
+        } catch (const std::invalid_argument& e) {
+            bad("solver", e.what());
+        }
+    }
+    if (job.equation == Equation::full && job.solver.kind == dynamics::SolverKind::exact)
+        bad("solver", "the exact solver handles the linearised equation only (model full)");
+    char range[120];
+    std::snprintf(range, sizeof range, "[%.17g, 1)", dynamics::kSmallestTolerance);
+    const std::string& rtol = c.cell(row, "rtol");
+    if (!rtol.empty()) {
+        const double r = number("rtol", rtol);
+        if (!(r >= dynamics::kSmallestTolerance && r < 1)) bad("rtol", "must be in " + std::string(range) + " (got " + rtol + ")");
+        job.solver.rtol = job.solver.atol_alpha = r;
+    }
+    const std::string& atol = c.cell(row, "atol");
+    if (!atol.empty()) {
+        const double in_alpha = number("atol", atol) / job.alpha;
+        if (!(in_alpha >= dynamics::kSmallestTolerance && in_alpha < 1))
+            bad("atol", "in rad, must be in " + std::string(range) + " times alpha (got " + atol + ")");
+        job.solver.atol_alpha = in_alpha;
+    }
+    const std::string& e = c.cell(row, "restitution");
+    // Each kind's command's default: simulate 1, the searches Housner's.
+    job.housner = e.empty() ? job.kind != Kind::simulate : e == "housner";
+    if (!e.empty() && !job.housner) {
+        job.restitution = number("restitution", e);
+        if (!(job.restitution >= 0 && job.restitution <= 1))
+            bad("restitution", "must be in [0, 1] or housner (got " + e + ")");
+    }
+    const std::string& criterion = c.cell(row, "criterion");
+    job.criterion = job.kind == Kind::simulate ? dynamics::Criterion::final_rotation : dynamics::Criterion::overturning;
+    if (!criterion.empty()) {
+        try {
+            job.criterion = dynamics::parse_criterion(criterion);
+        } catch (const std::invalid_argument& e) {
+            bad("criterion", e.what());
+        }
+    }
+}
+
+}  // namespace
+
+Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::string& folder) {
+    if (row.size() != c.size())
+        throw std::invalid_argument(std::to_string(row.size()) + " cells, the header has " + std::to_string(c.size()));
+    Job job;
+    job.kind = kind_from(c.cell(row, "kind"));
+    for (const std::string& name : c.names()) {
+        static const std::set<std::string> common = {"id",  "kind", "record", "unit", "record_dt", "alpha", "model",
+                                                     "solver", "rtol", "atol", "restitution", "criterion"};
+        if (!c.cell(row, name).empty() && !common.count(name) && !own_columns(job.kind).count(name))
+            bad(name, "does not apply to " + std::string(job.kind == Kind::ida ? "an " : "a ") + kind_name(job.kind) + " job (" + why_not(job.kind, name) + ")");
+    }
+    job.record = record_from(c, row, folder);
+    const std::string& alpha = c.cell(row, "alpha");
+    if (alpha.empty()) bad("alpha", "empty: every job needs the block's slenderness");
+    job.alpha = number("alpha", alpha);
+    // simulate: the dynamics' own range; the searches: the commands' (0, 0.7).
+    const double top = job.kind == Kind::simulate ? M_PI / 4 : 0.7;
+    if (!(job.alpha > 0 && job.alpha < top))
+        bad("alpha", std::string("must be in (0, ") + (job.kind == Kind::simulate ? "pi/4" : "0.7") + ") (got " + alpha + ")");
+    if (job.kind == Kind::simulate || job.kind == Kind::ida) job.block = block_from(c, row, job.kind, job.alpha);
+    job.scaling = scaling_from(c.cell(row, "scaling"));
+    model_from(c, row, job);
+    if (job.kind == Kind::ida) {
+        const std::string& q_max = c.cell(row, "q_max");
+        if (!q_max.empty()) job.q_max = number("q_max", q_max);
+        if (!(job.q_max > 1 && job.q_max <= 1e4)) bad("q_max", "must be in (1, 10000] (got " + q_max + ")");
+    }
+    if (job.kind == Kind::ida || job.kind == Kind::spectrum) {
+        const std::string& points = c.cell(row, "points");
+        const int most = job.kind == Kind::ida ? 10000 : 100000;
+        job.points = points.empty() ? (job.kind == Kind::ida ? 100 : 200) : whole("points", points);
+        if (job.points < 2 || job.points > most)
+            bad("points", "must be between 2 and " + std::to_string(most) + " (got " + points + ")");
+    }
+    if (job.kind == Kind::spectrum) {
+        const std::string &lo = c.cell(row, "p_min"), &hi = c.cell(row, "p_max");
+        if (!lo.empty()) job.p_min = number("p_min", lo);
+        if (!hi.empty()) job.p_max = number("p_max", hi);
+        if (!(job.p_min >= 0.01 && job.p_min <= 1000)) bad("p_min", "must be in [0.01, 1000] rad/s (got " + lo + ")");
+        if (!(job.p_max >= 0.01 && job.p_max <= 1000)) bad("p_max", "must be in [0.01, 1000] rad/s (got " + hi + ")");
+        if (!(job.p_max > job.p_min)) bad("p_max", "must be above p_min (" + g(job.p_min) + " rad/s)");
+    }
+    return job;
+}
+
+}  // namespace rocking::jobs

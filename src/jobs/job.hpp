@@ -1,0 +1,74 @@
+// A job of a batch manifest, typed: which study (simulate, collapse, ida,
+// spectrum), on which record, block, scaling, model, solver, restitution and
+// criterion.  parse_job() reads one manifest row into a job, filling what the
+// row leaves empty with the defaults of the command that runs the same study
+// alone (rocking simulate, collapse, fragility, spectrum); the columns, their
+// defaults and which kinds take them: docs/batch.md.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dynamics/model.hpp"
+#include "dynamics/simulate.hpp"
+
+namespace rocking::jobs {
+
+enum class Kind { simulate, collapse, ida, spectrum };
+std::string kind_name(Kind kind);
+
+// Every column a manifest may name, in the order docs/batch.md lists them.
+const std::vector<std::string>& manifest_columns();
+
+// The manifest's header, checked: every column known, `record` and `alpha`
+// present.  Throws std::invalid_argument naming the column.
+class Columns {
+public:
+    explicit Columns(const std::vector<std::string>& header);
+    std::size_t size() const { return names_.size(); }
+    const std::vector<std::string>& names() const { return names_; }
+    // The row's cell under `name`, or "" when the manifest has no such column.
+    const std::string& cell(const std::vector<std::string>& row, const std::string& name) const;
+
+private:
+    std::vector<std::string> names_;
+};
+
+struct RecordSource {
+    std::string cell;  // as the manifest names it
+    std::string path;  // resolved against the manifest's folder
+    std::string unit;  // "" for ESM or PEER by content; g, m/s2 or cm/s2 for plain text
+    double dt = 0;     // a one-column plain-text record's step, s
+};
+
+struct Scaling {
+    enum class By { as_recorded, q, pga } by = By::as_recorded;
+    double value = 0;  // q = PGA/(alpha g), or the PGA in g
+};
+
+struct Job {
+    Kind kind = Kind::simulate;
+    RecordSource record;
+    double alpha = 0;
+    std::optional<dynamics::Block> block;  // simulate and ida: from p, height or half_height
+    Scaling scaling;                       // simulate, collapse and spectrum
+    dynamics::Equation equation = dynamics::Equation::linearised;
+    dynamics::SolverOptions solver;
+    bool housner = false;                  // restitution 1 - 1.5 sin^2 alpha
+    double restitution = 1;                // otherwise
+    dynamics::Criterion criterion = dynamics::Criterion::final_rotation;
+    double q_max = 20;                     // ida
+    int points = 0;                        // ida (q) and spectrum (p): the grid's points
+    double p_min = 0.3, p_max = 30;        // spectrum, rad/s
+
+    double restitution_factor() const;     // the one applied
+    std::string solver_text() const;       // "exact", or "dopri5 rtol 1e-06 atol 1e-06 alpha"
+};
+
+// One row's cells (as many as the header's) into a job.  Throws
+// std::invalid_argument naming the column and the problem.
+Job parse_job(const Columns& columns, const std::vector<std::string>& row, const std::string& folder);
+
+}  // namespace rocking::jobs

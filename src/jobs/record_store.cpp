@@ -1,0 +1,51 @@
+#include "jobs/record_store.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "dynamics/model.hpp"
+#include "records/record.hpp"
+
+namespace rocking::jobs {
+
+RecordStore::RecordStore(std::size_t budget_bytes)
+    : cache_(budget_bytes, [](const dynamics::SampledInput& r) { return r.size() * 8 + r.size() / 4 + r.describe().size(); }) {}
+
+namespace {
+
+std::string canonical(const std::string& path) {
+    std::error_code error;
+    const std::filesystem::path p = std::filesystem::weakly_canonical(path, error);
+    return error ? std::filesystem::absolute(path, error).lexically_normal().string() : p.string();
+}
+
+void replace_all(std::string& text, const std::string& from, const std::string& to) {
+    if (from.empty()) return;
+    for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) text.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+std::shared_ptr<const dynamics::SampledInput> RecordStore::get(const RecordSource& source) {
+    const std::string path = canonical(source.path);
+    char step[40];
+    std::snprintf(step, sizeof step, "%.17g", source.dt);
+    const std::string key = path + "\n" + source.unit + "\n" + step;
+    try {
+        return cache_.get(key, [&] {
+            const records::Record r = source.unit.empty() ? records::read_any(path)
+                                                          : records::read_plain(path, source.unit, source.dt);
+            return dynamics::SampledInput(r.in_g(dynamics::kGravity), r.dt, r.name);
+        });
+    } catch (const std::exception& e) {
+        // The message of the first job's read names the canonical path: each
+        // job's names the file as its own row does, whichever job read it.
+        std::string what = e.what();
+        if (what.find(path) != std::string::npos) replace_all(what, path, source.cell);
+        else what = source.cell + ": " + what;
+        throw std::runtime_error(what);
+    }
+}
+
+}  // namespace rocking::jobs

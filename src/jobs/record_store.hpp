@@ -1,0 +1,34 @@
+// The records of a batch, each read once and shared by every job over it
+// (batch::SharedCache): a record read fails the same way for each of its
+// jobs, and is read by the first of them only.  Records are keyed by their
+// canonical path (with the unit and step of a plain-text one), so that
+// ../r.txt and ./r.txt are one record.  A record in the jobs' unit, g, takes
+// about 8.5 bytes a sample; past the budget (by default 512 MiB, some 6000
+// records of 10^4 samples) the least recently used are dropped and read
+// again when a job needs them.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "batch/cache.hpp"
+#include "dynamics/ground_input.hpp"
+#include "jobs/job.hpp"
+
+namespace rocking::jobs {
+
+class RecordStore {
+public:
+    static constexpr std::size_t kDefaultBudget = std::size_t{512} << 20;
+    explicit RecordStore(std::size_t budget_bytes = kDefaultBudget);
+    // The record, in g.  Throws std::runtime_error with the reader's message,
+    // the file named as the manifest names it.
+    std::shared_ptr<const dynamics::SampledInput> get(const RecordSource& source);
+    std::size_t reads() const { return cache_.loads(); }
+
+private:
+    batch::SharedCache<dynamics::SampledInput> cache_;
+};
+
+}  // namespace rocking::jobs

@@ -1,0 +1,73 @@
+#include "jobs/result_row.hpp"
+
+#include "batch/manifest.hpp"
+#include "harness/table.hpp"
+
+namespace rocking::jobs {
+
+const std::vector<std::string>& result_columns() {
+    static const std::vector<std::string> names = {
+        "status",   "model_used", "solver_used", "restitution_used", "criterion_used", "p_used",
+        "collapse", "max_theta",  "theta_tfin",  "t_overturn",       "impacts",        "p_collapse",
+        "p_safe",   "q_collapse", "q_safe",      "intervals",        "simulations",    "error"};
+    return names;
+}
+
+std::string results_header(const std::string& manifest_path, std::size_t jobs,
+                           const std::vector<std::string>& manifest_header) {
+    std::string text = "# rocking batch: the results of " + manifest_path + ", one row per job (" + std::to_string(jobs) +
+                       ") in the manifest's order\n";
+    text += "# columns: line (the manifest's), the manifest's columns as written, then status (ok or error); model_used, "
+            "solver_used, restitution_used, criterion_used and p_used (rad/s): what the job ran with, defaults filled in; "
+            "collapse (yes/no; simulate: under its criterion, collapse: a p found, ida: below q_max, spectrum: an "
+            "overturning interval); simulate: max_theta (max |theta|/alpha during the input), theta_tfin "
+            "(theta(t_fin)/alpha, empty when it fell during the input), t_overturn (s, empty when it does not overturn "
+            "or is taken to by its energy), impacts; collapse: p_collapse and p_safe (Table 1's bracket, rad/s); "
+            "spectrum: p_collapse and p_safe (the lowest overturning interval's start and its safe end); ida: "
+            "q_collapse and q_safe (the first collapse q = PGA/(alpha g) and its safe end), intervals, simulations; "
+            "error (the manifest's line and the problem). See docs/batch.md\n";
+    std::string line = "line";
+    for (const std::string& c : manifest_header) line += "," + batch::csv_cell(c);
+    for (const std::string& c : result_columns()) line += "," + c;
+    return text + line + "\n";
+}
+
+namespace {
+
+std::string number(const std::optional<double>& v) { return v ? harness::format_number(*v) : ""; }
+std::string count(const std::optional<long>& v) { return v ? std::to_string(*v) : ""; }
+
+}  // namespace
+
+std::string result_row(int line, const std::vector<std::string>& echo, const Job* job, const Figures* f,
+                       const std::string& error) {
+    std::string row = std::to_string(line);
+    for (const std::string& cell : echo) row += "," + batch::csv_cell(cell);
+    std::vector<std::string> cells;
+    cells.push_back(error.empty() ? "ok" : "error");
+    if (job) {
+        cells.push_back(job->equation == dynamics::Equation::linearised ? "linearised" : "full");
+        cells.push_back(job->solver_text());
+        cells.push_back(harness::format_number(job->restitution_factor()));
+        cells.push_back(dynamics::criterion_name(job->criterion));
+        cells.push_back(job->block ? harness::format_number(job->block->p) : "");
+    } else
+        cells.insert(cells.end(), 5, "");
+    if (f) {
+        cells.push_back(f->collapse ? "yes" : "no");
+        for (const auto* v : {&f->max_theta, &f->theta_tfin, &f->t_overturn}) cells.push_back(number(*v));
+        cells.push_back(count(f->impacts));
+        for (const auto* v : {&f->p_collapse, &f->p_safe, &f->q_collapse, &f->q_safe}) cells.push_back(number(*v));
+        cells.push_back(count(f->intervals));
+        cells.push_back(count(f->simulations));
+    } else
+        cells.insert(cells.end(), 11, "");
+    std::string one_line = error;  // a row is one line
+    for (char& c : one_line)
+        if (c == '\n' || c == '\r') c = ' ';
+    cells.push_back(one_line);
+    for (const std::string& c : cells) row += "," + batch::csv_cell(c);
+    return row;
+}
+
+}  // namespace rocking::jobs

@@ -1,0 +1,119 @@
+#include "jobs/run_job.hpp"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "records/collapse.hpp"
+#include "studies/ida.hpp"
+#include "studies/spectrum.hpp"
+
+namespace rocking::jobs {
+
+namespace {
+
+using dynamics::SampledInput;
+
+// The record as recorded, or scaled as rocking simulate --pga/--q scales it
+// (the samples times PGA / peak: SampledInput::scaled_by is that, bit for bit).
+std::shared_ptr<const SampledInput> input_of(const Job& job, RecordStore& records) {
+    std::shared_ptr<const SampledInput> record = records.get(job.record);
+    if (job.scaling.by == Scaling::By::as_recorded) return record;
+    if (!(record->peak() > 0)) throw std::runtime_error(job.record.cell + ": the record is zero throughout and cannot be scaled");
+    const double pga = job.scaling.by == Scaling::By::q ? job.scaling.value * job.alpha : job.scaling.value;
+    return std::make_shared<const SampledInput>(record->scaled_by(pga / record->peak(), record->describe()));
+}
+
+records::CollapseOptions search_model(const Job& job) {
+    records::CollapseOptions o;
+    o.equation = job.equation;
+    o.solver = job.solver;
+    o.housner_restitution = job.housner;
+    o.restitution = job.restitution;
+    o.criterion = job.criterion;
+    return o;
+}
+
+Figures simulate(const Job& job, const SampledInput& input) {
+    dynamics::Model model;
+    model.equation = job.equation;
+    model.block = *job.block;
+    model.restitution = job.restitution_factor();
+    dynamics::SimulationOptions options;
+    options.solver = job.solver;
+    const dynamics::SimulationResult r = dynamics::simulate(model, input, options);
+    Figures f;
+    f.collapse = r.collapse(job.criterion, job.alpha);
+    f.max_theta = r.max_abs_theta_input / job.alpha;
+    if (!r.overturned_during_input) f.theta_tfin = r.theta_at_tfin / job.alpha;
+    // As rocking simulate refuses them: a rotation beyond a double in units of alpha.
+    if (!std::isfinite(*f.max_theta) || (f.theta_tfin && !std::isfinite(*f.theta_tfin)))
+        throw std::runtime_error("the rotation in units of alpha overflows a double");
+    if (!std::isnan(r.t_overturn)) f.t_overturn = r.t_overturn;
+    f.impacts = r.impacts;
+    return f;
+}
+
+Figures collapse(const Job& job, const SampledInput& input) {
+    const records::CollapseResult c = records::smallest_collapse_p(input, job.alpha, search_model(job));
+    Figures f;
+    f.collapse = c.found;
+    if (c.found) f.p_collapse = c.p;
+    if (c.found && !c.below_range()) f.p_safe = c.p_safe;
+    f.simulations = c.simulations;
+    return f;
+}
+
+Figures ida(const Job& job, const SampledInput& input) {
+    studies::IdaOptions o;
+    o.model = search_model(job);
+    o.q_max = job.q_max;
+    o.points = job.points;
+    const studies::Ida r = studies::incremental_dynamic_analysis(input, job.alpha, job.block->p, o);
+    Figures f;
+    f.collapse = r.point.collapsed;
+    if (r.point.collapsed) {
+        f.q_collapse = r.point.q;
+        if (r.intervals.front().has_lower) f.q_safe = r.intervals.front().lower.safe;
+    }
+    f.intervals = static_cast<long>(r.intervals.size());
+    f.simulations = r.simulations;
+    return f;
+}
+
+Figures spectrum(const Job& job, const SampledInput& input) {
+    studies::SpectrumOptions o;
+    o.model = search_model(job);
+    o.p_min = job.p_min;
+    o.p_max = job.p_max;
+    o.points = job.points;
+    // Table 1's bracket joins the grid, as in rocking spectrum (docs/spectrum.md).
+    const records::CollapseResult table1 = records::smallest_collapse_p(input, job.alpha, o.model);
+    if (table1.found) o.extra_points = {table1.p};
+    if (table1.found && !table1.below_range()) o.extra_points.push_back(table1.p_safe);
+    const studies::Spectrum s = studies::rocking_spectrum(input, job.alpha, o);
+    Figures f;
+    f.collapse = !s.intervals.empty();
+    if (f.collapse) {
+        f.p_collapse = s.intervals.front().from;
+        if (s.intervals.front().has_lower) f.p_safe = s.intervals.front().lower.p_safe;
+    }
+    f.intervals = static_cast<long>(s.intervals.size());
+    f.simulations = s.simulations;
+    return f;
+}
+
+}  // namespace
+
+Figures run_job(const Job& job, RecordStore& records) {
+    const std::shared_ptr<const SampledInput> input = input_of(job, records);
+    switch (job.kind) {
+        case Kind::simulate: return simulate(job, *input);
+        case Kind::collapse: return collapse(job, *input);
+        case Kind::ida: return ida(job, *input);
+        case Kind::spectrum: return spectrum(job, *input);
+    }
+    throw std::logic_error("run_job: unknown kind");
+}
+
+}  // namespace rocking::jobs
