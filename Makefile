@@ -2,8 +2,9 @@
 BUILD   ?= build
 OUT     ?= out
 JOBS    ?= 2
-# Debian packages the project needs (header-only Boost: Odeint, Math, Multiprecision).
-PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath
+# Debian packages the project needs (header-only Boost: Odeint, Math, Multiprecision;
+# OpenMPI for rocking batch under mpirun: the build works without it, on threads only).
+PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath libopenmpi-dev openmpi-bin
 
 .PHONY: all deps build reproduce test bless bench bench-records bench-spectrum bench-fragility report clean
 

@@ -21,8 +21,7 @@
 namespace rocking::batch {
 
 bool built_with_mpi();
-// MPI_Init (only the calling thread talks to MPI), after blocking SIGINT and
-// SIGTERM so that MPI's own threads never take them; MPI_Finalize when the
+// MPI_Init (only the calling thread talks to MPI); MPI_Finalize when the
 // object goes.  Throws std::runtime_error when built without MPI.
 std::unique_ptr<Ranks> join_cluster();
 

@@ -2,10 +2,14 @@
 
 #include <signal.h>
 #include <string.h>
+#include <time.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <algorithm>
 #include <memory>
+#include <vector>
 
 #include "batch/interrupt.hpp"
 #include "batch/pool.hpp"
@@ -22,6 +26,31 @@ void say_interrupted(int sig, const ResultsFile& file, const std::string& output
                  sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : strsignal(sig),
                  file.done(), jobs, output.empty() ? "" : " to ", output.empty() ? "" : file.partial_path().c_str(),
                  output.empty() ? "" : "; the same command with --resume completes them");
+}
+
+// The threads take the jobs in chunks of consecutive ones, so that a job of a
+// few microseconds does not cost a hand-over between threads each (with one
+// job a hand-over, 2 threads ran 50000 idle jobs at half one thread's speed:
+// 40000 context switches).  Guided: a share of what is left, at most
+// kMaxChunk, so that the chunks shrink to single jobs at the end and no
+// thread is left with a long tail.  The sizes are fixed before the run: the
+// rows do not depend on them anyway.
+constexpr std::size_t kMaxChunk = 32;
+
+std::vector<std::size_t> chunk_starts(std::size_t first, std::size_t n, std::size_t threads) {
+    std::vector<std::size_t> starts;
+    for (std::size_t at = first; at < n;) {
+        starts.push_back(at);
+        at += std::min(kMaxChunk, std::max<std::size_t>(1, (n - at) / (4 * threads)));
+    }
+    starts.push_back(n);
+    return starts;
+}
+
+double thread_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
 }  // namespace
@@ -42,19 +71,30 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
         // Every rank must run the same jobs: the manifest each read is rank 0's.
         const bool same = ranks->broadcast(plan.digest) == plan.digest;
         const int status = ranks->agree(failure || !same ? 1 : 0);
-        if (!same)
-            throw ResultsError("rank " + std::to_string(ranks->rank()) + " read a manifest other than rank 0's (sha256 " +
-                               plan.digest + "): every rank must read the same file");
-        if (failure) std::rethrow_exception(failure);
-        if (status != 0) throw OtherRankFailed(status);
+        if (status != 0) {
+            std::string message;
+            if (failure) {
+                try {
+                    std::rethrow_exception(failure);
+                } catch (const std::exception& e) {
+                    message = e.what();
+                }
+            } else if (!same)
+                message = "rank " + std::to_string(ranks->rank()) + " read a manifest other than rank 0's (its sha256 is " +
+                          plan.digest + "): every rank must read the same file";
+            if (!message.empty()) std::fprintf(stderr, "rocking batch: %s\n", message.c_str());
+            // Said before any rank ends: mpirun stops the job at the first rank that ends with a
+            // non-zero status, and a message not yet written would go with it.
+            ranks->agree(0);
+            throw OtherRankFailed(status);
+        }
     } else if (failure)
         std::rethrow_exception(failure);
 
     const std::size_t threads = options.threads < 1 ? 1 : static_cast<std::size_t>(options.threads);
     const std::size_t first = lead ? file->done() : 0;
     Progress progress(plan.jobs, first, lead && !options.quiet && stderr_is_terminal());
-    // On every rank: a rank that kept the signals blocked without watching
-    // them would outlive mpirun's SIGTERM.
+    // On every rank: the others end by the signal too (on_signal does nothing there).
     const InterruptWatch watch([&](int sig) {
         if (!file) return;
         file->flush();
@@ -72,6 +112,10 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
         file->finish();
         return {file->done(), file->failed(), 0, file->complete()};
     }
+    // ROCKING_BATCH_STATS: the writing thread's CPU a row (bench/batch.sh): with
+    // the jobs on other threads or ranks, what one row costs the one thread
+    // every row passes through, the bound on how many rows a second a batch takes.
+    const double cpu_before = thread_cpu_seconds();
     const DeliverRow deliver = [&](std::size_t, JobRow& row) {
         file->append(row.text, row.failed);
         progress.update(file->done(), file->failed());
@@ -81,12 +125,26 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
             options.window ? options.window : 64 * (threads + static_cast<std::size_t>(ranks->size()));
         ranks->run(first, plan.jobs, static_cast<int>(threads), window, plan.run, deliver);
     } else {
-        run_ordered<JobRow>(
-            plan.jobs - first, PoolOptions{static_cast<int>(threads), options.window},
-            [&](std::size_t i) { return plan.run(first + i); }, [&](std::size_t i, JobRow& row) { deliver(first + i, row); });
+        const std::vector<std::size_t> starts = chunk_starts(first, plan.jobs, threads);
+        // The window in chunks: at most `window` rows held, or the pool's 64 chunks a thread.
+        const std::size_t window = options.window ? std::max<std::size_t>(1, options.window / kMaxChunk) : 0;
+        run_ordered<std::vector<JobRow>>(
+            starts.size() - 1, PoolOptions{static_cast<int>(threads), window},
+            [&](std::size_t c) {
+                std::vector<JobRow> rows;
+                rows.reserve(starts[c + 1] - starts[c]);
+                for (std::size_t i = starts[c]; i < starts[c + 1]; ++i) rows.push_back(plan.run(i));
+                return rows;
+            },
+            [&](std::size_t c, std::vector<JobRow>& rows) {
+                for (std::size_t k = 0; k < rows.size(); ++k) deliver(starts[c] + k, rows[k]);
+            });
     }
     file->finish();
     progress.finish(file->done(), file->failed());
+    if (std::getenv("ROCKING_BATCH_STATS"))
+        std::fprintf(stderr, "rocking batch: the writing thread: %.6f s of CPU for %zu rows\n",
+                     thread_cpu_seconds() - cpu_before, plan.jobs - first);
     return {file->done(), file->failed(), plan.jobs - first, false};
 }
 

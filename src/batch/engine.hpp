@@ -5,10 +5,10 @@
 // computes and what its row says is the plan's (src/jobs/batch_plan.hpp).
 //
 // Memory is bounded whatever the number of jobs: at most `window` rows wait
-// for their turn (by default 64 per thread, or per rank and thread under
-// MPI), and the rows not yet flushed to the file are at most 4 MiB; the plan
-// holds what it needs for its jobs (the manifest's text, and the records'
-// cache with its own budget).
+// for their turn (by default 64 chunks of at most 32 jobs a thread, or 64 rows
+// per rank and thread under MPI), and the rows not yet flushed to the file
+// are at most 4 MiB; the plan holds what it needs for its jobs (the
+// manifest's text, and the records' cache with its own budget).
 #pragma once
 
 #include <cstddef>
@@ -31,7 +31,7 @@ struct EngineOptions {
     bool resume = false;
     bool quiet = false;     // no progress line even on a terminal
     int threads = 1;        // per process
-    std::size_t window = 0; // rows held at most; 0 for the default
+    std::size_t window = 0; // rows held at most (threads: rounded down to chunks of 32, at least one); 0 for the default
     double flush_seconds = 1.0;
 };
 
@@ -42,10 +42,12 @@ struct BatchOutcome {
     bool already_complete = false;  // --resume found the results finished
 };
 
-// `ranks` null: threads in this process.  Otherwise this process's part of
-// an MPI run: rank 0 writes and returns the outcome; the other ranks return
-// an empty one.  Throws ResultsError (and, on the ranks that did not fail
-// themselves, OtherRankFailed) when the results cannot be written or resumed.
+// `ranks` null: threads in this process; throws ResultsError when the results
+// cannot be written or resumed.  Otherwise this process's part of an MPI run:
+// rank 0 writes and returns the outcome, the other ranks an empty one; when
+// the results cannot be written or resumed, or a rank read another manifest,
+// the rank that knows why says so on stderr and every rank throws
+// OtherRankFailed once it is said.
 // SIGINT and SIGTERM flush the rows delivered so far and end the process by
 // the signal, after a line on stderr saying how to resume.
 BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Ranks* ranks);

@@ -2,12 +2,13 @@
 // are made durable and the process then ends by the signal, as it would
 // have, so that --resume can complete them.
 //
-// block_interrupts() blocks both signals in the calling thread before any
-// other is started (threads inherit the mask: the pool's, MPI's), so that
-// none of them is stopped in the middle of a write; an InterruptWatch then
-// waits for them in a thread of its own and runs its handler there, in
-// ordinary code (it may lock and write, as a signal handler may not).  A
-// signal that came before the watch started is waiting for it.
+// The signals are caught by a handler that only records them (what a
+// handler may do), whichever thread takes them: MPI starts threads of its
+// own with every signal unblocked, so blocking them in ours would not keep
+// a signal from ending the process there, unflushed.  A thread of the
+// watch's own then runs the batch's response in ordinary code (it may lock
+// and write), and ends the process by the signal.  A signal ignored when
+// the watch starts (a script's background job ignores SIGINT) stays ignored.
 #pragma once
 
 #include <atomic>
@@ -16,20 +17,19 @@
 
 namespace rocking::batch {
 
-void block_interrupts();
-
 class InterruptWatch {
 public:
     // on_signal(sig) runs once, in the watch's thread; then the process ends
-    // by sig (its default action).  A second signal during on_signal waits.
+    // by sig (its default action).
     explicit InterruptWatch(std::function<void(int)> on_signal);
-    ~InterruptWatch();  // stops watching (a signal after it stays blocked, pending)
+    ~InterruptWatch();  // stops watching: the signals' former actions are back
     InterruptWatch(const InterruptWatch&) = delete;
     InterruptWatch& operator=(const InterruptWatch&) = delete;
 
 private:
     std::atomic<bool> stop_{false};
     std::thread thread_;
+    bool watched_[2] = {false, false};
 };
 
 }  // namespace rocking::batch

@@ -20,7 +20,7 @@ inline bool launched_by_mpirun() {
     return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
 }
 
-// Another rank failed and said why; this one ends with `status`, silently.
+// A rank failed and said why on stderr; this one ends with `status`, silently.
 struct OtherRankFailed : std::runtime_error {
     int status;
     explicit OtherRankFailed(int s) : std::runtime_error("another rank failed"), status(s) {}

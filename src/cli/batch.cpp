@@ -102,13 +102,17 @@ int cmd_batch(int argc, char** argv) {
         const bool first_failed = ranks->broadcast(std::to_string(status)) != "0";
         const int all = ranks->agree(status);
         if (all != 0) {
+            // One says why (rank 0, or a rank that failed where rank 0 did not), before any rank
+            // ends: mpirun stops the job at the first non-zero exit, and the message with it.
             if (failure && (ranks->rank() == 0 || !first_failed)) {
                 try {
                     std::rethrow_exception(failure);
                 } catch (const std::exception& e) {
-                    throw std::runtime_error("rank " + std::to_string(ranks->rank()) + ": " + e.what());
+                    std::fprintf(stderr, "rocking batch: %s%s\n",
+                                 ranks->rank() == 0 ? "" : ("rank " + std::to_string(ranks->rank()) + ": ").c_str(), e.what());
                 }
             }
+            ranks->agree(0);
             return all;
         }
     } else if (failure)

@@ -14,18 +14,27 @@ RecordStore::RecordStore(std::size_t budget_bytes)
 
 namespace {
 
-std::string canonical(const std::string& path) {
-    std::error_code error;
-    const std::filesystem::path p = std::filesystem::weakly_canonical(path, error);
-    return error ? std::filesystem::absolute(path, error).lexically_normal().string() : p.string();
-}
-
 void replace_all(std::string& text, const std::string& from, const std::string& to) {
     if (from.empty()) return;
     for (std::size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size()) text.replace(at, from.size(), to);
 }
 
 }  // namespace
+
+std::string RecordStore::canonical(const std::string& path) {
+    {
+        std::lock_guard<std::mutex> lock(canonical_mutex_);
+        const auto it = canonical_.find(path);
+        if (it != canonical_.end()) return it->second;
+    }
+    std::error_code error;
+    const std::filesystem::path p = std::filesystem::weakly_canonical(path, error);
+    const std::string found = error ? std::filesystem::absolute(path, error).lexically_normal().string() : p.string();
+    std::lock_guard<std::mutex> lock(canonical_mutex_);
+    if (canonical_.size() >= 100000) canonical_.clear();  // bounded: a batch over as many files reads each rarely
+    canonical_.emplace(path, found);
+    return found;
+}
 
 std::shared_ptr<const dynamics::SampledInput> RecordStore::get(const RecordSource& source) {
     const std::string path = canonical(source.path);
