@@ -82,5 +82,6 @@ void init_qfactor(py::module_& m);
 void init_records(py::module_& m);
 void init_dynamics(py::module_& m);
 void init_studies(py::module_& m);
+void init_batch(py::module_& m);
 
 }  // namespace rocking::python

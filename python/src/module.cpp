@@ -9,7 +9,8 @@ PYBIND11_MODULE(rocking_q, m) {
 The command line's subcommands as functions, with its option names (--half-height as half_height)
 and units, returning its --json fields as a Result (a dict readable by attribute) with NumPy arrays:
 q, q_info, response, q1..q5, q_case, q2_n6, q4_n6; simulate, block; Record, read_record,
-record_info, half_periods, peak_motion, record_synth; collapse, assess; spectrum, fragility, eq27.
+record_info, half_periods, peak_motion, record_synth; collapse, assess; spectrum, fragility, eq27;
+batch (a manifest of jobs to a results file).
 Errors raise ValueError (RecordError for a malformed file, naming file and line), TypeError, or
 RuntimeError, with the library's message.  Long calls release the GIL.  docs/python.md)";
     define_result(m);
@@ -17,4 +18,5 @@ RuntimeError, with the library's message.  Long calls release the GIL.  docs/pyt
     init_records(m);
     init_dynamics(m);
     init_studies(m);
+    init_batch(m);
 }
