@@ -29,16 +29,9 @@ const char* kUsage =
     "usage: rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q] "
     "[--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]";
 
-const char* kWilsonNote =
-    "the Wilson interval takes every (record, block) case as independent; the cases of one record are "
-    "correlated, so it misstates the uncertainty (as a rule too narrow): quote the bootstrap over records";
-
-const char* kNoBootstrap = "bootstrap over records not run (--bootstrap K --seed S)";
-
-const char* kVerdict =
-    "non-conservative: the record overturns the block at a q below eq. 27's at x = p to_k "
-    "(collapse q < q2_n6(p to_k)); a record that never overturns the block up to q_max is censored "
-    "and counted as conservative";
+using studies::kEq27NoBootstrap;
+using studies::kEq27Verdict;
+using studies::kEq27WilsonNote;
 
 std::string g4(double v) {
     char text[40];
@@ -157,10 +150,10 @@ std::string censored_text(const Eq27Study& s, double q_max) {
 void print_text(const std::vector<std::string>& files, const studies::Eq27Options& o, const Eq27Study& s) {
     std::printf("eq. 27 at scale: %zu record(s) x %zu block(s)\n  blocks: %s\n  model: %s\n  IDA: %s\n  %s\n  %s\n",
                 files.size(), s.blocks.size(), o.grid.describe().c_str(), o.ida.describe_model().c_str(),
-                o.ida.describe_grid().c_str(), kVerdict, censored_text(s, o.ida.q_max).c_str());
+                o.ida.describe_grid().c_str(), kEq27Verdict, censored_text(s, o.ida.q_max).c_str());
     if (bootstrapped(s)) std::printf("  interval: %s\n", bootstrap_label(s).c_str());
-    else std::printf("  %s\n", kNoBootstrap);
-    std::printf("  Wilson: %s\n", kWilsonNote);
+    else std::printf("  %s\n", kEq27NoBootstrap);
+    std::printf("  Wilson: %s\n", kEq27WilsonNote);
     std::printf("  to_k   non-conservative = share   %s%g %% Wilson (independent cases)   records with any   blocks "
                 "with any\n", bootstrapped(s) ? (g7(100 * s.bootstrap.level) + " % bootstrap   ").c_str() : "",
                 100 * s.level);
@@ -184,13 +177,13 @@ void print_json(const std::vector<std::string>& files, const studies::Eq27Option
     std::ostringstream js;
     js << "{\"model\": " << json_string(o.ida.describe_model()) << ", \"ida\": " << json_string(o.ida.describe_grid())
        << ", \"q_max\": " << json_number(o.ida.q_max) << ", \"blocks\": " << json_string(o.grid.describe())
-       << ", \"verdict\": " << json_string(kVerdict) << ", \"wilson\": {\"level\": " << json_number(s.level)
-       << ", \"note\": " << json_string(kWilsonNote) << "}, \"bootstrap_run\": " << (bootstrapped(s) ? "true" : "false")
+       << ", \"verdict\": " << json_string(kEq27Verdict) << ", \"wilson\": {\"level\": " << json_number(s.level)
+       << ", \"note\": " << json_string(kEq27WilsonNote) << "}, \"bootstrap_run\": " << (bootstrapped(s) ? "true" : "false")
        << ", \"bootstrap\": ";
     if (bootstrapped(s))
         js << "{\"over\": \"records\", \"resamples\": " << s.bootstrap.resamples << ", \"seed\": " << s.bootstrap.seed
            << ", \"level\": " << json_number(s.bootstrap.level) << "}";
-    else js << "null, \"bootstrap_note\": " << json_string(kNoBootstrap);
+    else js << "null, \"bootstrap_note\": " << json_string(kEq27NoBootstrap);
     js << ", \"records\": " << s.records << ", \"files\": [";
     for (std::size_t i = 0; i < files.size(); ++i) js << (i ? ", " : "") << json_string(files[i]);
     js << "], \"cases\": " << s.cases.size() << ", \"censored\": " << s.censored << ", \"shares\": [";
@@ -236,9 +229,9 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
     t.note("inputs", inputs);
     t.note("grid", o.grid.describe());
     t.note("ida", o.ida.describe_grid());
-    t.note("verdict", kVerdict);
+    t.note("verdict", kEq27Verdict);
     t.note("censored", censored_text(s, o.ida.q_max));
-    t.note("intervals", (bootstrapped(s) ? bootstrap_label(s) : std::string(kNoBootstrap)) + "; " + kWilsonNote);
+    t.note("intervals", (bootstrapped(s) ? bootstrap_label(s) : std::string(kEq27NoBootstrap)) + "; " + kEq27WilsonNote);
     for (int k = 0; k < kHalfPeriods; ++k) t.note("share to_" + std::to_string(k + 1), share_text(s, k));
     t.note("columns", "per block (alpha, p rad/s): records, those censored, and nc_toK the records non-conservative "
                       "for to_K");

@@ -17,20 +17,6 @@ namespace rocking::cli {
 
 namespace {
 
-// Rotations are printed in units of alpha: at alpha = 1e-300 under 1e300 g
-// max |theta|/alpha overflowed and printed inf.  The run is refused, naming
-// the value, rather than printed with a hole in it.
-void refuse_overflow(const dynamics::SimulationResult& r, double alpha) {
-    auto check = [&](const char* what, double value, double in_rad) {
-        if (std::isfinite(value)) return;
-        char text[240];
-        std::snprintf(text, sizeof text, "%s overflows a double (%.6g rad at alpha = %g): the rotation is beyond "
-                      "what this output can express", what, in_rad, alpha);
-        throw std::runtime_error(text);
-    };
-    check("max |theta|/alpha during the input", r.max_abs_theta_input / alpha, r.max_abs_theta_input);
-    if (!r.overturned_during_input) check("theta(t_fin)/alpha", r.theta_at_tfin / alpha, r.theta_at_tfin);
-}
 
 // --output holds its rows in memory before writing them (about 270 bytes a row,
 // 55 bytes a row on disk): --dt 1e-7 had grown to 4.9 GB in 8 s.
@@ -173,7 +159,7 @@ int cmd_simulate(int argc, char** argv) {
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
     if (has("--output")) check_output_rows(model, *input, options);
     const SimulationResult r = simulate(model, *input, options);
-    refuse_overflow(r, alpha);
+    dynamics::refuse_overflow_in_alpha(r, alpha);
     char atol_rad[48];
     std::snprintf(atol_rad, sizeof atol_rad, " = %g rad", options.solver.atol_alpha * alpha);
     const std::string tolerance = options.solver.kind == SolverKind::exact

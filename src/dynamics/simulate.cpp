@@ -453,4 +453,16 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     return Driver(model, input, options).run();
 }
 
+void refuse_overflow_in_alpha(const SimulationResult& r, double alpha) {
+    auto check = [&](const char* what, double value, double in_rad) {
+        if (std::isfinite(value)) return;
+        char text[240];
+        std::snprintf(text, sizeof text, "%s overflows a double (%.6g rad at alpha = %g): the rotation is beyond "
+                      "what this output can express", what, in_rad, alpha);
+        throw std::runtime_error(text);
+    };
+    check("max |theta|/alpha during the input", r.max_abs_theta_input / alpha, r.max_abs_theta_input);
+    if (!r.overturned_during_input) check("theta(t_fin)/alpha", r.theta_at_tfin / alpha, r.theta_at_tfin);
+}
+
 }  // namespace rocking::dynamics

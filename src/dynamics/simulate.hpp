@@ -87,4 +87,11 @@ struct SimulationResult {
 // std::runtime_error when a solver fails or impacts do not end.
 SimulationResult simulate(const Model& model, const GroundInput& input, const SimulationOptions& options);
 
+// The front ends give rotations in units of alpha: at alpha = 1e-300 under
+// 1e300 g, max |theta|/alpha overflowed and was printed as inf.  Throws
+// std::runtime_error naming the value when max |theta|/alpha or (if the
+// block stood to t_fin) theta(t_fin)/alpha is not finite, rather than give
+// an output with a hole in it.
+void refuse_overflow_in_alpha(const SimulationResult& r, double alpha);
+
 }  // namespace rocking::dynamics

@@ -12,6 +12,15 @@
 
 namespace rocking::studies {
 
+const char* const kEq27Verdict =
+    "non-conservative: the record overturns the block at a q below eq. 27's at x = p to_k "
+    "(collapse q < q2_n6(p to_k)); a record that never overturns the block up to q_max is censored "
+    "and counted as conservative";
+const char* const kEq27WilsonNote =
+    "the Wilson interval takes every (record, block) case as independent; the cases of one record are "
+    "correlated, so it misstates the uncertainty (as a rule too narrow): quote the bootstrap over records";
+const char* const kEq27NoBootstrap = "bootstrap over records not run (--bootstrap K --seed S)";
+
 WilsonInterval wilson_interval(int successes, int trials, double level) {
     if (trials < 1) throw std::invalid_argument("wilson_interval: trials must be at least 1");
     if (successes < 0 || successes > trials) throw std::invalid_argument("wilson_interval: successes must be in [0, trials]");

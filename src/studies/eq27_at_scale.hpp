@@ -103,6 +103,12 @@ struct Eq27Cell {
     std::array<int, kHalfPeriods> non_conservative{};
 };
 
+// What a front end states beside the study's shares (the command line and
+// the Python module say the same words).
+extern const char* const kEq27Verdict;        // the verdict's rule, censoring included
+extern const char* const kEq27WilsonNote;     // why the Wilson interval is not the one to quote
+extern const char* const kEq27NoBootstrap;    // the bootstrap was not asked for
+
 struct Eq27Study {
     std::vector<BlockShape> blocks;
     std::vector<Eq27Case> cases;  // record-major: cases[r * blocks + b]
