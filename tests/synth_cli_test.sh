@@ -62,6 +62,10 @@ check  "seed 0 is named"           "--stochastic: the seed must be a whole numbe
 status "seed 0 exits 2"            2 "$rocking" record synth --stochastic 0 --dt 0.01 --duration 5
 check  "a step above Nyquist is named" "--dt: the filter's frequency reaches" \
     "$rocking" record synth --stochastic 1 --dt 0.1 --duration 30
+# An alpha2 whose gamma inverse GSL cannot find aborted the process (GSL's default handler).
+check  "a huge alpha2 is named"    "--params: alpha2 must be in (1, 100000] (got 1e+300)" \
+    "$rocking" record synth --stochastic 1 --dt 0.01 --duration 20 --params alpha1=1,alpha2=1e300,alpha3=1
+status "a huge alpha2 exits 2"     2 "$rocking" record synth --stochastic 1 --dt 0.01 --duration 20 --params alpha1=1,alpha2=1e300,alpha3=1
 check  "an unknown key is named"   "--params: unknown key 'foo'" \
     "$rocking" record synth --stochastic 1 --dt 0.01 --duration 10 --params foo=1
 status "an unknown key exits 2"    2 "$rocking" record synth --stochastic 1 --dt 0.01 --duration 10 --params foo=1

@@ -21,6 +21,8 @@ namespace rocking::records {
 namespace {
 
 constexpr double kGravity = 9.81;  // m/s^2, as Record::in_g
+// The largest alpha2 taken (check_modulation): 1e5, shape 2 alpha2 - 1 = 199,999.
+constexpr double kMaxAlpha2 = 1e5;
 // Above this many samples the stochastic sum (quadratic in the samples within
 // the filter's memory) and the files get out of hand; real records sit far below.
 constexpr std::size_t kMaxSamples = 10'000'000;
@@ -141,7 +143,10 @@ namespace {
 void check_modulation(const StochasticParameters& p) {
     if (!(p.alpha1 > 0) || !std::isfinite(p.alpha1)) refuse("alpha1", "> 0 and finite", p.alpha1);
     // alpha2 > 1 makes q(0) = 0: the record starts at rest, as the sum's nu(0) = 0 assumes.
-    if (!(p.alpha2 > 1) || !std::isfinite(p.alpha2)) refuse("alpha2", "> 1 and finite", p.alpha2);
+    // GSL's gamma inverse (arias_time) fails to converge from the shape 2 alpha2 - 1 = 998,373
+    // on at P = 0.95, and its default handler aborts the process: alpha2 up to kMaxAlpha2 keeps
+    // the shape 5 times below that, and above the 1e5 with_arias_modulation can give.
+    if (!(p.alpha2 > 1 && p.alpha2 <= kMaxAlpha2)) refuse("alpha2", "in (1, 100000]", p.alpha2);
     if (!(p.alpha3 > 0) || !std::isfinite(p.alpha3)) refuse("alpha3", "> 0 and finite", p.alpha3);
 }
 

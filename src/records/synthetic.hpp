@@ -54,7 +54,7 @@ Record pulse_record(const PulseParameters& p, double dt, double duration);
 struct StochasticParameters {
     // The gamma modulating function q(t) = alpha1 t^(alpha2 - 1) exp(-alpha3 t), m/s^2.
     double alpha1 = 0;  // m/s^2 per s^(alpha2 - 1)
-    double alpha2 = 0;  // > 1
+    double alpha2 = 0;  // in (1, 1e5]: beyond, GSL's gamma inverse fails (check_modulation)
     double alpha3 = 0;  // 1/s
     // The filter: omega_f(tau) = omega_mid + omega_prime (tau - t_mid), damping zeta_f;
     // t_mid is q's 45 % Arias time (arias_time).
