@@ -3,9 +3,14 @@
 
 #include <pybind11/eval.h>
 
+#include <gsl/gsl_errno.h>
+
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <mutex>
 
 #include "batch/pool.hpp"
 
@@ -228,6 +233,48 @@ int jobs_argument(const std::optional<int>& jobs) {
     if (!jobs) return batch::default_threads();
     if (*jobs < 1 || *jobs > 4096) refuse("jobs: must be between 1 and 4096 (got " + std::to_string(*jobs) + ")");
     return *jobs;
+}
+
+namespace {
+std::mutex gsl_mutex;
+std::vector<GslWatch*> gsl_calls;  // the module's calls running now, under gsl_mutex
+gsl_error_handler_t* gsl_previous = nullptr;
+}  // namespace
+
+void on_gsl_error(const char* reason, const char* file, int line, int code) {
+    {
+        char where[64];
+        std::snprintf(where, sizeof where, ":%d", line);
+        const std::string message = std::string("GSL error: ") + reason + " (" + file + where + ", " + gsl_strerror(code) + ")";
+        std::lock_guard<std::mutex> lock(gsl_mutex);
+        for (GslWatch* call : gsl_calls)
+            if (call->message_.empty()) call->message_ = message;
+        if (!gsl_calls.empty()) return;
+    }
+    // Not in a call of the module: as before it was imported.
+    if (gsl_previous) return gsl_previous(reason, file, line, code);
+    std::fprintf(stderr, "gsl: %s:%d: ERROR: %s\nDefault GSL error handler invoked.\n", file, line, reason);
+    std::fflush(stderr);
+    std::abort();
+}
+
+void install_gsl_handler() { gsl_previous = gsl_set_error_handler(&on_gsl_error); }
+
+GslWatch::GslWatch() {
+    std::lock_guard<std::mutex> lock(gsl_mutex);
+    gsl_calls.push_back(this);
+}
+
+GslWatch::~GslWatch() {
+    std::lock_guard<std::mutex> lock(gsl_mutex);
+    gsl_calls.erase(std::find(gsl_calls.begin(), gsl_calls.end(), this));
+}
+
+void GslWatch::check() const {
+    std::lock_guard<std::mutex> lock(gsl_mutex);
+    if (message_.empty()) return;
+    throw std::runtime_error(message_ + "; the call's result is not trusted (GSL's default handler would have "
+                                        "aborted the process)");
 }
 
 std::string significant(double v, int n) {

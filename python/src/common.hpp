@@ -75,6 +75,46 @@ void tolerance_arguments(const std::optional<double>& rtol, const std::optional<
 // --jobs: the threads of a study, by default the cores this process may use.
 int jobs_argument(const std::optional<int>& jobs);
 
+// GSL errors.  GSL's default handler aborts the process: from Python, the
+// interpreter with every result in it.  At import the module installs a
+// handler that, while a call of the module runs (a GslWatch is alive, in any
+// thread), records the error and lets GSL return its error code; outside the
+// module's calls it does what the handler it replaced did (GSL's default:
+// the message, then abort), so other users of GSL in the process see no
+// change.  The handler cannot tell which call an error belongs to: one raised
+// while two calls run in two threads fails both.
+void install_gsl_handler();
+void on_gsl_error(const char* reason, const char* file, int line, int code);
+class GslWatch {
+public:
+    GslWatch();
+    ~GslWatch();
+    GslWatch(const GslWatch&) = delete;
+    GslWatch& operator=(const GslWatch&) = delete;
+    // A RuntimeError (std::runtime_error) with GSL's first message if GSL reported an error since construction.
+    void check() const;
+
+private:
+    friend void on_gsl_error(const char*, const char*, int, int);
+    std::string message_;  // GSL's first error during the call, under the handler's mutex
+};
+// f as a function that raises GSL's error, if GSL reported one during the call,
+// in place of its result or of the exception the library threw after it.
+template <class R, class... A>
+auto gsl_checked(R (*f)(A...)) {
+    return [f](A... args) -> R {
+        const GslWatch watch;
+        try {
+            R r = f(std::forward<A>(args)...);
+            watch.check();
+            return r;
+        } catch (...) {
+            watch.check();
+            throw;
+        }
+    };
+}
+
 // %.*g, as the command line's significant().
 std::string significant(double v, int n);
 

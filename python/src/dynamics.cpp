@@ -234,7 +234,7 @@ py::dict simulate_of(double alpha, const std::optional<double>& p, const std::op
 
 void init_dynamics(py::module_& m) {
     using namespace py::literals;
-    m.def("simulate", &simulate_of, py::kw_only(), "alpha"_a, "p"_a = py::none(), "half_height"_a = py::none(),
+    m.def("simulate", gsl_checked(&simulate_of), py::kw_only(), "alpha"_a, "p"_a = py::none(), "half_height"_a = py::none(),
           "height"_a = py::none(), "case"_a = py::none(), "pulses"_a = py::none(), "train"_a = py::none(),
           "to"_a = py::none(), "x"_a = py::none(), "pga"_a = py::none(), "q"_a = py::none(), "rd"_a = py::none(),
           "one_sine"_a = false, "ap"_a = py::none(), "wp"_a = py::none(), "record"_a = py::none(),

@@ -1,5 +1,7 @@
 // rocking_q: the Python front end of the one library (rocking_core), with the
 // command line's names and units; docs/python.md.
+#include <gsl/gsl_cdf.h>
+
 #include "common.hpp"
 
 PYBIND11_MODULE(rocking_q, m) {
@@ -13,10 +15,15 @@ record_info, half_periods, peak_motion, record_synth; collapse, assess; spectrum
 batch (a manifest of jobs to a results file).
 Errors raise ValueError (RecordError for a malformed file, naming file and line), TypeError, or
 RuntimeError, with the library's message.  Long calls release the GIL.  docs/python.md)";
+    install_gsl_handler();
     define_result(m);
     init_qfactor(m);
     init_records(m);
     init_dynamics(m);
     init_studies(m);
     init_batch(m);
+    // For the tests (test_hostile.py): an error inside GSL during a call of the module, which no
+    // argument of the public functions is known to reach (GSL's gamma inverse at the shape 1e7).
+    m.def("_provoke_gsl_error", gsl_checked(+[]() -> double { return gsl_cdf_gamma_Pinv(0.95, 1e7, 1.0); }),
+          "For the tests: makes GSL report an error during a call; raises RuntimeError.");
 }

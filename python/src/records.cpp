@@ -101,6 +101,16 @@ py::dict record_info(py::handle record) {
     return out;
 }
 
+py::array_t<double> half_periods(py::handle record) {
+    const RecordPtr r = record_argument(record, "record");
+    records::HalfPeriods h;
+    {
+        py::gil_scoped_release unlocked;
+        h = checked_half_periods(*r);
+    }
+    return to_array(std::vector<double>(h.to.begin(), h.to.end()));
+}
+
 records::PeakMotion checked_peak_motion(const Record& r) {
     double bound = 0;
     for (double a : r.accel) bound += std::fabs(a) * r.dt;
@@ -343,32 +353,25 @@ reads a file.  Immutable: accel is a read-only view.)")
                         " samples, dt = " + significant(r.dt, 6) + " s>");
         });
 
-    m.def("read_record", &read_record, "path"_a, py::kw_only(), "unit"_a = py::none(), "dt"_a = py::none(),
+    m.def("read_record", gsl_checked(&read_record), "path"_a, py::kw_only(), "unit"_a = py::none(), "dt"_a = py::none(),
           R"(A record file, as `rocking record info FILE` reads it: ESM/ITACA ASCII or PEER AT2 by content,
 or plain one- or two-column text with unit (g, m/s2, cm/s2) and, for one column, dt.
 A malformed file raises RecordError naming the file and line.)");
-    m.def("record_info", &record_info, "record"_a,
+    m.def("record_info", gsl_checked(&record_info), "record"_a,
           "`rocking record info --json`: PGA, PGV, Amax and the eleven half-periods to_1..to_11 (s) of a Record or a path.");
-    m.def("half_periods", [](py::handle record) {
-              const RecordPtr r = record_argument(record, "record");
-              py::gil_scoped_release unlocked;
-              const records::HalfPeriods h = checked_half_periods(*r);
-              py::gil_scoped_acquire locked;
-              return to_array(std::vector<double>(h.to.begin(), h.to.end()));
-          },
-          "record"_a, "to_1..to_11 (s) of a record, as an array of 11 (records/measures.hpp).");
-    m.def("peak_motion", &peak_motion, "record"_a, "PGA (m/s^2), PGV (m/s) and to_5 = pi PGV/PGA (s), as assess measures them.");
-    m.def("record_synth", &record_synth, py::kw_only(), "pulse"_a = py::none(), "stochastic"_a = py::none(),
+    m.def("half_periods", gsl_checked(&half_periods), "record"_a, "to_1..to_11 (s) of a record, as an array of 11 (records/measures.hpp).");
+    m.def("peak_motion", gsl_checked(&peak_motion), "record"_a, "PGA (m/s^2), PGV (m/s) and to_5 = pi PGV/PGA (s), as assess measures them.");
+    m.def("record_synth", gsl_checked(&record_synth), py::kw_only(), "pulse"_a = py::none(), "stochastic"_a = py::none(),
           "params"_a = py::none(), "dt"_a, "duration"_a,
           R"(`rocking record synth`: a synthetic Record (docs/synthetic.md).
 
 pulse=(A, fp, nu, gamma[, t0]): Mavroeidis & Papageorgiou's velocity pulse (m/s, Hz, rad, -, s);
 stochastic=SEED with params={"Ia": ..., "D5_95": ..., ...}: Rezaeian & Der Kiureghian's filtered noise.)");
-    m.def("collapse", &collapse, "record"_a, py::kw_only(), "alpha"_a, "model"_a = "linearised", "solver"_a = py::none(),
+    m.def("collapse", gsl_checked(&collapse), "record"_a, py::kw_only(), "alpha"_a, "model"_a = "linearised", "solver"_a = py::none(),
           "criterion"_a = py::none(), "restitution"_a = "housner", "rtol"_a = py::none(), "atol"_a = py::none(),
           R"(`rocking collapse --json`: Table 1's search, the first p (rad/s) raised from 0.3 by 1 % at which the
 record overturns the block, then refined.  Not a bound (docs/findings.md, T1b).  Releases the GIL.)");
-    m.def("assess", &assess, "record"_a, py::kw_only(), "alpha"_a, "height"_a = py::none(), "half_height"_a = py::none(),
+    m.def("assess", gsl_checked(&assess), "record"_a, py::kw_only(), "alpha"_a, "height"_a = py::none(), "half_height"_a = py::none(),
           R"(`rocking assess --json`: the block's p (eqs. 2, 4), the record's to_5, eq. 27's q at x = p to_5 and
 the record's q = PGA/(alpha g); passes when the record's q is below eq. 27's (the paper's check).)");
 }

@@ -432,20 +432,20 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, double p
 
 void init_studies(py::module_& m) {
     using namespace py::literals;
-    m.def("spectrum", &spectrum, "record"_a, py::kw_only(), "alpha"_a, "p_min"_a = 0.3, "p_max"_a = 30.0,
+    m.def("spectrum", gsl_checked(&spectrum), "record"_a, py::kw_only(), "alpha"_a, "p_min"_a = 0.3, "p_max"_a = 30.0,
           "points"_a = 200, "jobs"_a = py::none(),
           R"(`rocking spectrum --json`: for each alpha (a number or a list), the overturning intervals in p
 (rad/s), each end bisected to 1e-6 and checked, beside Table 1's first collapse, and the grid: each
 spectrum's points as arrays (p, grid, max_theta, final_rotation, peak_rotation, overturning,
 t_overturn with NaN for null).  jobs: threads (default: the cores this process may use).
 Releases the GIL.)");
-    m.def("fragility", &fragility, "records"_a, py::kw_only(), "alpha"_a, "p"_a, "q_max"_a = 20.0, "points"_a = 100,
+    m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a, "p"_a, "q_max"_a = 20.0, "points"_a = 100,
           "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
           R"(`rocking fragility --json`: for each block (every alpha with every p) and record, the IDA's
 overturning intervals in q = PGA/(alpha g), the first collapse q or a censored point, the lognormal
 fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).
 Releases the GIL.)");
-    m.def("eq27", &eq27, "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = 0.5, "p_max"_a = 10.0,
+    m.def("eq27", gsl_checked(&eq27), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = 0.5, "p_max"_a = 10.0,
           "p_points"_a = 10, "q_max"_a = 20.0, "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
           R"(`rocking eq27 --json`: each record's first collapse q on every block of the grid against eq. 27
 at x = p to_k; per to_k the share of non-conservative cases with its Wilson and bootstrap

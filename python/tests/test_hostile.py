@@ -46,3 +46,25 @@ def test_a_gamma_shape_beyond_gsl_s_inverse_is_refused_not_aborted():
     # The largest alpha2 taken still runs (the Arias route gives at most 50000.5: shape 1e5).
     assert rq.record_synth(stochastic=1, params={"alpha1": 1, "alpha2": 1e5, "alpha3": 4000}, dt=0.01,
                            duration=20).samples == 2001
+
+
+def test_a_gsl_error_during_a_call_is_a_runtime_error_not_an_abort():
+    # No public argument is known to reach GSL's error handler any more (above); the hook makes GSL
+    # fail during a call, as an unforeseen input would.  GSL's default handler aborted the process.
+    raises_in_subprocess("rq._provoke_gsl_error()", "RuntimeError", "GSL error: ")
+    # GSL's first error during the call, where GSL raised it (its file and line), and why.
+    with pytest.raises(RuntimeError, match=r"^GSL error: .* \(.*gamma.*\.c:\d+, .*\); the call's result is not "
+                                           r"trusted \(GSL's default handler would have aborted the process\)$"):
+        rq._provoke_gsl_error()
+    assert rq.q(0.5, case=2) > 0  # the next call is not blamed for it
+
+
+def test_outside_the_module_s_calls_gsl_s_handler_is_unchanged():
+    # Another user of GSL in the process (here through ctypes) still gets GSL's default handler.
+    status, out, err = in_subprocess(
+        "import ctypes, ctypes.util\n"
+        "gsl = ctypes.CDLL(ctypes.util.find_library('gsl') or 'libgsl.so')\n"
+        "gsl.gsl_cdf_gamma_Pinv.restype = ctypes.c_double\n"
+        "gsl.gsl_cdf_gamma_Pinv.argtypes = [ctypes.c_double] * 3\n"
+        "print(gsl.gsl_cdf_gamma_Pinv(0.95, 1e7, 1.0))\n")
+    assert status != 0 and "Default GSL error handler invoked" in err, (status, out, err)
