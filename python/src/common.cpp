@@ -111,8 +111,28 @@ py::object file_of(const records::Record& r) { return from_file(r) ? path_of(r) 
 
 py::str text(const std::string& s) { return py::bytes(s).attr("decode")("utf-8", "replace"); }
 
+namespace {
+const char* kNeverInitialised = "(made by Record.__new__ without calling Record(...))";
+}  // namespace
+
+RecordPtr held(py::handle self) {
+    if (!py::isinstance<records::Record>(self))
+        throw py::type_error("expected a rocking_q.Record, got " + std::string(py::str(py::type::of(self).attr("__name__"))));
+    try {
+        return self.cast<std::shared_ptr<records::Record>>();
+    } catch (const py::cast_error&) {  // no holder: __init__ never ran
+        throw py::type_error(std::string("Record: not initialised ") + kNeverInitialised);
+    }
+}
+
 RecordPtr record_argument(py::handle obj, const std::string& what) {
-    if (py::isinstance<records::Record>(obj)) return obj.cast<std::shared_ptr<records::Record>>();
+    if (py::isinstance<records::Record>(obj)) {
+        try {
+            return obj.cast<std::shared_ptr<records::Record>>();
+        } catch (const py::cast_error&) {
+            throw py::type_error(what + ": a rocking_q.Record never initialised " + kNeverInitialised);
+        }
+    }
     const py::module_ os = py::module_::import("os");
     if (!py::isinstance<py::str>(obj) && !py::isinstance<py::bytes>(obj) && !py::hasattr(obj, "__fspath__"))
         throw py::type_error(what + ": expected a rocking_q.Record or a file's path, got " +

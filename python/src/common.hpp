@@ -45,6 +45,9 @@ py::array_t<double> to_array(const std::vector<double>& v);
 // A record argument: a rocking_q.Record, or a path (str or os.PathLike) read
 // as `rocking record info FILE` reads it (ESM or PEER by content).
 using RecordPtr = std::shared_ptr<const records::Record>;
+// A Record method's self: a TypeError when it was made by Record.__new__ without
+// its constructor (no Record behind it: pybind11 would give the method unwritten memory).
+RecordPtr held(py::handle self);
 RecordPtr record_argument(py::handle obj, const std::string& what);
 std::vector<RecordPtr> record_list(py::handle obj, const std::string& what);
 // The record's file as given, or its name when it was made from an array:

@@ -64,9 +64,44 @@ std::shared_ptr<Record> read_record(py::handle path, const std::optional<std::st
     return std::make_shared<Record>(records::read_plain(file, *unit, dt.value_or(0.0)));
 }
 
+// A Record from its pickled state, checked as the constructor checks its arguments: a
+// state made by hand (or a corrupted pickle) must not give a record no constructor gives.
+std::shared_ptr<Record> record_from_state(const py::object& state) {
+    const char* what = "Record.__setstate__";
+    auto r = std::make_shared<Record>();
+    py::object accel;
+    try {
+        if (!py::isinstance<py::tuple>(state) || py::len(state) != 6) throw py::cast_error();
+        const py::tuple t = py::reinterpret_borrow<py::tuple>(state);
+        for (int k : {0, 1, 2})
+            if (!py::isinstance<py::bytes>(t[k])) throw py::cast_error();
+        r->path = t[0].cast<std::string>();
+        r->format = t[1].cast<std::string>();
+        r->name = t[2].cast<std::string>();
+        if (!py::isinstance<py::float_>(t[3])) throw py::cast_error();
+        r->dt = t[3].cast<double>();
+        if (!py::isinstance<py::dict>(t[5])) throw py::cast_error();
+        for (auto [key, value] : py::reinterpret_borrow<py::dict>(t[5])) {
+            if (!py::isinstance<py::bytes>(key) || !py::isinstance<py::bytes>(value)) throw py::cast_error();
+            r->header[key.cast<std::string>()] = value.cast<std::string>();
+        }
+        accel = t[4];
+    } catch (const py::cast_error&) {
+        throw py::type_error(std::string(what) + ": not the state of a pickled rocking_q.Record (path, format, "
+                                                 "name as bytes, dt, accel, header as a dict of bytes)");
+    }
+    r->accel = real_vector(accel, std::string(what) + ": accel");
+    if (!(r->dt > 0) || !std::isfinite(r->dt)) refuse(std::string(what) + ": dt must be > 0 (got " + significant(r->dt, 17) + ")");
+    if (r->accel.size() < 2)
+        refuse(std::string(what) + ": a record needs at least 2 samples (got " + std::to_string(r->accel.size()) + ")");
+    for (std::size_t k = 0; k < r->accel.size(); ++k)
+        if (!std::isfinite(r->accel[k])) refuse(std::string(what) + ": accel[" + std::to_string(k) + "] is not finite");
+    return r;
+}
+
 // A read-only view of the samples that keeps the record alive.
-py::array_t<double> accel_view(py::object self) {
-    const Record& r = self.cast<const Record&>();
+py::array_t<double> accel_view(py::handle self) {
+    const Record& r = *held(self);
     py::array_t<double> a({static_cast<py::ssize_t>(r.accel.size())}, {static_cast<py::ssize_t>(sizeof(double))},
                           r.accel.data(), self);
     a.attr("flags").attr("writeable") = false;
@@ -307,50 +342,44 @@ void init_records(py::module_& m) {
     using namespace py::literals;
     py::register_exception<records::RecordError>(m, "RecordError", PyExc_ValueError);
 
+    // Every method takes the Record through held(): one made by Record.__new__ without its
+    // constructor has no Record behind it, and pybind11 would hand the method unwritten memory.
     py::class_<Record, std::shared_ptr<Record>>(m, "Record", R"(A strong-motion record: samples in m/s^2 every dt seconds.
 
 Record(accel, dt, unit="m/s2", name="array") makes one from a 1-D array in unit
 (g, m/s2 or cm/s2), multiplied to m/s^2 as the plain-text reader does; read_record(path)
 reads a file.  Immutable: accel is a read-only view.)")
         .def(py::init(&record_from_array), "accel"_a, "dt"_a, py::kw_only(), "unit"_a = "m/s2", "name"_a = "array")
-        .def_property_readonly("path", [](const Record& r) { return path_of(r); }, "the file as given; None for an array")
-        .def_property_readonly("format", [](const Record& r) { return text(r.format); })
-        .def_property_readonly("name", [](const Record& r) { return text(r.name); })
-        .def_readonly("dt", &Record::dt, "s")
-        .def_property_readonly("accel", [](py::object self) { return accel_view(self); }, "the samples, m/s^2 (read-only)")
-        .def_property_readonly("samples", [](const Record& r) { return r.accel.size(); }, "how many samples")
-        .def_property_readonly("header", [](const Record& r) {
+        .def_property_readonly("path", [](py::handle self) { return path_of(*held(self)); }, "the file as given; None for an array")
+        .def_property_readonly("format", [](py::handle self) { return text(held(self)->format); })
+        .def_property_readonly("name", [](py::handle self) { return text(held(self)->name); })
+        .def_property_readonly("dt", [](py::handle self) { return held(self)->dt; }, "s")
+        .def_property_readonly("accel", [](py::handle self) { return accel_view(self); }, "the samples, m/s^2 (read-only)")
+        .def_property_readonly("samples", [](py::handle self) { return held(self)->accel.size(); }, "how many samples")
+        .def_property_readonly("header", [](py::handle self) {
             py::dict h;
-            for (const auto& [key, value] : r.header) h[text(key)] = text(value);
+            for (const auto& [key, value] : held(self)->header) h[text(key)] = text(value);
             return h;
         }, "the source's header fields (text)")
-        .def_property_readonly("duration", &Record::duration, "s")
-        .def_property_readonly("pga_ms2", &Record::pga, "max |a|, m/s^2")
-        .def_property_readonly("pga_g", [](const Record& r) { return r.pga() / dynamics::kGravity; }, "max |a|, g")
-        .def("in_g", [](const Record& r) { return to_array(r.in_g(dynamics::kGravity)); }, "the samples in g (a copy)")
-        .def("__len__", [](const Record& r) { return r.accel.size(); })
+        .def_property_readonly("duration", [](py::handle self) { return held(self)->duration(); }, "s")
+        .def_property_readonly("pga_ms2", [](py::handle self) { return held(self)->pga(); }, "max |a|, m/s^2")
+        .def_property_readonly("pga_g", [](py::handle self) { return held(self)->pga() / dynamics::kGravity; }, "max |a|, g")
+        .def("in_g", [](py::handle self) { return to_array(held(self)->in_g(dynamics::kGravity)); }, "the samples in g (a copy)")
+        .def("__len__", [](py::handle self) { return held(self)->accel.size(); })
         // Pickled whole, so that a ProcessPoolExecutor can send one to its workers.
         .def(py::pickle(
-            [](const Record& r) {
+            [](py::handle self) {
+                const RecordPtr r = held(self);
                 py::dict header;  // bytes, as read: a file's header need not be UTF-8
-                for (const auto& [key, value] : r.header) header[py::bytes(key)] = py::bytes(value);
-                return py::make_tuple(py::bytes(r.path), py::bytes(r.format), py::bytes(r.name), r.dt, to_array(r.accel),
-                                      header);
+                for (const auto& [key, value] : r->header) header[py::bytes(key)] = py::bytes(value);
+                return py::object(py::make_tuple(py::bytes(r->path), py::bytes(r->format), py::bytes(r->name), r->dt,
+                                                 to_array(r->accel), header));
             },
-            [](py::tuple t) {
-                if (t.size() != 6) throw std::runtime_error("Record: not a pickled rocking_q.Record");
-                auto r = std::make_shared<Record>();
-                r->path = t[0].cast<std::string>();
-                r->format = t[1].cast<std::string>();
-                r->name = t[2].cast<std::string>();
-                r->dt = t[3].cast<double>();
-                r->accel = real_vector(t[4], "accel");
-                r->header = t[5].cast<std::map<std::string, std::string>>();
-                return r;
-            }))
-        .def("__repr__", [](const Record& r) {
-            return text("<rocking_q.Record '" + r.name + "' (" + r.format + "): " + std::to_string(r.accel.size()) +
-                        " samples, dt = " + significant(r.dt, 6) + " s>");
+            &record_from_state))
+        .def("__repr__", [](py::handle self) {
+            const RecordPtr r = held(self);
+            return text("<rocking_q.Record '" + r->name + "' (" + r->format + "): " + std::to_string(r->accel.size()) +
+                        " samples, dt = " + significant(r->dt, 6) + " s>");
         });
 
     m.def("read_record", gsl_checked(&read_record), "path"_a, py::kw_only(), "unit"_a = py::none(), "dt"_a = py::none(),

@@ -68,3 +68,57 @@ def test_outside_the_module_s_calls_gsl_s_handler_is_unchanged():
         "gsl.gsl_cdf_gamma_Pinv.argtypes = [ctypes.c_double] * 3\n"
         "print(gsl.gsl_cdf_gamma_Pinv(0.95, 1e7, 1.0))\n")
     assert status != 0 and "Default GSL error handler invoked" in err, (status, out, err)
+
+
+# ---- Record: made without its constructor ----
+
+UNINITIALISED = ["repr(r)", "r.header", "r.accel", "len(r)", "r.in_g()", "r.dt", "r.name", "r.path", "r.format",
+                 "r.samples", "r.pga_ms2", "r.pga_g", "r.duration", "r.__getstate__()", "pickle.dumps(r)",
+                 "copy.deepcopy(r)"]
+
+
+def test_a_record_never_initialised_is_refused_not_a_crash():
+    # Record.__new__ without __init__ (as pickle makes one before __setstate__): its methods read
+    # memory never written, and repr, header and pickling died with SIGSEGV.
+    probes = "".join(
+        "print(%r, flush=True)\ntry:\n    %s\nexcept TypeError as e:\n    print('TypeError:', e, flush=True)\n"
+        "else:\n    print('returned', flush=True)\n" % (p, p) for p in UNINITIALISED)
+    status, out, err = in_subprocess("import copy, pickle\nr = rq.Record.__new__(rq.Record)\n" + probes)
+    assert status == 0, "died after %r (exit %d): %s" % (out.splitlines()[-1:], status, err[-300:])
+    lines = out.splitlines()
+    for probe, answer in zip(lines[::2], lines[1::2]):
+        assert answer.startswith("TypeError: Record: not initialised (made by Record.__new__ without "
+                                 "calling Record(...))"), (probe, answer)
+    r = rq.Record.__new__(rq.Record)
+    for call in (lambda: rq.record_info(r), lambda: rq.simulate(record=r, alpha=0.15, p=2),
+                 lambda: rq.fragility([r], alpha=0.1, p=2)):
+        with pytest.raises(TypeError, match=r"^records?(\[0\])?: a rocking_q.Record never initialised "
+                                            r"\(made by Record.__new__ without calling Record\(...\)\)$"):
+            call()
+    rq.Record.__init__(r, [0.1, 0.2, 0.3], 0.01)  # initialised late, it works
+    assert r.accel.tolist() == [0.1, 0.2, 0.3]
+
+
+def test_a_pickled_state_is_checked_as_the_constructor_checks():
+    import pickle
+    good = rq.Record([0.1, -0.2, 0.3], 0.01, unit="g", name="three")
+    state = good.__getstate__()
+    assert pickle.loads(pickle.dumps(good)).accel.tolist() == good.accel.tolist()
+
+    def with_(k, v):
+        return state[:k] + (v,) + state[k + 1:]
+    for bad, error, message in [
+        (with_(3, -1.0), ValueError, r"^Record.__setstate__: dt must be > 0 \(got -1\)$"),
+        (with_(3, float("nan")), ValueError, r"^Record.__setstate__: dt must be > 0 \(got nan\)$"),
+        (with_(4, np.array([1.0])), ValueError, r"^Record.__setstate__: a record needs at least 2 samples \(got 1\)$"),
+        (with_(4, np.array([0.1, np.inf, 0.2])), ValueError, r"^Record.__setstate__: accel\[1\] is not finite$"),
+        (with_(4, np.array([[0.1, 0.2]])), ValueError, r"^Record.__setstate__: accel: expected a 1-D array"),
+        (with_(1, "array"), TypeError, r"^Record.__setstate__: not the state of a pickled rocking_q.Record"),
+        (with_(5, {b"k": 3}), TypeError, r"^Record.__setstate__: not the state of a pickled rocking_q.Record"),
+        (state[:5], TypeError, r"^Record.__setstate__: not the state of a pickled rocking_q.Record"),
+        ((1, 2, 3, 4, 5, 6), TypeError, r"^Record.__setstate__: not the state of a pickled rocking_q.Record"),
+        (None, TypeError, r"^Record.__setstate__: not the state of a pickled rocking_q.Record"),
+    ]:
+        r = rq.Record.__new__(rq.Record)
+        with pytest.raises(error, match=message):
+            r.__setstate__(bad)
