@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
 
 #include "batch/pool.hpp"
@@ -68,6 +69,55 @@ py::object none_if_nan(double v) { return std::isfinite(v) ? py::object(py::floa
 
 void refuse(const std::string& message) { throw py::value_error(message); }
 
+namespace {
+PyObject* record_error_type = nullptr;  // set once at import, never freed
+
+void set_error(PyObject* type, const char* what) {
+    PyObject* message = PyUnicode_DecodeFSDefault(what);  // surrogateescape: never fails on bytes
+    if (!message) {
+        PyErr_Clear();
+        message = PyUnicode_DecodeUTF8(what, static_cast<Py_ssize_t>(std::strlen(what)), "replace");
+    }
+    PyErr_SetObject(type, message);
+    Py_XDECREF(message);
+}
+}  // namespace
+
+void install_exception_translator(py::handle record_error) {
+    record_error_type = record_error.inc_ref().ptr();
+    py::register_local_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const py::error_already_set&) {
+            throw;
+        } catch (const records::RecordError& e) {
+            set_error(record_error_type, e.what());
+        } catch (const py::value_error& e) {
+            set_error(PyExc_ValueError, e.what());
+        } catch (const py::type_error& e) {
+            set_error(PyExc_TypeError, e.what());
+        } catch (const py::builtin_exception&) {
+            throw;  // pybind11's own (cast_error, index_error, ...): its translator
+        } catch (const std::bad_alloc&) {
+            throw;
+        } catch (const std::invalid_argument& e) {
+            set_error(PyExc_ValueError, e.what());
+        } catch (const std::domain_error& e) {
+            set_error(PyExc_ValueError, e.what());
+        } catch (const std::length_error& e) {
+            set_error(PyExc_ValueError, e.what());
+        } catch (const std::range_error& e) {
+            set_error(PyExc_ValueError, e.what());
+        } catch (const std::out_of_range& e) {
+            set_error(PyExc_IndexError, e.what());
+        } catch (const std::overflow_error& e) {
+            set_error(PyExc_OverflowError, e.what());
+        } catch (const std::exception& e) {
+            set_error(PyExc_RuntimeError, e.what());
+        }
+    });
+}
+
 py::array_t<double> real_array(py::handle obj, const std::string& what) {
     py::array a = py::array::ensure(obj);
     if (!a) throw py::type_error(what + ": expected an array of real numbers, got " + std::string(py::str(py::type::of(obj).attr("__name__"))));
@@ -125,6 +175,13 @@ RecordPtr held(py::handle self) {
     }
 }
 
+std::string file_argument(py::handle obj, const std::string& what) {
+    const std::string path = py::module_::import("os").attr("fsencode")(obj).cast<std::string>();
+    // The reader would see the name up to its NUL, another file; open() refuses it so.
+    if (path.find('\0') != std::string::npos) refuse(what + ": embedded null byte");
+    return path;
+}
+
 RecordPtr record_argument(py::handle obj, const std::string& what) {
     if (py::isinstance<records::Record>(obj)) {
         try {
@@ -133,11 +190,10 @@ RecordPtr record_argument(py::handle obj, const std::string& what) {
             throw py::type_error(what + ": a rocking_q.Record never initialised " + kNeverInitialised);
         }
     }
-    const py::module_ os = py::module_::import("os");
     if (!py::isinstance<py::str>(obj) && !py::isinstance<py::bytes>(obj) && !py::hasattr(obj, "__fspath__"))
         throw py::type_error(what + ": expected a rocking_q.Record or a file's path, got " +
                              std::string(py::str(py::type::of(obj).attr("__name__"))));
-    const std::string path = os.attr("fsencode")(obj).cast<std::string>();
+    const std::string path = file_argument(obj, what);
     py::gil_scoped_release unlocked;  // a pipe may keep the reader waiting up to 10 s
     return std::make_shared<const records::Record>(records::read_any(path));
 }

@@ -33,6 +33,13 @@ py::object none_if_nan(double v);  // JSON's null: a value that is not finite
 // a ValueError.
 [[noreturn]] void refuse(const std::string& message);
 
+// The module's C++ exceptions as Python's, as pybind11 maps them (ValueError for
+// invalid_argument, RuntimeError for runtime_error, ...; record_error for
+// records::RecordError), but with each message decoded as os.fsdecode decodes a
+// file's name: a message that holds a name whose bytes are not UTF-8 came
+// through pybind11 as an exception with no message at all.
+void install_exception_translator(py::handle record_error);
+
 // A real array (integer or floating dtype, at most 64 bits) as float64,
 // C-contiguous; anything else (bool, complex, object, text, dates, long
 // double) is refused with a TypeError naming `what`, its dtype and the one expected.
@@ -49,6 +56,8 @@ using RecordPtr = std::shared_ptr<const records::Record>;
 // its constructor (no Record behind it: pybind11 would give the method unwritten memory).
 RecordPtr held(py::handle self);
 RecordPtr record_argument(py::handle obj, const std::string& what);
+// A path (str, bytes or os.PathLike) as os.fsencode gives it; a NUL in it is refused.
+std::string file_argument(py::handle obj, const std::string& what);
 std::vector<RecordPtr> record_list(py::handle obj, const std::string& what);
 // The record's file as given, or its name when it was made from an array:
 // what the command line's messages and "file" fields hold.

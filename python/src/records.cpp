@@ -59,7 +59,7 @@ std::shared_ptr<Record> read_record(py::handle path, const std::optional<std::st
     if (dt && !(*dt > 0)) refuse("dt: must be > 0 (got " + significant(*dt, 17) + ")");
     if (!py::isinstance<py::str>(path) && !py::isinstance<py::bytes>(path) && !py::hasattr(path, "__fspath__"))
         throw py::type_error("path: expected a file's path");
-    const std::string file = py::module_::import("os").attr("fsencode")(path).cast<std::string>();
+    const std::string file = file_argument(path, "path");
     py::gil_scoped_release unlocked;
     return std::make_shared<Record>(records::read_plain(file, *unit, dt.value_or(0.0)));
 }
@@ -340,7 +340,10 @@ py::dict assess(py::handle record, double alpha, const std::optional<double>& he
 
 void init_records(py::module_& m) {
     using namespace py::literals;
-    py::register_exception<records::RecordError>(m, "RecordError", PyExc_ValueError);
+    // RecordError's messages reach Python through the module's translator (common.cpp): a file's
+    // name in them need not be UTF-8.
+    static py::exception<records::RecordError> record_error(m, "RecordError", PyExc_ValueError);
+    install_exception_translator(record_error);
 
     // Every method takes the Record through held(): one made by Record.__new__ without its
     // constructor has no Record behind it, and pybind11 would hand the method unwritten memory.

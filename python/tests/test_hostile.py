@@ -122,3 +122,42 @@ def test_a_pickled_state_is_checked_as_the_constructor_checks():
         r = rq.Record.__new__(rq.Record)
         with pytest.raises(error, match=message):
             r.__setstate__(bad)
+
+
+# ---- Files: names that are not text ----
+
+def test_a_file_name_that_is_not_utf8_stays_in_the_message(tmp_path):
+    # A name with bytes that are not UTF-8 (os.fsdecode's surrogates): the message that carried it
+    # could not be decoded, and the exception came with no message at all.
+    folder = os.fsencode(tmp_path)
+    short = folder + b"/short\xff\xfe.txt"
+    with open(short, "w") as f:
+        f.write("0.1\n0.2\n0.3\n")
+    record = rq.read_record(short, unit="g", dt=0.01)
+    assert record.path == os.fsdecode(short)
+    with pytest.raises(RuntimeError) as e:
+        rq.record_info(record)
+    assert str(e.value) == os.fsdecode(short) + ": half_periods: a record needs >= 4 samples and dt > 0"
+    missing = folder + b"/missing\xff.asc"
+    with pytest.raises(rq.RecordError) as e:
+        rq.read_record(os.fsdecode(missing))
+    # The command line's message, its bytes read back as os.fsdecode reads a name.
+    done = subprocess.run([os.environ.get("ROCKING_CLI", "build/rocking"), "record", "info", missing],
+                          capture_output=True)
+    assert done.returncode == 1
+    assert str(e.value) == os.fsdecode(done.stderr.splitlines()[0])[len("rocking record: "):]
+    assert str(e.value).startswith(os.fsdecode(missing) + ":0: cannot open the file")
+
+
+def test_a_path_with_a_nul_is_refused_not_cut_short(tmp_path):
+    # The reader saw the name up to its NUL: "two.txt\0junk" read two.txt.  Python's open() refuses it.
+    two = tmp_path / "two.txt"
+    two.write_text("0.1\n0.2\n0.3\n0.4\n")
+    with pytest.raises(ValueError, match=r"^path: embedded null byte$"):
+        rq.read_record(str(two) + "\0junk", unit="g", dt=0.01)
+    with pytest.raises(ValueError, match=r"^path: embedded null byte$"):
+        rq.read_record(str(two) + "\0junk")
+    with pytest.raises(ValueError, match=r"^record: embedded null byte$"):
+        rq.record_info(str(two).encode() + b"\0")
+    with pytest.raises(ValueError, match=r"^records\[1\]: embedded null byte$"):
+        rq.fragility([rq.Record([0.1, 0.2, 0.3, 0.4], 0.01), str(two) + "\0"], alpha=0.1, p=2)
