@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cfloat>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -44,6 +45,17 @@ class Result(dict):
 
     def __repr__(self):
         return "Result(" + dict.__repr__(self) + ")"
+
+    @staticmethod
+    def _unexpected(function, shown, keys):
+        """The TypeError's text for keywords the function does not take, as Python words it."""
+        import difflib
+        import re
+        head = (function.__doc__ or "").split("\n", 1)[0]
+        known = [k for k in re.findall(r"[(,]\s*(\w+)\s*:", head) if k != "self"]
+        close = difflib.get_close_matches(keys[0], known, n=1)
+        hint = " (did you mean '%s'?)" % close[0] if close else ""
+        return "%s() got an unexpected keyword argument '%s'%s" % (shown, keys[0], hint)
 )py";
 
 // Set once at import and never freed: a static py::object would be released
@@ -68,6 +80,158 @@ py::dict result() { return py::dict((*result_type)()); }
 py::object none_if_nan(double v) { return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none()); }
 
 void refuse(const std::string& message) { throw py::value_error(message); }
+
+namespace {
+
+py::module_* module_handle = nullptr;  // set once at import, never freed
+
+std::string type_name(py::handle o) { return py::str(py::type::of(o).attr("__name__")); }
+
+bool is_numpy(py::handle o) {
+    const py::module_ np = py::module_::import("numpy");
+    return py::isinstance(o, np.attr("ndarray")) || py::isinstance(o, np.attr("generic"));
+}
+
+bool is_bool(py::handle o) {
+    return PyBool_Check(o.ptr()) || py::isinstance(o, py::module_::import("numpy").attr("bool_"));
+}
+
+std::string shape_of(const py::array& a) {
+    std::string shape = "(";
+    for (py::ssize_t k = 0; k < a.ndim(); ++k) shape += (k ? ", " : "") + std::to_string(a.shape(k));
+    return shape + (a.ndim() == 1 ? ",)" : ")");
+}
+
+// "str '0.15'", "list", "an array of shape (1,)": what was given, for a TypeError.
+std::string given(py::handle o) {
+    if (py::isinstance<py::str>(o)) {
+        std::string shown = py::repr(o);
+        if (shown.size() > 40) shown = shown.substr(0, 37) + "...";
+        return type_name(o) + " " + shown;
+    }
+    if (py::isinstance<py::array>(o) && py::reinterpret_borrow<py::array>(o).ndim() > 0)
+        return "an array of shape " + shape_of(py::reinterpret_borrow<py::array>(o));
+    return o.is_none() ? "None" : type_name(o);
+}
+
+// A numpy scalar or array as a 0-d array of an integer or real dtype, or a TypeError.
+py::object numpy_item(py::handle o, const std::string& name, const std::string& expected, bool reals) {
+    const py::array a = py::array::ensure(o);
+    if (!a || a.ndim() != 0) throw py::type_error(name + ": expected " + expected + ", got " + given(o));
+    const char kind = a.dtype().kind();
+    const bool ok = kind == 'i' || kind == 'u' || (reals && kind == 'f' && a.dtype().itemsize() <= 8);
+    if (!ok) throw py::type_error(name + ": expected " + expected + ", got " + std::string(py::str(a.dtype())));
+    return a.attr("item")();
+}
+
+std::string not_finite(double v) { return std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf"; }
+
+// The shortest text that reads back as v: 0.5 as "0.5", as a user types it.
+std::string shortest(double v) {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+    return std::string(text, end);
+}
+
+}  // namespace
+
+void set_module(py::module_& m) { module_handle = new py::module_(m); }
+
+double number(const Real& a, const std::string& name) {
+    const char* expected = "a number";
+    py::object o = a.value;
+    if (o.is_none() || is_bool(o) || py::isinstance<py::str>(o) || py::isinstance<py::bytes>(o) ||
+        PyByteArray_Check(o.ptr()))
+        throw py::type_error(name + ": expected " + expected + ", got " + given(o));
+    if (PyComplex_Check(o.ptr())) throw py::type_error(name + ": expected a real number, got " + given(o));
+    if (is_numpy(o)) o = numpy_item(o, name, expected, true);
+    double v;
+    if (PyFloat_Check(o.ptr())) {
+        v = PyFloat_AS_DOUBLE(o.ptr());
+    } else {
+        PyObject* f = PyNumber_Float(o.ptr());  // int, __index__, __float__ (Fraction, Decimal, mpf)
+        if (!f) {
+            const bool overflow = PyErr_ExceptionMatches(PyExc_OverflowError);
+            PyErr_Clear();
+            if (overflow) refuse(name + ": " + std::string(py::str(o)).substr(0, 40) + " is too large for a double");
+            throw py::type_error(name + ": expected " + expected + ", got " + given(a.value));
+        }
+        v = PyFloat_AS_DOUBLE(f);
+        Py_DECREF(f);
+    }
+    if (!std::isfinite(v)) refuse(name + ": " + not_finite(v) + " is not a finite number");
+    if (v != 0 && std::fabs(v) < DBL_MIN)
+        refuse(name + ": " + shortest(v) + " is below the smallest normal double, " + significant(DBL_MIN, 17));
+    return v;
+}
+
+std::optional<double> number(const std::optional<Real>& a, const std::string& name) {
+    if (!a) return std::nullopt;
+    return number(*a, name);
+}
+
+long long whole(const Whole& a, const std::string& name) {
+    const char* expected = "a whole number";
+    py::object o = a.value;
+    if (o.is_none() || is_bool(o) || PyFloat_Check(o.ptr()) || py::isinstance<py::str>(o) || py::isinstance<py::bytes>(o))
+        throw py::type_error(name + ": expected " + expected + ", got " + given(o));
+    if (is_numpy(o)) o = numpy_item(o, name, expected, false);
+    PyObject* index = PyNumber_Index(o.ptr());
+    if (!index) {
+        PyErr_Clear();
+        throw py::type_error(name + ": expected " + expected + ", got " + given(a.value));
+    }
+    int overflow = 0;
+    const long long v = PyLong_AsLongLongAndOverflow(index, &overflow);
+    const std::string shown = py::str(py::handle(index));
+    Py_DECREF(index);
+    if (overflow) refuse(name + ": " + shown + " is out of range");
+    return v;
+}
+
+std::optional<long long> whole(const std::optional<Whole>& a, const std::string& name) {
+    if (!a) return std::nullopt;
+    return whole(*a, name);
+}
+
+std::string string_argument(const Text& a, const std::string& name) {
+    if (!py::isinstance<py::str>(a.value)) throw py::type_error(name + ": expected a string, got " + given(a.value));
+    std::string s;
+    try {
+        s = a.value.attr("encode")("utf-8", "surrogateescape").cast<std::string>();
+    } catch (const py::error_already_set&) {  // a lone surrogate that stands for no byte
+        refuse(name + ": not text that UTF-8 can hold (a lone surrogate)");
+    }
+    if (s.find('\0') != std::string::npos) refuse(name + ": embedded null character");
+    return s;
+}
+
+std::optional<std::string> string_argument(const std::optional<Text>& a, const std::string& name) {
+    if (!a) return std::nullopt;
+    return string_argument(*a, name);
+}
+
+bool flag(const Flag& a, const std::string& name) {
+    if (is_bool(a.value)) return PyObject_IsTrue(a.value.ptr()) == 1;
+    if (PyLong_Check(a.value.ptr())) {
+        const long long v = a.value.cast<long long>();
+        if (v == 0 || v == 1) return v == 1;
+    }
+    throw py::type_error(name + ": expected True or False, got " + given(a.value));
+}
+
+void no_other_keywords(const py::kwargs& extra, const char* function, const char* shown) {
+    if (extra.empty()) return;
+    py::object f = *module_handle;
+    std::string path = function;
+    for (std::size_t at = 0; at != std::string::npos;) {
+        const std::size_t dot = path.find('.', at);
+        f = f.attr(path.substr(at, dot == std::string::npos ? std::string::npos : dot - at).c_str());
+        at = dot == std::string::npos ? dot : dot + 1;
+    }
+    const py::object message = module_handle->attr("Result").attr("_unexpected")(f, shown, py::list(extra.attr("keys")()));
+    throw py::type_error(message.cast<std::string>());
+}
 
 namespace {
 PyObject* record_error_type = nullptr;  // set once at import, never freed
@@ -201,6 +365,8 @@ RecordPtr record_argument(py::handle obj, const std::string& what) {
 std::vector<RecordPtr> record_list(py::handle obj, const std::string& what) {
     if (py::isinstance<py::str>(obj) || py::isinstance<records::Record>(obj) || py::hasattr(obj, "__fspath__"))
         throw py::type_error(what + ": expected a list of records or paths (one record: [r])");
+    if (!py::isinstance<py::iterable>(obj))
+        throw py::type_error(what + ": expected a list of records or paths, got " + given(obj));
     std::vector<RecordPtr> out;
     std::size_t k = 0;
     for (py::handle item : py::iter(obj)) out.push_back(record_argument(item, what + "[" + std::to_string(k++) + "]"));
@@ -231,18 +397,23 @@ records::HalfPeriods checked_half_periods(const records::Record& r) {
     return h;
 }
 
-namespace {
-// The shortest text that reads back as v: 0.5 as "0.5", as a user types it.
-std::string shortest(double v) {
-    char text[32];
-    const auto end = std::to_chars(text, text + sizeof text, v).ptr;
-    return std::string(text, end);
-}
-}  // namespace
 
-PulseTrain train_argument(const py::object& which_case, const std::optional<int>& pulses, const py::object& train,
-                          std::string& equation) {
-    const bool has_case = !which_case.is_none(), has_train = !train.is_none();
+int case_argument(const py::object& which_case) {
+    const bool integer = !is_bool(which_case) && (PyLong_Check(which_case.ptr()) ||
+                                                  py::isinstance(which_case, py::module_::import("numpy").attr("integer")));
+    if (!integer) throw py::type_error("case: expected an integer 1..5, got " + given(which_case));
+    int overflow = 0;
+    const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(which_case.ptr()));
+    const long long which = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+    if (overflow || which < 1 || which > 5)
+        refuse("case: must be 1, 2, 3, 4 or 5 (got " + std::string(py::str(index)) + ")");
+    return static_cast<int>(which);
+}
+
+PulseTrain train_argument(const std::optional<Whole>& which_case, const std::optional<Whole>& pulses_given,
+                          const py::object& train, std::string& equation) {
+    const std::optional<long long> pulses = whole(pulses_given, "pulses");
+    const bool has_case = which_case.has_value(), has_train = !train.is_none();
     if (has_case == has_train) refuse("give exactly one of case and train");
     if (has_train) {
         if (pulses) refuse("pulses goes with case");
@@ -265,12 +436,10 @@ PulseTrain train_argument(const py::object& which_case, const std::optional<int>
             refuse(std::string("train: ") + e.what());
         }
     }
-    if (!py::isinstance<py::int_>(which_case) || py::isinstance<py::bool_>(which_case))
-        throw py::type_error("case: expected an integer 1..5");
-    const int which = which_case.cast<int>();
-    if (which < 1 || which > 5) refuse("case: must be 1, 2, 3, 4 or 5 (got " + std::to_string(which) + ")");
-    const int n = pulses.value_or(2);
-    if (n < 1 || n > 1000) refuse("pulses: must be between 1 and 1000");
+    const int which = case_argument(which_case->value);
+    const long long pulses_or_2 = pulses.value_or(2);
+    if (pulses_or_2 < 1 || pulses_or_2 > 1000) refuse("pulses: must be between 1 and 1000");
+    const int n = static_cast<int>(pulses_or_2);
     static const char* eq[] = {"", "eq. 12", "eq. 15", "eq. 19", "eq. 22", "eq. 24"};
     equation = n == 2 ? eq[which] : (n == 6 && which == 2) ? "eq. 27" : (n == 6 && which == 4) ? "eq. 28 (corrected)"
                                                                                              : "superposition (S2)";
@@ -279,10 +448,16 @@ PulseTrain train_argument(const py::object& which_case, const std::optional<int>
 
 double restitution_argument(const py::object& value) {
     if (py::isinstance<py::str>(value)) {
-        if (value.cast<std::string>() == "housner") return NAN;
-        refuse("restitution: a factor in [0, 1] or 'housner' (got '" + value.cast<std::string>() + "')");
+        const std::string word = string_argument(Text{value}, "restitution");
+        if (word == "housner") return NAN;
+        refuse("restitution: a factor in [0, 1] or 'housner' (got '" + word + "')");
     }
-    const double e = value.cast<double>();
+    double e;
+    try {
+        e = number(Real{value}, "restitution");
+    } catch (const py::type_error&) {
+        throw py::type_error("restitution: expected a factor in [0, 1] or 'housner', got " + type_name(value));
+    }
     if (!(e >= 0 && e <= 1)) refuse("restitution: must be in [0, 1] or 'housner' (got " + significant(e, 17) + ")");
     return e;
 }
@@ -305,10 +480,11 @@ void tolerance_arguments(const std::optional<double>& rtol, const std::optional<
     solver.atol_alpha = in_alpha;
 }
 
-int jobs_argument(const std::optional<int>& jobs) {
+int jobs_argument(const std::optional<Whole>& given) {
+    const std::optional<long long> jobs = whole(given, "jobs");
     if (!jobs) return batch::default_threads();
     if (*jobs < 1 || *jobs > 4096) refuse("jobs: must be between 1 and 4096 (got " + std::to_string(*jobs) + ")");
-    return *jobs;
+    return static_cast<int>(*jobs);
 }
 
 namespace {

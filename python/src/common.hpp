@@ -23,6 +23,50 @@ namespace rocking::python {
 
 namespace py = pybind11;
 
+// Arguments converted in the function's body, not by pybind11's overload
+// resolution: a wrong type there is "incompatible function arguments" with the
+// whole signature, naming no argument (or "Unable to cast Python instance to
+// C++ type").  Each of these loads any object and shows in signatures as the
+// type it stands for (float, int, str, bool); number(), whole(),
+// string_argument() and flag() convert it or refuse it naming the keyword.
+struct Real {
+    py::object value;
+};
+struct Whole {
+    py::object value;
+};
+struct Text {
+    py::object value;
+};
+struct Flag {
+    py::object value;
+};
+
+// A finite double, normal or 0 (as the command line's numbers: std::stod refuses
+// a subnormal): Python's and numpy's real numbers and 0-d arrays, anything with
+// __float__ or __index__; not bool, str, bytes, complex or an array of more
+// than 0 dimensions (TypeError); nan, inf and subnormals are a ValueError,
+// "x: inf is not a finite number" as the command line's "--x: 'inf' is not a
+// finite number".
+double number(const Real& a, const std::string& name);
+std::optional<double> number(const std::optional<Real>& a, const std::string& name);
+// An integer (Python's, numpy's, anything with __index__; not bool or float),
+// a ValueError beyond the range of long long.
+long long whole(const Whole& a, const std::string& name);
+std::optional<long long> whole(const std::optional<Whole>& a, const std::string& name);
+// A str as its UTF-8 bytes (surrogates from os.fsdecode back to their bytes);
+// a NUL in it is refused.
+std::string string_argument(const Text& a, const std::string& name);
+std::optional<std::string> string_argument(const std::optional<Text>& a, const std::string& name);
+// True or False (bool, numpy.bool_, or the integers 0 and 1).
+bool flag(const Flag& a, const std::string& name);
+// The keywords a function does not take, caught by its **kwargs: a TypeError
+// as Python's own, "simulate() got an unexpected keyword argument 'aplha' (did
+// you mean 'alpha'?)".  function is the module's attribute ("simulate",
+// "Record.__init__"), shown as shown.
+void no_other_keywords(const py::kwargs& extra, const char* function, const char* shown);
+void set_module(py::module_& m);
+
 // rocking_q.Result: a dict of the command's JSON fields, also readable as
 // attributes (as scipy's OptimizeResult).  Defined once, at import.
 void define_result(py::module_& m);
@@ -76,8 +120,10 @@ records::HalfPeriods checked_half_periods(const records::Record& r);
 // The input train from case/pulses or train, as `rocking q` takes
 // --case/--pulses or --train, and the equation it names.  train is a string
 // "A:d,A:d,..." or a sequence of (amplitude, duration) pairs (an (n, 2) array).
-PulseTrain train_argument(const py::object& which_case, const std::optional<int>& pulses, const py::object& train,
-                          std::string& equation);
+PulseTrain train_argument(const std::optional<Whole>& which_case, const std::optional<Whole>& pulses,
+                          const py::object& train, std::string& equation);
+// case: an integer 1..5 (bool and float refused with a TypeError).
+int case_argument(const py::object& which_case);
 
 // --restitution: a factor in [0, 1] or "housner" (NaN).
 double restitution_argument(const py::object& value);
@@ -85,7 +131,7 @@ double restitution_argument(const py::object& value);
 void tolerance_arguments(const std::optional<double>& rtol, const std::optional<double>& atol, double alpha,
                          dynamics::SolverOptions& solver);
 // --jobs: the threads of a study, by default the cores this process may use.
-int jobs_argument(const std::optional<int>& jobs);
+int jobs_argument(const std::optional<Whole>& jobs);
 
 // GSL errors.  GSL's default handler aborts the process: from Python, the
 // interpreter with every result in it.  At import the module installs a
@@ -137,3 +183,39 @@ void init_studies(py::module_& m);
 void init_batch(py::module_& m);
 
 }  // namespace rocking::python
+
+namespace pybind11::detail {
+// Real, Whole, Text and Flag load any object (None too: the body says "alpha:
+// expected a number, got None"); std::optional of them takes None as absent.
+template <class T>
+struct any_object_caster {
+    bool load(handle src, bool) {
+        if (!src) return false;
+        value.value = reinterpret_borrow<object>(src);
+        return true;
+    }
+    static handle cast(const T& v, return_value_policy, handle) { return v.value.inc_ref(); }
+    T value;
+    operator T*() { return &value; }
+    operator T&() { return value; }
+    operator T&&() && { return std::move(value); }
+    template <typename U>
+    using cast_op_type = pybind11::detail::movable_cast_op_type<U>;
+};
+template <>
+struct type_caster<rocking::python::Real> : any_object_caster<rocking::python::Real> {
+    static constexpr auto name = const_name("float");
+};
+template <>
+struct type_caster<rocking::python::Whole> : any_object_caster<rocking::python::Whole> {
+    static constexpr auto name = const_name("int");
+};
+template <>
+struct type_caster<rocking::python::Text> : any_object_caster<rocking::python::Text> {
+    static constexpr auto name = const_name("str");
+};
+template <>
+struct type_caster<rocking::python::Flag> : any_object_caster<rocking::python::Flag> {
+    static constexpr auto name = const_name("bool");
+};
+}  // namespace pybind11::detail

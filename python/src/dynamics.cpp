@@ -77,14 +77,32 @@ std::unique_ptr<GroundInput> record_input(const records::Record& r, const std::o
     return std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
 }
 
-py::dict simulate_of(double alpha, const std::optional<double>& p, const std::optional<double>& half_height,
-                     const std::optional<double>& height, const py::object& which_case, const std::optional<int>& pulses,
-                     const py::object& train, const std::optional<double>& to, const std::optional<double>& x,
-                     const std::optional<double>& pga, const std::optional<double>& q, const std::optional<double>& rd,
-                     bool one_sine, const std::optional<double>& ap, const std::optional<double>& wp,
-                     const py::object& record, const std::string& model_name, const std::optional<std::string>& solver,
-                     const std::optional<double>& rtol, const std::optional<double>& atol, const std::string& criterion_name_,
-                     const py::object& restitution, const std::optional<double>& dt, double free_time) {
+py::dict simulate_of(const Real& alpha_given, const std::optional<Real>& p_given, const std::optional<Real>& half_height_given,
+                     const std::optional<Real>& height_given, const std::optional<Whole>& which_case,
+                     const std::optional<Whole>& pulses, const py::object& train, const std::optional<Real>& to_given,
+                     const std::optional<Real>& x_given, const std::optional<Real>& pga_given,
+                     const std::optional<Real>& q_given, const std::optional<Real>& rd_given, const Flag& one_sine_given,
+                     const std::optional<Real>& ap_given, const std::optional<Real>& wp_given, const py::object& record,
+                     const Text& model_given, const std::optional<Text>& solver_given,
+                     const std::optional<Real>& rtol_given, const std::optional<Real>& atol_given,
+                     const Text& criterion_given, const py::object& restitution, const std::optional<Real>& dt_given,
+                     const Real& free_time_given, const py::kwargs& extra) {
+    no_other_keywords(extra, "simulate", "simulate");
+    // Each argument converted, or refused naming it, in the signature's order.
+    const double alpha = number(alpha_given, "alpha");
+    const std::optional<double> p = number(p_given, "p"), half_height = number(half_height_given, "half_height"),
+                                height = number(height_given, "height"), to = number(to_given, "to"),
+                                x = number(x_given, "x"), pga = number(pga_given, "pga"), q = number(q_given, "q"),
+                                rd = number(rd_given, "rd");
+    const bool one_sine = flag(one_sine_given, "one_sine");
+    const std::optional<double> ap = number(ap_given, "ap"), wp = number(wp_given, "wp");
+    const std::string model_name = string_argument(model_given, "model");
+    const std::optional<std::string> solver = string_argument(solver_given, "solver");
+    const std::optional<double> rtol = number(rtol_given, "rtol"), atol = number(atol_given, "atol");
+    const std::string criterion_name_ = string_argument(criterion_given, "criterion");
+    const std::optional<double> dt = number(dt_given, "dt");
+    const double free_time = number(free_time_given, "free_time");
+
     Model model;
     model.block = block_of(alpha, p, half_height, height);
     if (model_name == "full") model.equation = Equation::full;
@@ -105,7 +123,7 @@ py::dict simulate_of(double alpha, const std::optional<double>& p, const std::op
     } catch (const std::invalid_argument& err) {
         refuse(std::string("criterion: ") + err.what());
     }
-    const bool has_train = !which_case.is_none() || !train.is_none(), has_record = !record.is_none();
+    const bool has_train = which_case.has_value() || !train.is_none(), has_record = !record.is_none();
     if (one_sine + has_record + has_train != 1)
         refuse("give exactly one input: case or train, one_sine=True, or record");
     if (!one_sine && (ap || wp)) refuse("ap and wp go with one_sine=True");
@@ -147,7 +165,9 @@ py::dict simulate_of(double alpha, const std::optional<double>& p, const std::op
         const char* to_name = to ? "to" : "x";
         if (!((to ? *to : *x) > 0)) refuse(std::string(to_name) + ": must be > 0");
         const double to_s = to ? *to : *x / model.block.p;
-        if (!(to_s > 0) || !std::isfinite(to_s))
+        // A finite to > 0 is its own to_s; only x / p can leave the double range (the message
+        // read *x, an empty optional, when to was given).
+        if (!to && (!(to_s > 0) || !std::isfinite(to_s)))
             refuse("x: x / p = " + significant(*x, 17) + " / " + significant(model.block.p, 17) +
                    " s is outside the range of double");
         if (pga.has_value() + q.has_value() + rd.has_value() != 1) refuse("give exactly one of pga, q and rd");
@@ -254,9 +274,11 @@ without --output: the record kernel then runs, whose last digits may differ), fr
 of free rocking after t_fin to keep.  Releases the GIL.)");
     m.def(
         "block",
-        [](double alpha, const std::optional<double>& p, const std::optional<double>& half_height,
-           const std::optional<double>& height) {
-            const Block b = block_of(alpha, p, half_height, height);
+        [](const Real& alpha, const std::optional<Real>& p, const std::optional<Real>& half_height,
+           const std::optional<Real>& height, const py::kwargs& extra) {
+            no_other_keywords(extra, "block", "block");
+            const Block b = block_of(number(alpha, "alpha"), number(p, "p"), number(half_height, "half_height"),
+                                     number(height, "height"));
             py::dict out = result();
             out["alpha"] = b.alpha;
             out["p"] = b.p;

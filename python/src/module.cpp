@@ -15,6 +15,7 @@ record_info, half_periods, peak_motion, record_synth; collapse, assess; spectrum
 batch (a manifest of jobs to a results file).
 Errors raise ValueError (RecordError for a malformed file, naming file and line), TypeError, or
 RuntimeError, with the library's message.  Long calls release the GIL.  docs/python.md)";
+    set_module(m);
     install_gsl_handler();
     define_result(m);
     init_qfactor(m);

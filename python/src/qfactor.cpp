@@ -27,6 +27,12 @@ py::object over_x(py::handle x, const std::function<double(double)>& f) {
     {
         py::gil_scoped_release unlocked;
         for (py::ssize_t k = 0; k < n && error.empty(); ++k) {
+            // As the command line's --x: q(inf) is the limit 1, but an infinite x is no input.
+            if (!std::isfinite(from[k])) {
+                error = std::string(in.ndim() == 0 ? "x" : "x[" + std::to_string(k) + "]") + ": " +
+                        (std::isnan(from[k]) ? "nan" : from[k] > 0 ? "inf" : "-inf") + " is not a finite number";
+                break;
+            }
             try {
                 to[k] = f(from[k]);
             } catch (const std::exception& e) {  // domain_error, invalid_argument: the value is refused
@@ -54,16 +60,20 @@ double x_argument(double x) {
     return x;
 }
 
-py::object q_of(py::handle x, const py::object& which_case, const std::optional<int>& pulses, const py::object& train) {
+py::object q_of(py::handle x, const std::optional<Whole>& which_case, const std::optional<Whole>& pulses, const py::object& train,
+                const py::kwargs& extra) {
+    no_other_keywords(extra, "q", "q");
     std::string equation;
     const PulseTrain t = train_argument(which_case, pulses, train, equation);
     return over_x(x, [&](double v) { return q_factor(t, v).q; });
 }
 
-py::dict q_info(double x, const py::object& which_case, const std::optional<int>& pulses, const py::object& train) {
+py::dict q_info(const Real& x_given, const std::optional<Whole>& which_case, const std::optional<Whole>& pulses,
+                const py::object& train, const py::kwargs& extra) {
+    no_other_keywords(extra, "q_info", "q_info");
     std::string equation;
     const PulseTrain t = train_argument(which_case, pulses, train, equation);
-    x_argument(x);
+    const double x = x_argument(number(x_given, "x"));
     const QFactor q = q_factor(t, x);
     const Excursion e = collapse_excursion(t, x);
     py::dict r = result();
@@ -79,15 +89,20 @@ py::dict q_info(double x, const py::object& which_case, const std::optional<int>
     return r;
 }
 
-py::dict response_of(double x, const py::object& which_case, const std::optional<int>& pulses, const py::object& train,
-                     const std::optional<double>& q_given, int steps) {
+py::dict response_of(const Real& x_given, const std::optional<Whole>& which_case, const std::optional<Whole>& pulses,
+                     const py::object& train, const std::optional<Real>& q_argument, const Whole& steps_given,
+                     const py::kwargs& extra) {
+    no_other_keywords(extra, "response", "response");
     std::string equation;
     const PulseTrain t = train_argument(which_case, pulses, train, equation);
-    x_argument(x);
+    const double x = x_argument(number(x_given, "x"));
+    const std::optional<double> q_given = number(q_argument, "q");
+    const long long steps_long = whole(steps_given, "steps");
     const bool at_collapse = !q_given;
     const double q = at_collapse ? q_factor(t, x).q : *q_given;
     if (!(q > 0)) refuse("q: must be > 0");
-    if (steps < 1 || steps > 1000000) refuse("steps: must be between 1 and 1000000");
+    if (steps_long < 1 || steps_long > 1000000) refuse("steps: must be between 1 and 1000000");
+    const int steps = static_cast<int>(steps_long);
     // As rocking response: the rows stop where theta leaves the double range.
     std::vector<ResponseState> rows;
     Excursion e;
@@ -146,8 +161,8 @@ void init_qfactor(py::module_& m) {
     closed("q2_n6", q2_n6, "Eq. 27: case 2 repeated to 6 pulses, collapse at the onset of the 7th (the design value).");
     closed("q4_n6", q4_n6, "Eq. 28 (corrected): case 4 repeated to 6 pulses.");
     m.def(
-        "q_case", [](int which, py::handle x) {
-            if (which < 1 || which > 5) refuse("case: must be 1, 2, 3, 4 or 5 (got " + std::to_string(which) + ")");
+        "q_case", [](const Whole& which_case, py::handle x) {
+            const int which = case_argument(which_case.value);
             return over_x(x, [which](double v) { return q_case(which, v); });
         },
         "case"_a, "x"_a, "The closed form q_i (eqs. 12, 15, 19, 22, 24) of case i = 1..5 over x.");

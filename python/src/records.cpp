@@ -28,10 +28,14 @@ double unit_scale(const std::string& unit) {
 // Record(accel, dt, unit=, name=): the samples times the unit's factor, as
 // the plain-text reader multiplies a file's values, so that the same numbers
 // give the same record bit for bit.
-std::shared_ptr<Record> record_from_array(py::handle accel, double dt, const std::string& unit, const std::string& name) {
+std::shared_ptr<Record> record_from_array(py::handle accel, const Real& dt_given, const Text& unit_given,
+                                          const Text& name_given, const py::kwargs& extra) {
+    no_other_keywords(extra, "Record.__init__", "Record");
+    const double dt = number(dt_given, "dt");
+    const std::string unit = string_argument(unit_given, "unit"), name = string_argument(name_given, "name");
     const double scale = unit_scale(unit);
     std::vector<double> a = real_vector(accel, "accel");
-    if (!(dt > 0) || !std::isfinite(dt)) refuse(name + ": dt must be > 0 (got " + significant(dt, 17) + ")");
+    if (!(dt > 0)) refuse(name + ": dt must be > 0 (got " + significant(dt, 17) + ")");
     if (a.size() < 2) refuse(name + ": a record needs at least 2 samples (got " + std::to_string(a.size()) + ")");
     for (std::size_t k = 0; k < a.size(); ++k) {
         const double given = a[k];
@@ -48,7 +52,11 @@ std::shared_ptr<Record> record_from_array(py::handle accel, double dt, const std
     return r;
 }
 
-std::shared_ptr<Record> read_record(py::handle path, const std::optional<std::string>& unit, const std::optional<double>& dt) {
+std::shared_ptr<Record> read_record(py::handle path, const std::optional<Text>& unit_given,
+                                    const std::optional<Real>& dt_given, const py::kwargs& extra) {
+    no_other_keywords(extra, "read_record", "read_record");
+    const std::optional<std::string> unit = string_argument(unit_given, "unit");
+    const std::optional<double> dt = number(dt_given, "dt");
     if (!unit && !dt) {
         RecordPtr r = record_argument(path, "path");
         return std::const_pointer_cast<Record>(r);
@@ -170,8 +178,32 @@ py::dict peak_motion(py::handle record) {
 }
 
 // rocking record synth: --pulse A,fp,nu,gamma[,t0] or --stochastic SEED [--params K=V,...].
-std::shared_ptr<Record> record_synth(const std::optional<std::vector<double>>& pulse, const std::optional<long long>& stochastic,
-                                     const std::optional<std::map<std::string, double>>& params, double dt, double duration) {
+// params: a dict of the command line's --params keys and numbers.
+std::optional<std::map<std::string, double>> params_argument(const py::object& given) {
+    if (given.is_none()) return std::nullopt;
+    if (!py::isinstance<py::dict>(given))
+        throw py::type_error("params: expected a dict of {key: number}, got " + std::string(py::str(py::type::of(given).attr("__name__"))));
+    std::map<std::string, double> kv;
+    static const char* keys[] = {"alpha1", "alpha2", "alpha3", "Ia", "D5_95", "tmid", "fmid", "fprime", "zeta", "fc"};
+    for (auto [key_given, value] : py::reinterpret_borrow<py::dict>(given)) {
+        const std::string key = string_argument(Text{py::reinterpret_borrow<py::object>(key_given)}, "params: a key");
+        bool known = false;
+        for (const char* k : keys) known = known || key == k;
+        if (!known) refuse("params: unknown key '" + key + "' (keys: alpha1, alpha2, alpha3, Ia, D5_95, tmid, fmid, fprime, zeta, fc)");
+        kv[key] = number(Real{py::reinterpret_borrow<py::object>(value)}, "params " + key);
+    }
+    return kv;
+}
+
+std::shared_ptr<Record> record_synth(const py::object& pulse_given, const std::optional<Whole>& stochastic_given,
+                                     const py::object& params_given, const Real& dt_given, const Real& duration_given,
+                                     const py::kwargs& extra) {
+    no_other_keywords(extra, "record_synth", "record_synth");
+    const std::optional<std::vector<double>> pulse =
+        pulse_given.is_none() ? std::nullopt : std::optional<std::vector<double>>(real_vector(pulse_given, "pulse"));
+    const std::optional<long long> stochastic = whole(stochastic_given, "stochastic");
+    const std::optional<std::map<std::string, double>> params = params_argument(params_given);
+    const double dt = number(dt_given, "dt"), duration = number(duration_given, "duration");
     if (pulse.has_value() == stochastic.has_value()) refuse("give exactly one of pulse=(A, fp, nu, gamma[, t0]) and stochastic=SEED");
     if (pulse && params) refuse("params goes with stochastic");
     if (!(dt > 0)) refuse("dt: must be > 0 (got " + significant(dt, 17) + ")");
@@ -195,15 +227,7 @@ std::shared_ptr<Record> record_synth(const std::optional<std::vector<double>>& p
         seed = static_cast<std::uint64_t>(*stochastic);
         if (params) {
             // As the command line's --params (src/cli/synth.cpp).
-            const std::map<std::string, double>& kv = *params;
-            static const char* keys[] = {"alpha1", "alpha2", "alpha3", "Ia", "D5_95", "tmid", "fmid", "fprime", "zeta", "fc"};
-            for (const auto& [key, value] : kv) {
-                bool known = false;
-                for (const char* k : keys) known = known || key == k;
-                if (!known)
-                    refuse("params: unknown key '" + key + "' (keys: alpha1, alpha2, alpha3, Ia, D5_95, tmid, fmid, fprime, zeta, fc)");
-                if (!std::isfinite(value)) refuse("params " + key + ": not a finite number");
-            }
+            const std::map<std::string, double>& kv = *params;  // keys known, values finite: params_argument
             if (kv.count("fmid")) sp.omega_mid = 2 * M_PI * kv.at("fmid");
             if (kv.count("fprime")) sp.omega_prime = 2 * M_PI * kv.at("fprime");
             if (kv.count("zeta")) sp.zeta_f = kv.at("zeta");
@@ -247,9 +271,15 @@ std::shared_ptr<Record> record_synth(const std::optional<std::vector<double>>& p
 }
 
 // --alpha of collapse, the options of its search.
-records::CollapseOptions collapse_options(double alpha, const std::string& model, const std::optional<std::string>& solver,
-                                          const std::optional<std::string>& criterion, const py::object& restitution,
-                                          const std::optional<double>& rtol, const std::optional<double>& atol) {
+records::CollapseOptions collapse_options(const Real& alpha_given, const Text& model_given,
+                                          const std::optional<Text>& solver_given,
+                                          const std::optional<Text>& criterion_given, const py::object& restitution,
+                                          const std::optional<Real>& rtol_given, const std::optional<Real>& atol_given) {
+    const double alpha = number(alpha_given, "alpha");
+    const std::string model = string_argument(model_given, "model");
+    const std::optional<std::string> solver = string_argument(solver_given, "solver"),
+                                     criterion = string_argument(criterion_given, "criterion");
+    const std::optional<double> rtol = number(rtol_given, "rtol"), atol = number(atol_given, "atol");
     if (!(alpha > 0 && alpha < 0.7)) refuse("alpha: must be in (0, 0.7) (got " + significant(alpha, 17) + ")");
     records::CollapseOptions o;
     if (model == "full") o.equation = dynamics::Equation::full, o.solver.kind = dynamics::SolverKind::dopri5;
@@ -273,10 +303,12 @@ records::CollapseOptions collapse_options(double alpha, const std::string& model
     return o;
 }
 
-py::dict collapse(py::handle record, double alpha, const std::string& model, const std::optional<std::string>& solver,
-                  const std::optional<std::string>& criterion, const py::object& restitution,
-                  const std::optional<double>& rtol, const std::optional<double>& atol) {
-    const records::CollapseOptions o = collapse_options(alpha, model, solver, criterion, restitution, rtol, atol);
+py::dict collapse(py::handle record, const Real& alpha_given, const Text& model, const std::optional<Text>& solver,
+                  const std::optional<Text>& criterion, const py::object& restitution, const std::optional<Real>& rtol,
+                  const std::optional<Real>& atol, const py::kwargs& extra) {
+    no_other_keywords(extra, "collapse", "collapse");
+    const records::CollapseOptions o = collapse_options(alpha_given, model, solver, criterion, restitution, rtol, atol);
+    const double alpha = number(alpha_given, "alpha");
     const RecordPtr r = record_argument(record, "record");
     records::CollapseResult c;
     {
@@ -296,7 +328,11 @@ py::dict collapse(py::handle record, double alpha, const std::string& model, con
     return out;
 }
 
-py::dict assess(py::handle record, double alpha, const std::optional<double>& height, const std::optional<double>& half_height) {
+py::dict assess(py::handle record, const Real& alpha_given, const std::optional<Real>& height_given,
+                const std::optional<Real>& half_height_given, const py::kwargs& extra) {
+    no_other_keywords(extra, "assess", "assess");
+    const double alpha = number(alpha_given, "alpha");
+    const std::optional<double> height = number(height_given, "height"), half_height = number(half_height_given, "half_height");
     if (height.has_value() == half_height.has_value()) refuse("give exactly one of height and half_height");
     dynamics::Block b{};
     try {

@@ -27,7 +27,15 @@ py::object null_or(bool has, double v) { return has ? py::object(py::float_(v)) 
 std::vector<double> values_in(const py::object& given, const std::string& what, double lo, double hi,
                               const std::string& range, std::size_t most) {
     std::vector<double> v;
-    if (py::isinstance<py::float_>(given) || py::isinstance<py::int_>(given)) v = {given.cast<double>()};
+    const py::module_ np = py::module_::import("numpy");
+    const bool one = (PyFloat_Check(given.ptr()) || PyLong_Check(given.ptr()) || PyComplex_Check(given.ptr()) ||
+                      py::isinstance(given, np.attr("generic")) ||
+                      (py::isinstance<py::array>(given) && py::reinterpret_borrow<py::array>(given).ndim() == 0));
+    if (given.is_none() || PyBool_Check(given.ptr()) || py::isinstance(given, np.attr("bool_")) ||
+        py::isinstance<py::str>(given) || py::isinstance<py::bytes>(given) || (!one && !py::isinstance<py::iterable>(given)))
+        throw py::type_error(what + ": expected a number or a list of numbers, got " +
+                             std::string(py::str(py::type::of(given).attr("__name__"))));
+    if (one) v = {number(Real{given}, what)};  // a numpy scalar or a 0-d array is one number too
     else v = real_vector(given, what);
     if (v.empty() || v.size() > most) refuse(what + ": from 1 to " + std::to_string(most) + " values");
     for (double x : v)
@@ -57,15 +65,18 @@ py::object boundary(const studies::Interval& in, bool lower) {
     return std::move(d);
 }
 
-py::dict spectrum(py::handle record, const py::object& alpha, double p_min, double p_max, int points,
-                  const std::optional<int>& jobs) {
+py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min, const Real& p_max, const Whole& points,
+                  const std::optional<Whole>& jobs, const py::kwargs& extra) {
+    no_other_keywords(extra, "spectrum", "spectrum");
     const std::vector<double> alphas = values_in(alpha, "alpha", 0, 0.7, "(0, 0.7)", 20);
     studies::SpectrumOptions o;
-    o.p_min = p_min, o.p_max = p_max, o.points = points;
+    o.p_min = number(p_min, "p_min"), o.p_max = number(p_max, "p_max");
+    const long long points_given = whole(points, "points");
+    if (points_given < 2 || points_given > 100000) refuse("points: must be between 2 and 100000");
+    o.points = static_cast<int>(points_given);
     if (!(o.p_min >= 0.01 && o.p_min <= 1000)) refuse("p_min: must be in [0.01, 1000] rad/s");
     if (!(o.p_max >= 0.01 && o.p_max <= 1000)) refuse("p_max: must be in [0.01, 1000] rad/s");
     if (!(o.p_max > o.p_min)) refuse("p_max: must be above p_min (" + g7(o.p_min) + " rad/s)");
-    if (o.points < 2 || o.points > 100000) refuse("points: must be between 2 and 100000");
     const int threads = jobs_argument(jobs);
     const RecordPtr r = record_argument(record, "record");
     std::vector<Study> found;
@@ -192,8 +203,12 @@ py::object fit(const BlockFragility& f) {
     return std::move(d);
 }
 
-int bootstrap_argument(const std::optional<int>& bootstrap, const std::optional<long long>& seed, std::uint64_t& seed_out) {
-    const int resamples = bootstrap.value_or(0);
+int bootstrap_argument(const std::optional<Whole>& bootstrap_given, const std::optional<Whole>& seed_given,
+                       std::uint64_t& seed_out) {
+    const std::optional<long long> bootstrap = whole(bootstrap_given, "bootstrap"), seed = whole(seed_given, "seed");
+    // Out of int's range, as just out of the callers' (which refuse it in their own words).
+    const long long b = bootstrap.value_or(0);
+    const int resamples = b < 0 ? -1 : b > 100000 ? 100001 : static_cast<int>(b);
     if (seed && !bootstrap) refuse("seed goes with bootstrap");
     if (resamples > 0 && !seed) refuse("bootstrap needs seed (the interval is reproducible only from a stated seed)");
     if (seed) {
@@ -204,16 +219,18 @@ int bootstrap_argument(const std::optional<int>& bootstrap, const std::optional<
     return resamples;
 }
 
-py::dict fragility(const py::object& records_given, const py::object& alpha, const py::object& p, double q_max,
-                   int points, const std::optional<int>& bootstrap, const std::optional<long long>& seed,
-                   const std::optional<int>& jobs) {
+py::dict fragility(const py::object& records_given, const py::object& alpha, const py::object& p, const Real& q_max,
+                   const Whole& points, const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed,
+                   const std::optional<Whole>& jobs, const py::kwargs& extra) {
+    no_other_keywords(extra, "fragility", "fragility");
     const std::vector<double> alphas = values_in(alpha, "alpha", 0, 0.7, "(0, 0.7)", 50);
     const std::vector<double> ps = values_in(p, "p", 0.01, 1000, "(0.01, 1000) rad/s", 50);
     studies::FragilityStudyOptions o;
-    o.ida.q_max = q_max;
+    o.ida.q_max = number(q_max, "q_max");
     if (!(o.ida.q_max > o.ida.q_min && o.ida.q_max <= 1e4)) refuse("q_max: must be in (1, 10000]");
-    o.ida.points = points;
-    if (o.ida.points < 2 || o.ida.points > 10000) refuse("points: must be between 2 and 10000");
+    const long long points_given = whole(points, "points");
+    if (points_given < 2 || points_given > 10000) refuse("points: must be between 2 and 10000");
+    o.ida.points = static_cast<int>(points_given);
     o.resamples = bootstrap_argument(bootstrap, seed, o.seed);
     if (o.resamples < 0 || o.resamples > 100000) refuse("bootstrap: must be between 0 and 100000");
     o.threads = jobs_argument(jobs);
@@ -312,9 +329,13 @@ py::array_t<int> counts(const std::array<int, studies::kHalfPeriods>& c) {
     return a;
 }
 
-py::dict eq27(const py::object& records_given, const py::object& alpha, double p_min, double p_max, int p_points,
-              double q_max, const std::optional<int>& bootstrap, const std::optional<long long>& seed,
-              const std::optional<int>& jobs) {
+py::dict eq27(const py::object& records_given, const py::object& alpha, const Real& p_min_given, const Real& p_max_given,
+              const Whole& p_points_given, const Real& q_max_given, const std::optional<Whole>& bootstrap,
+              const std::optional<Whole>& seed, const std::optional<Whole>& jobs, const py::kwargs& extra) {
+    no_other_keywords(extra, "eq27", "eq27");
+    const double p_min = number(p_min_given, "p_min"), p_max = number(p_max_given, "p_max");
+    const long long p_points_long = whole(p_points_given, "p_points");
+    const double q_max = number(q_max_given, "q_max");
     studies::Eq27Options o;
     if (!alpha.is_none()) o.grid.alphas = values_in(alpha, "alpha", 0, 0.7, "(0, 0.7)", 50);
     auto bounded = [](double v, const std::string& what, double lo, double hi, const std::string& range) {
@@ -324,8 +345,9 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, double p
     o.grid.p_min = bounded(p_min, "p_min", 0.01, 1000, "(0.01, 1000] rad/s");
     o.grid.p_max = bounded(p_max, "p_max", 0.01, 1000, "(0.01, 1000] rad/s");
     if (o.grid.p_max < o.grid.p_min) refuse("p_max: must not be below p_min (" + g7(o.grid.p_min) + ")");
+    if (p_points_long < 1 || p_points_long > 1000) refuse("p_points: must be between 1 and 1000");
+    const int p_points = static_cast<int>(p_points_long);
     o.grid.p_points = p_points;
-    if (p_points < 1 || p_points > 1000) refuse("p_points: must be between 1 and 1000");
     if (p_points > 1 && o.grid.p_max == o.grid.p_min) refuse("p_points: more than 1 needs p_max above p_min");
     o.ida.q_max = bounded(q_max, "q_max", o.ida.q_min, 1e4, "(1, 10000]");
     o.bootstrap.resamples = bootstrap_argument(bootstrap, seed, o.bootstrap.seed);

@@ -33,7 +33,7 @@ def test_record_samples_are_a_1d_real_array(bad, error, message):
 def test_record_dt_and_unit_are_checked():
     with pytest.raises(ValueError, match=r"^named: dt must be > 0 \(got 0\)$"):
         rq.Record(GOOD, 0.0, name="named")
-    with pytest.raises(ValueError, match=r"^named: dt must be > 0 \(got nan\)$"):
+    with pytest.raises(ValueError, match=r"^dt: nan is not a finite number$"):
         rq.Record(GOOD, float("nan"), name="named")
     with pytest.raises(ValueError, match=r"^unit: 'mg' is not a unit it knows \(g, m/s2, cm/s2\)$"):
         rq.Record(GOOD, 0.01, unit="mg")

@@ -161,3 +161,215 @@ def test_a_path_with_a_nul_is_refused_not_cut_short(tmp_path):
         rq.record_info(str(two).encode() + b"\0")
     with pytest.raises(ValueError, match=r"^records\[1\]: embedded null byte$"):
         rq.fragility([rq.Record([0.1, 0.2, 0.3, 0.4], 0.01), str(two) + "\0"], alpha=0.1, p=2)
+
+
+# ---- Arguments: each refused naming its keyword ----
+
+R = rq.Record(np.sin(np.arange(400) * 0.07) * 0.3, 0.01, unit="g", name="wave")
+
+# Each function with arguments that run, and its scalar numeric keywords.
+CALLS = [
+    (rq.simulate, dict(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, dt=None), ["alpha", "p", "x", "rd"]),
+    (rq.simulate, dict(alpha=0.15, height=3, case=2, to=0.25, q=2, dt=0.01), ["height", "to", "q", "dt", "free_time"]),
+    (rq.simulate, dict(alpha=0.15, half_height=1, case=2, x=0.5, pga=0.5, solver="dopri5", rtol=1e-6, atol=1e-7),
+     ["half_height", "pga", "rtol", "atol", "restitution"]),
+    (rq.simulate, dict(alpha=0.15, p=2, one_sine=True, ap=0.45, wp=6), ["ap", "wp"]),
+    (rq.block, dict(alpha=0.15, p=2), ["alpha", "p"]),
+    (rq.block, dict(alpha=0.15, height=3), ["height"]),
+    (rq.q_info, dict(x=0.5, case=2), ["x"]),
+    (rq.response, dict(x=0.5, case=2, q=3.0), ["x", "q"]),
+    (rq.collapse, dict(record=R, alpha=0.15, solver="dopri5", rtol=1e-6, atol=1e-7, restitution=0.9),
+     ["alpha", "rtol", "atol", "restitution"]),
+    (rq.assess, dict(record=R, alpha=0.15, height=3), ["alpha", "height"]),
+    (rq.assess, dict(record=R, alpha=0.15, half_height=1), ["half_height"]),
+    (rq.spectrum, dict(record=R, alpha=0.15, p_min=1, p_max=2, points=2), ["alpha", "p_min", "p_max"]),
+    (rq.fragility, dict(records=[R], alpha=0.15, p=2, q_max=2, points=2), ["alpha", "p", "q_max"]),
+    (rq.eq27, dict(records=[R], alpha=0.15, p_min=1, p_max=2, p_points=1, q_max=2), ["alpha", "p_min", "p_max", "q_max"]),
+    (rq.record_synth, dict(pulse=(0.5, 1, 0.3, 2.5), dt=0.01, duration=5), ["dt", "duration"]),
+    (rq.Record, dict(accel=[0.1, 0.2, 0.3], dt=0.01), ["dt"]),
+]
+NUMBERS = [(f, kwargs, name) for f, kwargs, names in CALLS for name in names]
+
+
+def named(f):
+    return "Record" if f is rq.Record else f.__name__
+
+
+@pytest.mark.parametrize("f,kwargs,name", NUMBERS, ids=["%s-%s" % (named(f), n) for f, _, n in NUMBERS])
+def test_a_number_that_is_not_finite_is_refused_naming_it(f, kwargs, name):
+    # inf was taken (x = inf gave q = 1, dt = inf kept one row) or refused in other words
+    # ("block: p must be > 0" for p = inf; to = inf read an empty optional's value).
+    f(**kwargs)  # the call runs as given
+    for value, text in [(np.inf, "inf"), (-np.inf, "-inf"), (np.nan, "nan")]:
+        with pytest.raises(ValueError, match=r"^%s: %s is not a finite number$" % (name, text)):
+            f(**dict(kwargs, **{name: value}))
+
+
+@pytest.mark.parametrize("f,kwargs,name", NUMBERS, ids=["%s-%s" % (named(f), n) for f, _, n in NUMBERS])
+def test_a_number_of_the_wrong_type_is_refused_naming_it(f, kwargs, name):
+    # A string, a list or a bool where a number goes: pybind11's "incompatible function
+    # arguments" (no argument named) or "Unable to cast Python instance to C++ type".
+    # A study's alpha and p take a list; every other number is one number.
+    one_number = (name not in ("alpha", "p") or f in (rq.simulate, rq.block, rq.collapse, rq.assess)) \
+        and name != "restitution"  # test_restitution_and_one_sine_are_named
+    for value, shown in [("0.15", "str '0.15'"), (True, "bool"), (1 + 2j, "complex"), (object(), "object")]:
+        if name == "restitution" and value == "0.15":  # a string is 'housner'
+            with pytest.raises(ValueError, match=r"^restitution: a factor in \[0, 1\] or 'housner' \(got '0.15'\)$"):
+                f(**dict(kwargs, **{name: value}))
+            continue
+        with pytest.raises(TypeError, match=r"^%s: expected a (real )?(number|factor)" % name) as e:
+            f(**dict(kwargs, **{name: value}))
+        assert shown.split()[0] in str(e.value), str(e.value)
+    if one_number:
+        for value, shown in [([0.5], "list"), (np.array([0.5]), r"an array of shape \(1,\)")]:
+            with pytest.raises(TypeError, match=r"^%s: expected a number, got %s$" % (name, shown)):
+                f(**dict(kwargs, **{name: value}))
+    # Numbers of other Python and numpy types are numbers.
+    base = kwargs[name] if name in kwargs else 1.0
+    for value in (np.float32(base), np.float64(base), np.array(base)):
+        f(**dict(kwargs, **{name: value}))
+
+
+def test_the_cli_refuses_the_same_numbers_in_the_same_words(tmp_path):
+    path = tmp_path / "wave.txt"
+    path.write_text("".join("%.17g\n" % v for v in R.in_g()))
+    for words, call in [
+        (["q", "--case", 2, "--x", "inf"], lambda: rq.q_info(np.inf, case=2)),
+        (["response", "--case", 2, "--x", 0.5, "--q", "nan"], lambda: rq.response(0.5, case=2, q=np.nan)),
+        (["simulate", "--alpha", 0.15, "--p", 2, "--case", 2, "--to", "inf", "--rd", 0.9],
+         lambda: rq.simulate(alpha=0.15, p=2, case=2, to=np.inf, rd=0.9)),
+        (["simulate", "--alpha", 0.15, "--p", 2, "--one-sine", "--ap", 0.45, "--wp", "inf"],
+         lambda: rq.simulate(alpha=0.15, p=2, one_sine=True, ap=0.45, wp=np.inf)),
+        (["record", "info", path, "--unit", "g", "--dt", "inf"], lambda: rq.read_record(path, unit="g", dt=np.inf)),
+        (["collapse", path, "--unit", "g", "--dt", 0.01, "--alpha", "nan"], lambda: rq.collapse(R, alpha=np.nan)),
+        (["assess", path, "--unit", "g", "--dt", 0.01, "--alpha", 0.15, "--height", "inf"],
+         lambda: rq.assess(R, alpha=0.15, height=np.inf)),
+        (["spectrum", path, "--unit", "g", "--dt", 0.01, "--alpha", 0.15, "--p-min", "nan"],
+         lambda: rq.spectrum(R, alpha=0.15, p_min=np.nan)),
+        (["eq27", path, "--unit", "g", "--dt", 0.01, "--q-max", "inf"], lambda: rq.eq27([R], q_max=np.inf)),
+        (["record", "synth", "--pulse", "0.5,1,0.3,2.5", "--dt", "inf", "--duration", 5],
+         lambda: rq.record_synth(pulse=(0.5, 1, 0.3, 2.5), dt=np.inf, duration=5)),
+    ]:
+        message, code = cli_error(*words)
+        assert code == 2
+        # "--p-min: 'nan' is not a finite number" is "p_min: nan is not a finite number".
+        flag, _, rest = message.partition(": ")
+        expected = flag[2:].replace("-", "_") + ": " + rest.replace("'", "")
+        with pytest.raises(ValueError) as e:
+            call()
+        assert str(e.value) == expected, words
+
+
+@pytest.mark.parametrize("f,kwargs,name", [
+    (rq.q, dict(x=0.5, case=2), "pulses"),
+    (rq.q_info, dict(x=0.5, case=2), "pulses"),
+    (rq.simulate, dict(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, dt=None), "pulses"),
+    (rq.response, dict(x=0.5, case=2), "steps"),
+    (rq.spectrum, dict(record=R, alpha=0.15, p_min=1, p_max=2, points=2), "points"),
+    (rq.spectrum, dict(record=R, alpha=0.15, p_min=1, p_max=2, points=2), "jobs"),
+    (rq.fragility, dict(records=[R], alpha=0.15, p=2, q_max=2, points=2), "points"),
+    (rq.fragility, dict(records=[R], alpha=0.15, p=2, q_max=2, points=2, bootstrap=2), "seed"),
+    (rq.eq27, dict(records=[R], alpha=0.15, p_points=1, q_max=2), "p_points"),
+    (rq.eq27, dict(records=[R], alpha=0.15, p_points=1, q_max=2, seed=3), "bootstrap"),
+    (rq.record_synth, dict(dt=0.01, duration=5), "stochastic"),
+])
+def test_a_whole_number_of_the_wrong_type_is_refused_naming_it(f, kwargs, name):
+    good = {"pulses": 3, "steps": 4, "points": 2, "jobs": 1, "seed": 5, "p_points": 1, "bootstrap": 2,
+            "stochastic": 3}[name]
+    f(**dict(kwargs, **{name: good}))
+    f(**dict(kwargs, **{name: np.int32(good)}))
+    for value, shown in [(2.5, "float"), (float(good), "float"), ("2", "str"), (True, "bool"), ([2], "list")]:
+        with pytest.raises(TypeError, match=r"^%s: expected a whole number, got %s" % (name, shown)):
+            f(**dict(kwargs, **{name: value}))
+    with pytest.raises(ValueError, match=r"^%s: 1180591620717411303424 is out of range$" % name):
+        f(**dict(kwargs, **{name: 2 ** 70}))
+
+
+def test_a_case_is_a_whole_number_1_to_5():
+    assert rq.q(0.5, case=np.int64(2)) == rq.q(0.5, case=2)
+    assert rq.q_case(np.int8(2), 0.5) == rq.q2(0.5)
+    for value in (2 ** 40, 2 ** 70, -1):
+        with pytest.raises(ValueError, match=r"^case: must be 1, 2, 3, 4 or 5 \(got %d\)$" % value):
+            rq.q(0.5, case=value)
+        with pytest.raises(ValueError, match=r"^case: must be 1, 2, 3, 4 or 5 \(got %d\)$" % value):
+            rq.q_case(value, 0.5)
+    for value in (2.0, "2", True):
+        with pytest.raises(TypeError, match=r"^case: expected an integer 1..5"):
+            rq.q(0.5, case=value)
+        with pytest.raises(TypeError, match=r"^case: expected an integer 1..5"):
+            rq.q_case(value, 0.5)
+
+
+@pytest.mark.parametrize("f,kwargs,name", [
+    (rq.simulate, dict(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, dt=None), "model"),
+    (rq.simulate, dict(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, dt=None), "solver"),
+    (rq.simulate, dict(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, dt=None), "criterion"),
+    (rq.collapse, dict(record=R, alpha=0.15), "model"),
+    (rq.collapse, dict(record=R, alpha=0.15), "solver"),
+    (rq.collapse, dict(record=R, alpha=0.15), "criterion"),
+    (rq.Record, dict(accel=[0.1, 0.2, 0.3], dt=0.01), "unit"),
+    (rq.Record, dict(accel=[0.1, 0.2, 0.3], dt=0.01), "name"),
+    (rq.read_record, dict(path="x.txt", dt=0.01), "unit"),
+])
+def test_a_string_of_the_wrong_type_or_with_a_nul_is_refused_naming_it(f, kwargs, name):
+    for value, shown in [(3, "int"), (b"full", "bytes"), (["full"], "list")]:
+        with pytest.raises(TypeError, match=r"^%s: expected a string, got %s$" % (name, shown)):
+            f(**dict(kwargs, **{name: value}))
+    # A NUL cut the message short ("solver: unknown solver 'exact"), or went into a record's name.
+    with pytest.raises(ValueError, match=r"^%s: embedded null character$" % name):
+        f(**dict(kwargs, **{name: "exact\0x"}))
+
+
+def test_restitution_and_one_sine_are_named():
+    with pytest.raises(TypeError, match=r"^restitution: expected a factor in \[0, 1\] or 'housner', got NoneType$"):
+        rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, restitution=None)
+    with pytest.raises(TypeError, match=r"^restitution: expected a factor in \[0, 1\] or 'housner', got list$"):
+        rq.collapse(R, alpha=0.15, restitution=[0.9])
+    with pytest.raises(TypeError, match=r"^one_sine: expected True or False, got str 'yes'$"):
+        rq.simulate(alpha=0.15, p=2, one_sine="yes", ap=0.45, wp=6)
+    assert rq.simulate(alpha=0.15, p=2, one_sine=np.bool_(True), ap=0.45, wp=6, dt=None).input.startswith("one-sine")
+
+
+@pytest.mark.parametrize("f,kwargs,typo,meant", [
+    (rq.simulate, dict(alpha=0.15, p=2, case=2, x=0.5, rd=0.9), "aplha", "alpha"),
+    (rq.simulate, dict(alpha=0.15, p=2, case=2, x=0.5, rd=0.9), "restitusion", "restitution"),
+    (rq.block, dict(alpha=0.15, p=2), "hieght", "height"),
+    (rq.q, dict(x=0.5, case=2), "pulse", "pulses"),
+    (rq.q_info, dict(x=0.5, case=2), "trian", "train"),
+    (rq.response, dict(x=0.5, case=2), "step", "steps"),
+    (rq.Record, dict(accel=[0.1, 0.2], dt=0.01), "units", "unit"),
+    (rq.read_record, dict(path="x.txt"), "dtt", "dt"),
+    (rq.record_synth, dict(stochastic=1, dt=0.01, duration=5), "param", "params"),
+    (rq.collapse, dict(record=R, alpha=0.15), "criterium", "criterion"),
+    (rq.assess, dict(record=R, alpha=0.15, height=3), "halfheight", "half_height"),
+    (rq.spectrum, dict(record=R, alpha=0.15), "pmax", "p_max"),
+    (rq.fragility, dict(records=[R], alpha=0.15, p=2), "qmax", "q_max"),
+    (rq.eq27, dict(records=[R]), "boostrap", "bootstrap"),
+])
+def test_a_keyword_typo_is_named_with_the_keyword_meant(f, kwargs, typo, meant):
+    # pybind11 said "incompatible function arguments" and printed the whole signature.
+    with pytest.raises(TypeError, match=r"^%s\(\) got an unexpected keyword argument '%s' \(did you mean '%s'\?\)$"
+                                        % (named(f), typo, meant)):
+        f(**dict(kwargs, **{typo: 1}))
+    with pytest.raises(TypeError, match=r"^%s\(\) got an unexpected keyword argument 'zzzzz'$" % named(f)):
+        f(**dict(kwargs, zzzzz=1))
+
+
+def test_x_in_an_array_must_be_finite():
+    # q(inf) was 1.0 (the limit), where the command line refuses --x inf.
+    for f in (lambda x: rq.q(x, case=2), rq.q1, rq.q2_n6, lambda x: rq.q_case(3, x)):
+        with pytest.raises(ValueError, match=r"^x\[2\]: inf is not a finite number$"):
+            f(np.array([0.5, 1.0, np.inf]))
+        with pytest.raises(ValueError, match=r"^x: nan is not a finite number$"):
+            f(np.nan)
+
+
+def test_a_subnormal_step_is_refused_as_the_command_line_refuses_it():
+    # dt = 1e-320 made a record whose half-periods came out 0 and 3e-320 s; the readers and the
+    # command line refuse a step below the smallest normal double.
+    for call in (lambda: rq.Record([0.1, 0.2, 0.3, 0.4], 1e-320),
+                 lambda: rq.read_record("x.txt", unit="g", dt=1e-320),
+                 lambda: rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, dt=1e-310)):
+        with pytest.raises(ValueError, match=r"^dt: 1e-3[12]0 is below the smallest normal double, "
+                                             r"2.2250738585072014e-308$"):
+            call()
