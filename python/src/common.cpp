@@ -18,6 +18,8 @@
 
 namespace rocking::python {
 
+using namespace py::literals;
+
 namespace {
 
 // The Result class, in Python: a dict (the command's JSON, field for field)
@@ -290,7 +292,24 @@ py::array_t<double> real_array(py::handle obj, const std::string& what) {
     if (!real)
         throw py::type_error(what + ": dtype " + std::string(py::str(a.dtype())) +
                              " is not a real number type; give float64 (or integers, or float32)");
-    return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+    // A masked array's mask would be dropped, and the values under it used.
+    const py::module_ np = py::module_::import("numpy");
+    if (py::isinstance(obj, np.attr("ma").attr("MaskedArray"))) {
+        const long long masked = np.attr("ma").attr("count_masked")(obj).cast<long long>();
+        if (masked)
+            refuse(what + ": a masked array with " + std::to_string(masked) + " masked element" + (masked == 1 ? "" : "s") +
+                   "; give " + what + ".filled(value) or " + what + ".compressed()");
+    }
+    // As float64 in C order; numpy's own MemoryError (a broadcast view of 10^12 elements) with the
+    // argument's name: pybind11's ensure() swallowed it ("cannot create a pybind11::array_t from a nullptr").
+    try {
+        return np.attr("asarray")(a, "dtype"_a = "float64", "order"_a = "C");
+    } catch (py::error_already_set& e) {
+        if (!e.matches(PyExc_MemoryError)) throw;
+        const std::string message = what + ": " + py::str(e.value()).cast<std::string>();
+        PyErr_SetString(PyExc_MemoryError, message.c_str());
+        throw py::error_already_set();
+    }
 }
 
 std::vector<double> real_vector(py::handle obj, const std::string& what) {

@@ -373,3 +373,35 @@ def test_a_subnormal_step_is_refused_as_the_command_line_refuses_it():
         with pytest.raises(ValueError, match=r"^dt: 1e-3[12]0 is below the smallest normal double, "
                                              r"2.2250738585072014e-308$"):
             call()
+
+
+# ---- Arrays ----
+
+def test_an_array_too_large_to_convert_is_a_memory_error_naming_it():
+    # 10^12 samples as a broadcast view (8 bytes of memory): its float64 copy needs 7.3 TiB.
+    # numpy's MemoryError was swallowed: "cannot create a pybind11::array_t from a nullptr".
+    huge = np.broadcast_to(np.float32(0.5), (10 ** 12,))
+    for call, name in [(lambda: rq.q(huge, case=2), "x"), (lambda: rq.q1(huge), "x"),
+                       (lambda: rq.Record(huge, 0.01), "accel"), (lambda: rq.spectrum(R, alpha=huge), "alpha")]:
+        with pytest.raises(MemoryError, match=r"^%s: Unable to allocate 7.28 TiB" % name):
+            call()
+
+
+def test_a_masked_array_with_masked_elements_is_refused():
+    # The mask was dropped: q over [0.5, --] gave q(0.5) and the q of the value hidden under the mask.
+    x = np.ma.masked_array([0.5, 1.0, 2.0], mask=[False, True, False])
+    with pytest.raises(ValueError, match=r"^x: a masked array with 1 masked element; give x.filled\(value\) or "
+                                         r"x.compressed\(\)$"):
+        rq.q(x, case=2)
+    with pytest.raises(ValueError, match=r"^accel: a masked array with 1 masked element"):
+        rq.Record(x, 0.01)
+    nothing_masked = np.ma.masked_array([0.5, 1.0], mask=False)
+    assert rq.q(nothing_masked, case=2).tolist() == rq.q([0.5, 1.0], case=2).tolist()
+
+
+def test_the_records_of_a_study_are_a_list():
+    for given, shown in [(None, "None"), (3, "int")]:
+        with pytest.raises(TypeError, match=r"^records: expected a list of records or paths, got %s$" % shown):
+            rq.fragility(given, alpha=0.1, p=2)
+        with pytest.raises(TypeError, match=r"^records: expected a list of records or paths, got %s$" % shown):
+            rq.eq27(given)
