@@ -216,8 +216,9 @@ std::optional<std::string> string_argument(const std::optional<Text>& a, const s
 bool flag(const Flag& a, const std::string& name) {
     if (is_bool(a.value)) return PyObject_IsTrue(a.value.ptr()) == 1;
     if (PyLong_Check(a.value.ptr())) {
-        const long long v = a.value.cast<long long>();
-        if (v == 0 || v == 1) return v == 1;
+        int overflow = 0;
+        const long long v = PyLong_AsLongLongAndOverflow(a.value.ptr(), &overflow);
+        if (!overflow && (v == 0 || v == 1)) return v == 1;
     }
     throw py::type_error(name + ": expected True or False, got " + given(a.value));
 }

@@ -327,6 +327,9 @@ def test_restitution_and_one_sine_are_named():
         rq.collapse(R, alpha=0.15, restitution=[0.9])
     with pytest.raises(TypeError, match=r"^one_sine: expected True or False, got str 'yes'$"):
         rq.simulate(alpha=0.15, p=2, one_sine="yes", ap=0.45, wp=6)
+    for value in (2, -1, 2 ** 70):  # 2**70 found by a fuzzer: "Unable to cast Python instance to C++ type"
+        with pytest.raises(TypeError, match=r"^one_sine: expected True or False, got int$"):
+            rq.simulate(alpha=0.15, p=2, one_sine=value, ap=0.45, wp=6)
     assert rq.simulate(alpha=0.15, p=2, one_sine=np.bool_(True), ap=0.45, wp=6, dt=None).input.startswith("one-sine")
 
 
