@@ -19,12 +19,13 @@ namespace rocking::python {
 
 namespace {
 
-py::dict run(const std::string& manifest_path, const std::string& output, const std::optional<int>& jobs,
-             bool resume) {
+py::dict run(const Text& manifest_arg, const Text& output_arg, const std::optional<Whole>& jobs, const Flag& resume) {
+    const std::string manifest_path = string_argument(manifest_arg, "manifest");
+    const std::string output = string_argument(output_arg, "output");
     if (output.empty()) refuse("output: an empty file name (the results of a batch go to a file)");
     batch::EngineOptions o;
     o.output = output;
-    o.resume = resume;
+    o.resume = flag(resume, "resume");
     o.quiet = true;
     o.threads = jobs_argument(jobs);
     batch::BatchOutcome outcome;
@@ -42,8 +43,8 @@ py::dict run(const std::string& manifest_path, const std::string& output, const 
         outcome = batch::run_batch(plan, o, nullptr);
     }
     py::dict r = result();
-    r["manifest"] = manifest_path;
-    r["output"] = output;
+    r["manifest"] = text(manifest_path);
+    r["output"] = text(output);
     r["jobs"] = outcome.jobs;
     r["failed"] = outcome.failed;
     r["ran"] = outcome.ran;
@@ -56,7 +57,7 @@ py::dict run(const std::string& manifest_path, const std::string& output, const 
 
 void init_batch(py::module_& m) {
     using namespace pybind11::literals;
-    m.def("batch", &run, "manifest"_a, py::kw_only(), "output"_a, "jobs"_a = py::none(), "resume"_a = false,
+    m.def("batch", gsl_checked(&run), "manifest"_a, py::kw_only(), "output"_a, "jobs"_a = py::none(), "resume"_a = false,
           R"(`rocking batch MANIFEST --output FILE [--jobs N] [--resume]`: every job of the CSV manifest run
 on this process's threads, one results row per job in the manifest's order in `output` (CSV,
 docs/batch.md); a job that fails has its error in its row and the rest run.  Returns jobs,

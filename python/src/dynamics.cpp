@@ -50,17 +50,6 @@ std::string rows_refusal(const Model& model, const GroundInput& input, const Sim
     return text;
 }
 
-void refuse_overflow(const SimulationResult& r, double alpha) {
-    auto check = [&](const char* what, double value, double in_rad) {
-        if (std::isfinite(value)) return;
-        char text[240];
-        std::snprintf(text, sizeof text, "%s overflows a double (%.6g rad at alpha = %g): the rotation is beyond "
-                      "what this output can express", what, in_rad, alpha);
-        throw std::runtime_error(text);
-    };
-    check("max |theta|/alpha during the input", r.max_abs_theta_input / alpha, r.max_abs_theta_input);
-    if (!r.overturned_during_input) check("theta(t_fin)/alpha", r.theta_at_tfin / alpha, r.theta_at_tfin);
-}
 
 // The record as simulate --record reads it, scaled to scaled_to g if given:
 // built without the GIL, the Record being immutable.
@@ -196,7 +185,7 @@ py::dict simulate_of(const Real& alpha_given, const std::optional<Real>& p_given
         too_many_rows = options.record_dt > 0 ? rows_refusal(model, *input, options) : "";
         if (too_many_rows.empty()) {
             r = simulate(model, *input, options);
-            refuse_overflow(r, alpha);
+            dynamics::refuse_overflow_in_alpha(r, alpha);
         }
     }
     if (!too_many_rows.empty()) refuse(too_many_rows);

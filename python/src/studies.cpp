@@ -314,14 +314,9 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
 
 // ---- rocking eq27 ----
 
-const char* kWilsonNote =
-    "the Wilson interval takes every (record, block) case as independent; the cases of one record are "
-    "correlated, so it misstates the uncertainty (as a rule too narrow): quote the bootstrap over records";
-const char* kNoBootstrap = "bootstrap over records not run (--bootstrap K --seed S)";
-const char* kVerdict =
-    "non-conservative: the record overturns the block at a q below eq. 27's at x = p to_k "
-    "(collapse q < q2_n6(p to_k)); a record that never overturns the block up to q_max is censored "
-    "and counted as conservative";
+using studies::kEq27NoBootstrap;
+using studies::kEq27Verdict;
+using studies::kEq27WilsonNote;
 
 py::array_t<int> counts(const std::array<int, studies::kHalfPeriods>& c) {
     py::array_t<int> a(studies::kHalfPeriods);
@@ -375,10 +370,10 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const Re
     out["ida"] = o.ida.describe_grid();
     out["q_max"] = o.ida.q_max;
     out["blocks"] = o.grid.describe();
-    out["verdict"] = kVerdict;
+    out["verdict"] = kEq27Verdict;
     py::dict wilson = result();
     wilson["level"] = s.level;
-    wilson["note"] = kWilsonNote;
+    wilson["note"] = kEq27WilsonNote;
     out["wilson"] = wilson;
     out["bootstrap_run"] = boot;
     if (boot) {
@@ -390,7 +385,7 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const Re
         out["bootstrap"] = b;
     } else {
         out["bootstrap"] = py::none();
-        out["bootstrap_note"] = kNoBootstrap;
+        out["bootstrap_note"] = kEq27NoBootstrap;
     }
     out["records"] = s.records;
     py::list files;
