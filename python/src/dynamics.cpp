@@ -14,14 +14,6 @@ namespace {
 
 using namespace rocking::dynamics;
 
-// As simulate --output: its rows are held in memory, at most 10^6 of them.
-constexpr double kMaxRows = 1e6;
-
-double up_to_three_digits(double v) {
-    const double unit = std::pow(10.0, std::floor(std::log10(v)) - 2);
-    return std::ceil(v / unit) * unit;
-}
-
 Block block_of(double alpha, const std::optional<double>& p, const std::optional<double>& half_height,
                const std::optional<double>& height) {
     if (p.has_value() + half_height.has_value() + height.has_value() != 1)
@@ -39,14 +31,14 @@ Block block_of(double alpha, const std::optional<double>& p, const std::optional
 // rotations that overflow once divided by alpha.
 std::string rows_refusal(const Model& model, const GroundInput& input, const SimulationOptions& options) {
     const double rows = max_record_rows(model, input, options);
-    if (rows <= kMaxRows) return "";
+    if (rows <= kMaxRecordRows) return "";
     const double latest = latest_run_time(model, input, options);
     char text[400];
     std::snprintf(text, sizeof text,
                   "dt: %g s could give %.3g rows (t_fin = %.4g s and up to %.4g s of free rocking after it), more "
                   "than the limit of %.0f rows; give dt >= %.3g s",
-                  options.record_dt, rows, input.t_end(), latest - input.t_end(), kMaxRows,
-                  up_to_three_digits(latest * (1 + 1e-12) / (kMaxRows - 1)));
+                  options.record_dt, rows, input.t_end(), latest - input.t_end(), kMaxRecordRows,
+                  smallest_record_dt(model, input, options));
     return text;
 }
 

@@ -18,29 +18,19 @@ namespace rocking::cli {
 namespace {
 
 
-// --output holds its rows in memory before writing them (about 270 bytes a row,
-// 55 bytes a row on disk): --dt 1e-7 had grown to 4.9 GB in 8 s.
-constexpr double kMaxOutputRows = 1e6;
-
-// v rounded up to three significant digits.
-double up_to_three_digits(double v) {
-    const double unit = std::pow(10.0, std::floor(std::log10(v)) - 2);
-    return std::ceil(v / unit) * unit;
-}
-
-// Refused before the run: a --dt whose rows could exceed kMaxOutputRows, counted
+// Refused before the run: a --dt whose rows could exceed dynamics::kMaxRecordRows, counted
 // up to the latest time the run can reach (dynamics::max_record_rows).
 void check_output_rows(const dynamics::Model& model, const dynamics::GroundInput& input,
                        const dynamics::SimulationOptions& options) {
     const double rows = dynamics::max_record_rows(model, input, options);
-    if (rows <= kMaxOutputRows) return;
+    if (rows <= dynamics::kMaxRecordRows) return;
     const double latest = dynamics::latest_run_time(model, input, options);
     char text[400];
     std::snprintf(text, sizeof text,
                   "--dt: %g s could write %.3g rows to --output (t_fin = %.4g s and up to %.4g s of free rocking "
                   "after it), more than its limit of %.0f rows; give --dt >= %.3g s",
-                  options.record_dt, rows, input.t_end(), latest - input.t_end(), kMaxOutputRows,
-                  up_to_three_digits(latest * (1 + 1e-12) / (kMaxOutputRows - 1)));
+                  options.record_dt, rows, input.t_end(), latest - input.t_end(), dynamics::kMaxRecordRows,
+                  dynamics::smallest_record_dt(model, input, options));
     throw UsageError(text);
 }
 

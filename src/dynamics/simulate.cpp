@@ -5,6 +5,7 @@
 #include "numerics/roots.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -451,6 +452,12 @@ SimulationResult simulate(const Model& model, const GroundInput& input, const Si
     if (record_kernel_applies(model, input, options))
         return simulate_record_kernel(model, static_cast<const SampledInput&>(input), options);
     return Driver(model, input, options).run();
+}
+
+double smallest_record_dt(const Model& model, const GroundInput& input, const SimulationOptions& options) {
+    const double dt = latest_run_time(model, input, options) * (1 + 1e-12) / (kMaxRecordRows - 1);
+    const double unit = std::pow(10.0, std::floor(std::log10(dt)) - 2);
+    return std::ceil(dt / unit) * unit;
 }
 
 void refuse_overflow_in_alpha(const SimulationResult& r, double alpha) {

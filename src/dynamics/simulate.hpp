@@ -55,6 +55,15 @@ double max_record_rows(const Model& model, const GroundInput& input, const Simul
 // That latest time, s.
 double latest_run_time(const Model& model, const GroundInput& input, const SimulationOptions& options);
 
+// The most rows a front end writes of a theta(t) record (simulate --output,
+// rocking_q.simulate): they are held in memory before being written (about
+// 270 bytes a row; --dt 1e-7 had grown to 4.9 GB in 8 s).
+constexpr double kMaxRecordRows = 1e6;
+// The smallest record_dt whose record stays within kMaxRecordRows up to
+// latest_run_time, rounded up to three significant digits: what a refusal
+// suggests instead.
+double smallest_record_dt(const Model& model, const GroundInput& input, const SimulationOptions& options);
+
 // The rest rule a run applies after an impact, as a fraction of alpha p: a
 // rebound slower than rest_velocity, or, for the ODE solvers, than their own
 // accuracy (10 atol), leaves the block at rest.
