@@ -199,24 +199,25 @@ std::shared_ptr<Record> record_synth(const py::object& pulse_given, const std::o
                                      const py::object& params_given, const Real& dt_given, const Real& duration_given,
                                      const py::kwargs& extra) {
     no_other_keywords(extra, "record_synth", "record_synth");
-    const std::optional<std::vector<double>> pulse =
-        pulse_given.is_none() ? std::nullopt : std::optional<std::vector<double>>(real_vector(pulse_given, "pulse"));
+    std::vector<double> pulse_values;
+    const bool has_pulse = !pulse_given.is_none();
+    if (has_pulse) pulse_values = real_vector(pulse_given, "pulse");
     const std::optional<long long> stochastic = whole(stochastic_given, "stochastic");
     const std::optional<std::map<std::string, double>> params = params_argument(params_given);
     const double dt = number(dt_given, "dt"), duration = number(duration_given, "duration");
-    if (pulse.has_value() == stochastic.has_value()) refuse("give exactly one of pulse=(A, fp, nu, gamma[, t0]) and stochastic=SEED");
-    if (pulse && params) refuse("params goes with stochastic");
+    if (has_pulse == stochastic.has_value()) refuse("give exactly one of pulse=(A, fp, nu, gamma[, t0]) and stochastic=SEED");
+    if (has_pulse && params) refuse("params goes with stochastic");
     if (!(dt > 0)) refuse("dt: must be > 0 (got " + significant(dt, 17) + ")");
     if (!(duration > 0)) refuse("duration: must be > 0 (got " + significant(duration, 17) + ")");
-    const std::string flag = pulse ? "pulse" : params ? "params" : "stochastic";
+    const std::string flag = has_pulse ? "pulse" : params ? "params" : "stochastic";
     records::PulseParameters pp{};
     // default_stochastic_parameters and with_arias_modulation swap GSL's process-wide error
     // handler and put it back: they run with the GIL held, so that two Python threads never
     // swap it at once.
     records::StochasticParameters sp = records::default_stochastic_parameters();
     std::uint64_t seed = 0;
-    if (pulse) {
-        const std::vector<double>& v = *pulse;
+    if (has_pulse) {
+        const std::vector<double>& v = pulse_values;
         if (v.size() != 4 && v.size() != 5)
             refuse("pulse: takes (A, fp, nu, gamma[, t0]) (m/s, Hz, rad, -, s), got " + std::to_string(v.size()) + " values");
         pp = {v[0], v[1], v[2], v[3], 0};
@@ -255,7 +256,7 @@ std::shared_ptr<Record> record_synth(const py::object& pulse_given, const std::o
     {
         py::gil_scoped_release unlocked;
         try {
-            r = std::make_shared<Record>(pulse ? records::pulse_record(pp, dt, duration)
+            r = std::make_shared<Record>(has_pulse ? records::pulse_record(pp, dt, duration)
                                                : records::stochastic_record(sp, seed, dt, duration));
         } catch (const std::invalid_argument& e) {
             // The argument to change, as the command line names it.
@@ -415,7 +416,12 @@ reads a file.  Immutable: accel is a read-only view.)")
                                                  to_array(r->accel), header));
             },
             &record_from_state))
-        .def("__repr__", [](py::handle self) {
+        .def("__repr__", [](py::handle self) -> py::str {
+            // Not a refusal: a debugger, a traceback or pytest shows it.
+            if (!py::isinstance<Record>(self) || !reinterpret_cast<py::detail::instance*>(self.ptr())
+                                                       ->get_value_and_holder()
+                                                       .holder_constructed())
+                return py::str("<rocking_q.Record, not initialised>");
             const RecordPtr r = held(self);
             return text("<rocking_q.Record '" + r->name + "' (" + r->format + "): " + std::to_string(r->accel.size()) +
                         " samples, dt = " + significant(r->dt, 6) + " s>");
