@@ -66,6 +66,10 @@ check  "a step above Nyquist is named" "--dt: the filter's frequency reaches" \
 check  "a huge alpha2 is named"    "--params: alpha2 must be in (1, 100000] (got 1e+300)" \
     "$rocking" record synth --stochastic 1 --dt 0.01 --duration 20 --params alpha1=1,alpha2=1e300,alpha3=1
 status "a huge alpha2 exits 2"     2 "$rocking" record synth --stochastic 1 --dt 0.01 --duration 20 --params alpha1=1,alpha2=1e300,alpha3=1
+# A sum of 1e13 terms (5e6 samples, each within the filter's ~9 s memory) ran for hours.
+check  "a sum too long is named"   "--duration: duration/dt gives 5000001 samples, and the filter's memory spans up to" \
+    timeout 20 "$rocking" record synth --stochastic 3 --dt 1e-6 --duration 5
+status "a sum too long exits 2"    2 timeout 20 "$rocking" record synth --stochastic 3 --dt 1e-6 --duration 5
 check  "an unknown key is named"   "--params: unknown key 'foo'" \
     "$rocking" record synth --stochastic 1 --dt 0.01 --duration 10 --params foo=1
 status "an unknown key exits 2"    2 "$rocking" record synth --stochastic 1 --dt 0.01 --duration 10 --params foo=1

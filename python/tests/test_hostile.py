@@ -410,3 +410,32 @@ def test_the_records_of_a_study_are_a_list():
             rq.fragility(given, alpha=0.1, p=2)
         with pytest.raises(TypeError, match=r"^records: expected a list of records or paths, got %s$" % shown):
             rq.eq27(given)
+
+
+def test_a_record_copies_its_samples_and_gives_a_read_only_view():
+    # Not a fix, the behaviour pinned: the array given is copied (changing it later changes no
+    # record a study may be reading in another thread), and accel cannot be made writable.
+    a = np.array([0.1, 0.2, 0.3, 0.4])
+    r = rq.Record(a, 0.01)
+    a[0] = 99.0
+    assert r.accel[0] == 0.1
+    with pytest.raises(ValueError):
+        r.accel.flags.writeable = True
+    with pytest.raises(AttributeError):
+        r.dt = 5
+
+
+# ---- Hangs ----
+
+def test_a_stochastic_record_too_long_to_sum_is_refused_not_left_running():
+    # dt = 1e-6 over 5 s: 5e6 samples (under the cap of 1e7), each inside the filter's memory of
+    # ~9 s, so the sum ran ~1e13 terms (hours; a fuzzer's call never returned, nor the command's).
+    import time
+    start = time.perf_counter()
+    with pytest.raises(ValueError, match=r"^duration: duration/dt gives 5000001 samples, and the filter's memory "
+                                         r"spans up to [0-9.e+]+ of them: its sum would take [0-9.e+]+ terms, more "
+                                         r"than 1e\+11 \(minutes\); raise dt or shorten the duration$"):
+        rq.record_synth(stochastic=3, dt=1e-6, duration=5)
+    assert time.perf_counter() - start < 5
+    message, code = cli_error("record", "synth", "--stochastic", 3, "--dt", 1e-6, "--duration", 5)
+    assert code == 2 and message.startswith("--duration: duration/dt gives 5000001 samples"), message

@@ -176,6 +176,28 @@ void check_filter(const StochasticParameters& p, double t_mid, double dt, double
     }
 }
 
+// The sum below runs each sample's term until its envelope exp(-zeta_f omega_f s) falls
+// below 1e-30, ln(1e30) / (zeta_f omega_f dt) steps, or to the record's end: quadratic in
+// the samples within that memory.  At dt = 1e-6 over 5 s (5e6 samples, under kMaxSamples,
+// a memory of ~9 s) that was 1e13 terms, hours without a word; at about 5e8 terms a second,
+// kMaxSumTerms is a few minutes.  The count is the loop's own, to within a percent.
+constexpr double kMaxSumTerms = 1e11;
+void check_sum_cost(const StochasticParameters& p, double t_mid, double dt, std::size_t n) {
+    const double per_rate = std::log(1e30) / (p.zeta_f * dt);  // steps times omega_f
+    double terms = 0, longest = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double memory = per_rate / filter_frequency(p, t_mid, dt * i) + 1;
+        longest = std::max(longest, memory);
+        terms += std::min(static_cast<double>(n - i), memory);
+    }
+    if (terms > kMaxSumTerms) {
+        char counts[120];
+        std::snprintf(counts, sizeof counts, "spans up to %.3g of them: its sum would take %.3g terms", longest, terms);
+        throw std::invalid_argument("duration/dt gives " + std::to_string(n) + " samples, and the filter's memory " +
+                                    counts + ", more than 1e+11 (minutes); raise dt or shorten the duration");
+    }
+}
+
 // A GSL error aborts the process by default; here it becomes an exception.
 struct GslErrorsAsCodes {
     gsl_error_handler_t* previous = gsl_set_error_handler_off();
@@ -257,6 +279,7 @@ std::vector<double> filtered_noise(const StochasticParameters& p, const std::vec
     const std::size_t n = u.size();
     const double t_mid = arias_time(p, 0.45);
     check_filter(p, t_mid, dt, dt * (n ? n - 1 : 0));
+    check_sum_cost(p, t_mid, dt, n);
     const double root = std::sqrt(1 - p.zeta_f * p.zeta_f);
     std::vector<double> sum(n, 0.0), norm(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
