@@ -61,6 +61,9 @@ check "simulate json"                '"collapse_overturning": true' "$rocking" s
 check "simulate at collapse"         "COLLAPSE under final-rotation" "$rocking" simulate --case 2 --x 0.5 --rd 1.0001 --alpha 0.15 --p 2
 check "full model needs an ODE solver" "exact solver handles the linearised equation only" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --model full --solver exact
 check "simulate geometry required"   "give exactly one of --p, --half-height and --height" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15
+# A height whose p = sqrt(3 g / 4 R) overflows: p was inf (assess --json wrote "p": null).
+check "a height too small for a double" "block: height is too small for a double" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --height 2.3e-308
+status "a height too small exits 2"   2 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --height 2.3e-308
 check "simulate bad solver"          "unknown solver 'rk4'" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --solver rk4
 check "simulate restitution range"   "--restitution: must be in [0, 1] or housner (got 1.5)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --restitution 1.5
 check "collapse rtol range (before reading the file)" "--rtol: must be in [100 eps, 1) = [2.2204460492503131e-14, 1) (got 2)" "$rocking" collapse no-such-file --alpha 0.15 --rtol 2

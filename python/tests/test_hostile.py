@@ -439,3 +439,24 @@ def test_a_stochastic_record_too_long_to_sum_is_refused_not_left_running():
     assert time.perf_counter() - start < 5
     message, code = cli_error("record", "synth", "--stochastic", 3, "--dt", 1e-6, "--duration", 5)
     assert code == 2 and message.startswith("--duration: duration/dt gives 5000001 samples"), message
+
+
+# ---- Silent infinities ----
+
+def test_a_height_too_small_for_a_double_is_refused_not_an_infinite_p(tmp_path):
+    # height = 2.3e-308 m: p = sqrt(3 g / 4 R) overflowed to inf, so assess gave p = x = inf (the
+    # command's --json wrote null for both) and alpha drifted to 0.15000000000000013, the half-width
+    # being subnormal.  A numerical fuzzer's finite extremes found it.
+    message = r"^block: height is too small for a double \(the half-width h tan\(alpha\) or p = sqrt\(3 g / 4 R\) " \
+              r"leaves its range\)$"
+    for call in (lambda: rq.block(alpha=0.15, height=2.3e-308), lambda: rq.block(alpha=0.15, half_height=3e-308),
+                 lambda: rq.assess(R, alpha=0.15, height=2.3e-308),
+                 lambda: rq.simulate(alpha=0.15, height=2.3e-308, case=2, x=0.5, rd=0.9),
+                 lambda: rq.block(alpha=1e-300, height=1e-10)):
+        with pytest.raises(ValueError, match=message):
+            call()
+    path = tmp_path / "wave.txt"
+    path.write_text("".join("%.17g\n" % v for v in R.in_g()))
+    cli_message, code = cli_error("assess", path, "--unit", "g", "--dt", 0.01, "--alpha", 0.15, "--height", 2.3e-308)
+    assert code == 2 and cli_message == str(pytest.raises(ValueError, rq.assess, R, alpha=0.15, height=2.3e-308).value)
+    assert rq.block(alpha=0.15, height=1e-300).alpha == 0.15  # small, but a double's

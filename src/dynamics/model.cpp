@@ -1,5 +1,6 @@
 #include "dynamics/model.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -21,7 +22,12 @@ Block Block::from_half_dimensions(double b, double h) {
 Block Block::from_half_height(double h, double alpha) {
     require(std::isfinite(alpha) && alpha > 0 && alpha < M_PI / 4, "alpha must be in (0, pi/4)");
     require(std::isfinite(h) && h > 0, "height must be > 0");
-    return from_half_dimensions(h * std::tan(alpha), h);
+    // At 2.3e-308 m, p = sqrt(3 g / 4 R) overflowed to inf (assess printed p and x null), and a
+    // subnormal half-width lost the digits that give alpha back (0.15 became 0.15000000000000013).
+    const double b = h * std::tan(alpha);
+    require(b >= DBL_MIN && std::isfinite(std::sqrt(3.0 * kGravity / (4.0 * std::hypot(b, h)))),
+            "height is too small for a double (the half-width h tan(alpha) or p = sqrt(3 g / 4 R) leaves its range)");
+    return from_half_dimensions(b, h);
 }
 
 Block Block::from_full_height(double H, double alpha) { return from_half_height(H / 2.0, alpha); }
