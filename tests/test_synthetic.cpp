@@ -595,6 +595,34 @@ TEST(SyntheticStochastic, RefusesAFilterOutsideItsRange) {
               std::string::npos);
 }
 
+// The names of --params and params=: each overrides its own field, in its unit (Hz to
+// rad/s), the Arias triple fills its missing members from the defaults, and the mixes
+// the model cannot take are refused rather than resolved one way.
+TEST(SyntheticStochastic, ParametersByNameOverrideTheirFieldOnly) {
+    const StochasticParameters d = default_stochastic_parameters();
+    const StochasticParameters f = stochastic_parameters_from({{"fmid", 3.0}, {"zeta", 0.4}});
+    EXPECT_DOUBLE_EQ(f.omega_mid, 2 * M_PI * 3.0);
+    EXPECT_EQ(f.zeta_f, 0.4);
+    EXPECT_EQ(f.omega_prime, d.omega_prime);
+    EXPECT_EQ(f.omega_c, d.omega_c);
+    EXPECT_EQ(f.alpha1, d.alpha1);
+    const StochasticParameters a = stochastic_parameters_from({{"alpha1", 0.1}, {"alpha2", 2.0}, {"alpha3", 0.3}});
+    EXPECT_EQ(a.alpha1, 0.1);
+    EXPECT_EQ(a.alpha2, 2.0);
+    EXPECT_EQ(a.alpha3, 0.3);
+    // D5_95 alone: Ia and tmid from StochasticDefaults, so the duration is the one asked for.
+    const StochasticParameters w = stochastic_parameters_from({{"D5_95", 10.0}});
+    EXPECT_NEAR(arias_time(w, 0.95) - arias_time(w, 0.05), 10.0, 1e-9);
+    EXPECT_NEAR(arias_time(w, 0.45), StochasticDefaults::tmid_s, 1e-9);
+    EXPECT_NE(error_of([] { stochastic_parameters_from({{"alpha1", 0.1}, {"Ia", 0.5}}); }).find("not both"),
+              std::string::npos);
+    EXPECT_NE(error_of([] { stochastic_parameters_from({{"alpha1", 0.1}, {"alpha3", 0.3}}); }).find("go together"),
+              std::string::npos);
+    EXPECT_NE(error_of([] { stochastic_parameters_from({{"foo", 1.0}}); }).find("unknown key 'foo'"),
+              std::string::npos);
+    EXPECT_EQ(stochastic_parameter_names().size(), 10u);
+}
+
 TEST(SyntheticStochastic, HeaderStatesTheGeneratorAndEveryParameter) {
     const Record r = stochastic_record(default_stochastic_parameters(), 7, 0.01, 30);
     EXPECT_NE(r.header.at("generator").find("Rezaeian & Der Kiureghian (2008)"), std::string::npos);

@@ -184,12 +184,8 @@ std::optional<std::map<std::string, double>> params_argument(const py::object& g
     if (!py::isinstance<py::dict>(given))
         throw py::type_error("params: expected a dict of {key: number}, got " + std::string(py::str(py::type::of(given).attr("__name__"))));
     std::map<std::string, double> kv;
-    static const char* keys[] = {"alpha1", "alpha2", "alpha3", "Ia", "D5_95", "tmid", "fmid", "fprime", "zeta", "fc"};
     for (auto [key_given, value] : py::reinterpret_borrow<py::dict>(given)) {
         const std::string key = string_argument(Text{py::reinterpret_borrow<py::object>(key_given)}, "params: a key");
-        bool known = false;
-        for (const char* k : keys) known = known || key == k;
-        if (!known) refuse("params: unknown key '" + key + "' (keys: alpha1, alpha2, alpha3, Ia, D5_95, tmid, fmid, fprime, zeta, fc)");
         kv[key] = number(Real{py::reinterpret_borrow<py::object>(value)}, "params " + key);
     }
     return kv;
@@ -227,27 +223,10 @@ std::shared_ptr<Record> record_synth(const py::object& pulse_given, const std::o
             refuse("stochastic: the seed must be a whole number from 1 to 4294967295 (got " + std::to_string(*stochastic) + ")");
         seed = static_cast<std::uint64_t>(*stochastic);
         if (params) {
-            // As the command line's --params (src/cli/synth.cpp).
-            const std::map<std::string, double>& kv = *params;  // keys known, values finite: params_argument
-            if (kv.count("fmid")) sp.omega_mid = 2 * M_PI * kv.at("fmid");
-            if (kv.count("fprime")) sp.omega_prime = 2 * M_PI * kv.at("fprime");
-            if (kv.count("zeta")) sp.zeta_f = kv.at("zeta");
-            if (kv.count("fc")) sp.omega_c = 2 * M_PI * kv.at("fc");
-            const int alphas = kv.count("alpha1") + kv.count("alpha2") + kv.count("alpha3");
-            const int arias = kv.count("Ia") + kv.count("D5_95") + kv.count("tmid");
-            if (alphas && arias) refuse("params: give the alphas or Ia, D5_95, tmid, not both");
-            if (alphas && alphas != 3) refuse("params: alpha1, alpha2 and alpha3 go together");
-            if (alphas) {
-                sp.alpha1 = kv.at("alpha1"), sp.alpha2 = kv.at("alpha2"), sp.alpha3 = kv.at("alpha3");
-            } else if (arias) {
-                auto value = [&](const char* key, double fallback) { return kv.count(key) ? kv.at(key) : fallback; };
-                using D = records::StochasticDefaults;
-                try {
-                    sp = records::with_arias_modulation(sp, value("Ia", D::Ia_s_g * dynamics::kGravity),
-                                                        value("D5_95", D::D5_95_s), value("tmid", D::tmid_s));
-                } catch (const std::invalid_argument& e) {
-                    refuse(std::string("params: ") + e.what());
-                }
+            try {
+                sp = records::stochastic_parameters_from(*params);
+            } catch (const std::invalid_argument& e) {
+                refuse(std::string("params: ") + e.what());
             }
         }
     }

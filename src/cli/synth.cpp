@@ -35,31 +35,12 @@ records::PulseParameters pulse_from(const std::string& text) {
     return p;
 }
 
-// --params: the modulating function as alpha1..3, or as Ia (m/s), D5_95 (s) and
-// tmid (s), each of the last three defaulting to records::StochasticDefaults; the filter as
-// fmid (Hz), fprime (Hz/s), zeta; the post-filter's corner fc (Hz).
+// --params key=value,...: records::stochastic_parameters_from's names; its refusals
+// reach the caller's catch, which names --params.
 records::StochasticParameters stochastic_from(const Args& a) {
-    records::StochasticParameters p = records::default_stochastic_parameters();
-    if (!a.values.count("--params")) return p;
-    const auto kv = key_values("--params", a.values.at("--params"),
-                               {"alpha1", "alpha2", "alpha3", "Ia", "D5_95", "tmid", "fmid", "fprime", "zeta", "fc"});
-    if (kv.count("fmid")) p.omega_mid = 2 * M_PI * kv.at("fmid");
-    if (kv.count("fprime")) p.omega_prime = 2 * M_PI * kv.at("fprime");
-    if (kv.count("zeta")) p.zeta_f = kv.at("zeta");
-    if (kv.count("fc")) p.omega_c = 2 * M_PI * kv.at("fc");
-    const int alphas = kv.count("alpha1") + kv.count("alpha2") + kv.count("alpha3");
-    const int arias = kv.count("Ia") + kv.count("D5_95") + kv.count("tmid");
-    if (alphas && arias) throw UsageError("--params: give the alphas or Ia, D5_95, tmid, not both");
-    if (alphas && alphas != 3) throw UsageError("--params: alpha1, alpha2 and alpha3 go together");
-    if (alphas) {
-        p.alpha1 = kv.at("alpha1"), p.alpha2 = kv.at("alpha2"), p.alpha3 = kv.at("alpha3");
-    } else if (arias) {
-        auto value = [&](const char* key, double fallback) { return kv.count(key) ? kv.at(key) : fallback; };
-        using D = records::StochasticDefaults;
-        p = records::with_arias_modulation(p, value("Ia", D::Ia_s_g * dynamics::kGravity), value("D5_95", D::D5_95_s),
-                                           value("tmid", D::tmid_s));
-    }
-    return p;
+    if (!a.values.count("--params")) return records::default_stochastic_parameters();
+    return records::stochastic_parameters_from(
+        key_values("--params", a.values.at("--params"), records::stochastic_parameter_names()));
 }
 
 // The header's values are %.17g text or words: numbers stay numbers in JSON.

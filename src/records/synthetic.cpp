@@ -138,6 +138,41 @@ StochasticParameters default_stochastic_parameters() {
     return with_arias_modulation(p, D::Ia_s_g * kGravity, D::D5_95_s, D::tmid_s);
 }
 
+const std::vector<std::string>& stochastic_parameter_names() {
+    static const std::vector<std::string> names = {"alpha1", "alpha2", "alpha3", "Ia",     "D5_95",
+                                                   "tmid",   "fmid",   "fprime", "zeta", "fc"};
+    return names;
+}
+
+StochasticParameters stochastic_parameters_from(const std::map<std::string, double>& values) {
+    const std::vector<std::string>& names = stochastic_parameter_names();
+    for (const auto& [key, value] : values)
+        if (std::find(names.begin(), names.end(), key) == names.end()) {
+            std::string known;
+            for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+            throw std::invalid_argument("unknown key '" + key + "' (keys: " + known + ")");
+        }
+    auto given = [&](const char* key) { return static_cast<int>(values.count(key)); };
+    const int alphas = given("alpha1") + given("alpha2") + given("alpha3");
+    const int arias = given("Ia") + given("D5_95") + given("tmid");
+    if (alphas && arias) throw std::invalid_argument("give the alphas or Ia, D5_95, tmid, not both");
+    if (alphas && alphas != 3) throw std::invalid_argument("alpha1, alpha2 and alpha3 go together");
+    StochasticParameters p = default_stochastic_parameters();
+    if (values.count("fmid")) p.omega_mid = 2 * M_PI * values.at("fmid");
+    if (values.count("fprime")) p.omega_prime = 2 * M_PI * values.at("fprime");
+    if (values.count("zeta")) p.zeta_f = values.at("zeta");
+    if (values.count("fc")) p.omega_c = 2 * M_PI * values.at("fc");
+    if (alphas) {
+        p.alpha1 = values.at("alpha1"), p.alpha2 = values.at("alpha2"), p.alpha3 = values.at("alpha3");
+    } else if (arias) {
+        auto value = [&](const char* key, double fallback) { return values.count(key) ? values.at(key) : fallback; };
+        using D = StochasticDefaults;
+        p = with_arias_modulation(p, value("Ia", D::Ia_s_g * kGravity), value("D5_95", D::D5_95_s),
+                                  value("tmid", D::tmid_s));
+    }
+    return p;
+}
+
 namespace {
 
 void check_modulation(const StochasticParameters& p) {

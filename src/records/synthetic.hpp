@@ -12,6 +12,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "records/record.hpp"
@@ -96,6 +98,17 @@ double arias_time(const StochasticParameters& p, double fraction);
 // alpha1 from Ia = (pi/2g) alpha1^2 Gamma(k) / (2 alpha3)^k, k = 2 alpha2 - 1.
 // The filter's fields of `base` are kept.
 StochasticParameters with_arias_modulation(StochasticParameters base, double Ia, double d5_95, double t_mid);
+
+// The names stochastic_parameters_from takes, as `rocking record synth --params`
+// and rocking_q.record_synth(params=...) spell them.
+const std::vector<std::string>& stochastic_parameter_names();
+// default_stochastic_parameters() with the values given by name replaced: the
+// modulation as alpha1, alpha2, alpha3 (all three) or as Ia (m/s), D5_95 (s), tmid (s)
+// (those missing from the defaults, through with_arias_modulation); the filter as fmid
+// (Hz), fprime (Hz/s), zeta; the post-filter's corner fc (Hz).  Throws
+// std::invalid_argument for an unknown name, the alphas mixed with Ia/D5_95/tmid, or
+// fewer than three alphas: one front end's spelling, one set of checks.
+StochasticParameters stochastic_parameters_from(const std::map<std::string, double>& values);
 
 // n standard normal numbers: GSL's gsl_rng_mt19937 seeded with `seed`, through
 // gsl_ran_gaussian_ziggurat.  seed in [1, 2^32 - 1]: mt19937 reads the low 32 bits
