@@ -351,6 +351,52 @@ TEST(BatchEngine, TheEngineResumesFromTheRowsWrittenAndGivesTheUninterruptedFile
     }
 }
 
+// A front end that fits the rows (rocking fragility) gets each once, in order:
+// in memory on any number of threads, and from the file after a resume, the
+// rows written before it included, so that both give the uninterrupted rows.
+TEST(BatchEngine, CollectGivesEveryRowOnceInOrderInMemoryOrAfterAResume) {
+    const std::string dir = temp_dir();
+    const BatchPlan plan = synthetic_plan(120);
+    std::vector<std::string> expected;
+    for (std::size_t i = 0; i < plan.jobs; ++i) expected.push_back(plan.run(i).text);
+    for (int threads : {1, 3}) {
+        EngineOptions o;
+        o.quiet = true;
+        o.threads = threads;
+        std::vector<std::string> rows;
+        o.collect = [&](std::size_t i, const std::string& row) {
+            EXPECT_EQ(i, rows.size());
+            rows.push_back(row);
+        };
+        const BatchOutcome outcome = run_batch(plan, o, nullptr);
+        EXPECT_EQ(outcome.failed, 17u);  // i % 7 == 3 for i < 120
+        EXPECT_EQ(rows, expected) << threads << " threads, in memory";
+    }
+    EngineOptions o;
+    o.quiet = true;
+    o.threads = 2;
+    o.output = dir + "/collected.csv";
+    {
+        ResultsFile f({o.output, false, 1e9}, plan.header, plan.digest, plan.jobs);
+        for (std::size_t i = 0; i < 57; ++i) {
+            JobRow r = plan.run(i);
+            f.append(r.text, r.failed);
+        }
+        f.flush();
+    }
+    o.resume = true;
+    std::vector<std::string> rows;
+    o.collect = [&](std::size_t i, const std::string& row) {
+        EXPECT_EQ(i, rows.size());
+        rows.push_back(row);
+    };
+    EXPECT_EQ(run_batch(plan, o, nullptr).ran, 63u);
+    EXPECT_EQ(rows, expected) << "resumed after 57 rows";
+    rows.clear();
+    EXPECT_TRUE(run_batch(plan, o, nullptr).already_complete);
+    EXPECT_EQ(rows, expected) << "a resume of the finished file";
+}
+
 TEST(BatchEngine, TheProgressLineSaysDoneFailedRateAndTimeLeft) {
     EXPECT_EQ(Progress::line(120, 3, 1000, 20, 2.0), "batch: 120/1000 jobs, 3 failed, 50 jobs/s, 18 s left");
     EXPECT_EQ(Progress::line(0, 0, 10, 0, 0.0), "batch: 0/10 jobs, 0 failed, 0 jobs/s, ? left");

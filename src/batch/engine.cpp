@@ -21,8 +21,9 @@ namespace rocking::batch {
 namespace {
 
 // What an interrupted batch leaves, and how to finish it.
-void say_interrupted(int sig, const ResultsFile& file, const std::string& output, std::size_t jobs) {
-    std::fprintf(stderr, "\nrocking batch: interrupted by %s: the rows of %zu of %zu jobs are written%s%s%s\n",
+void say_interrupted(const std::string& command, int sig, const ResultsFile& file, const std::string& output,
+                     std::size_t jobs) {
+    std::fprintf(stderr, "\n%s: interrupted by %s: the rows of %zu of %zu jobs are written%s%s%s\n", command.c_str(),
                  sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : strsignal(sig),
                  file.done(), jobs, output.empty() ? "" : " to ", output.empty() ? "" : file.partial_path().c_str(),
                  output.empty() ? "" : "; the same command with --resume completes them");
@@ -47,6 +48,20 @@ std::vector<std::size_t> chunk_starts(std::size_t first, std::size_t n, std::siz
     return starts;
 }
 
+// The finished file's rows to the front end that asked for them.
+void collect_rows(const BatchPlan& plan, const EngineOptions& options) {
+    if (!options.collect) return;
+    const std::size_t header_lines = static_cast<std::size_t>(std::count(plan.header.begin(), plan.header.end(), '\n'));
+    std::size_t rows = 0;
+    ResultsFile::read_rows(options.output, header_lines, [&](std::size_t i, const std::string& row) {
+        options.collect(i, row);
+        rows = i + 1;
+    });
+    if (rows != plan.jobs)
+        throw ResultsError(options.output + ": holds " + std::to_string(rows) + " rows for " + std::to_string(plan.jobs) +
+                           " jobs");
+}
+
 double thread_cpu_seconds() {
     timespec t{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
@@ -57,9 +72,11 @@ double thread_cpu_seconds() {
 
 BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Ranks* ranks) {
     const bool lead = !ranks || ranks->rank() == 0;
+    // Rows for the front end alone: no file, nothing to resume.
+    const bool in_memory = options.collect && options.output.empty();
     std::unique_ptr<ResultsFile> file;
     std::exception_ptr failure;
-    if (lead) {
+    if (lead && !in_memory) {
         try {
             file = std::make_unique<ResultsFile>(ResultsOptions{options.output, options.resume, options.flush_seconds},
                                                  plan.header, plan.digest, plan.jobs);
@@ -92,33 +109,37 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
         std::rethrow_exception(failure);
 
     const std::size_t threads = options.threads < 1 ? 1 : static_cast<std::size_t>(options.threads);
-    const std::size_t first = lead ? file->done() : 0;
+    const std::size_t first = file ? file->done() : 0;
     Progress progress(plan.jobs, first, lead && !options.quiet && stderr_is_terminal());
     // On every rank: the others end by the signal too (on_signal does nothing there).
     const InterruptWatch watch([&](int sig) {
         if (!file) return;
         file->flush();
         if (progress.enabled()) progress.finish(file->done(), file->failed());
-        say_interrupted(sig, *file, options.output, plan.jobs);
+        say_interrupted(options.command, sig, *file, options.output, plan.jobs);
     });
     if (!lead) {
         ranks->run(0, plan.jobs, static_cast<int>(threads), options.window, plan.run, nullptr);
         return {};
     }
-    if (file->complete() || first == plan.jobs) {
+    if (file && (file->complete() || first == plan.jobs)) {
         // Nothing to run: a finished file found by --resume, or a partial one
         // whose rows are all there (killed before its end line).
         if (ranks) ranks->run(first, plan.jobs, static_cast<int>(threads), options.window, plan.run, nullptr);
         file->finish();
+        collect_rows(plan, options);
         return {file->done(), file->failed(), 0, file->complete()};
     }
     // ROCKING_BATCH_STATS: the writing thread's CPU a row (bench/batch.sh): with
     // the jobs on other threads or ranks, what one row costs the one thread
     // every row passes through, the bound on how many rows a second a batch takes.
     const double cpu_before = thread_cpu_seconds();
-    const DeliverRow deliver = [&](std::size_t, JobRow& row) {
-        file->append(row.text, row.failed);
-        progress.update(file->done(), file->failed());
+    std::size_t done = 0, failed = 0;
+    const DeliverRow deliver = [&](std::size_t i, JobRow& row) {
+        ++done, failed += row.failed;
+        if (file) file->append(row.text, row.failed);
+        else options.collect(i, row.text);
+        progress.update(first + done, file ? file->failed() : failed);
     };
     if (ranks) {
         const std::size_t window =
@@ -140,12 +161,16 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
                 for (std::size_t k = 0; k < rows.size(); ++k) deliver(starts[c] + k, rows[k]);
             });
     }
-    file->finish();
-    progress.finish(file->done(), file->failed());
+    if (file) {
+        file->finish();
+        failed = file->failed();
+    }
+    progress.finish(first + done, failed);
     if (std::getenv("ROCKING_BATCH_STATS"))
-        std::fprintf(stderr, "rocking batch: the writing thread: %.6f s of CPU for %zu rows\n",
+        std::fprintf(stderr, "%s: the writing thread: %.6f s of CPU for %zu rows\n", options.command.c_str(),
                      thread_cpu_seconds() - cpu_before, plan.jobs - first);
-    return {file->done(), file->failed(), plan.jobs - first, false};
+    if (file) collect_rows(plan, options);
+    return {plan.jobs, failed, plan.jobs - first, false};
 }
 
 }  // namespace rocking::batch

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 #include "batch/job_row.hpp"
@@ -33,6 +34,14 @@ struct EngineOptions {
     int threads = 1;        // per process
     std::size_t window = 0; // rows held at most (threads: rounded down to chunks of 32, at least one); 0 for the default
     double flush_seconds = 1.0;
+    // The command that runs the batch, as its messages name it.
+    std::string command = "rocking batch";
+    // A front end that needs the rows themselves (rocking fragility fits
+    // them): on rank 0, every row's text in the jobs' order, once each.  With
+    // an output file it is called after the batch has run to its end, from
+    // the finished file, so that the rows a resume skipped come too; without
+    // one the rows come only here, as they are ready, and none is written.
+    std::function<void(std::size_t, const std::string&)> collect;
 };
 
 struct BatchOutcome {

@@ -250,4 +250,19 @@ void ResultsFile::finish() {
     ::unlink(state_path().c_str());
 }
 
+void ResultsFile::read_rows(const std::string& path, std::size_t header_lines,
+                            const std::function<void(std::size_t, const std::string&)>& row) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ResultsError(path + ": cannot read: " + why(errno));
+    std::string line;
+    for (std::size_t k = 0; k <= header_lines; ++k)
+        if (!std::getline(in, line)) throw ResultsError(path + ": ends inside its header");
+    std::size_t rows = 0;
+    while (std::getline(in, line)) {
+        if (line.rfind("# end: ", 0) == 0) return;
+        row(rows++, line);
+    }
+    throw ResultsError(path + ": has no end line: not a finished results file");
+}
+
 }  // namespace rocking::batch

@@ -24,6 +24,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <functional>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -68,6 +69,11 @@ public:
     void flush();
     // Every job written: the end line, and the file moves to its path.
     void finish();
+    // A finished results file's rows, in order, to `row`: the lines after
+    // the digest's and `header_lines` more, up to the end line.  Throws
+    // ResultsError when it cannot be read or does not end as a finished one.
+    static void read_rows(const std::string& path, std::size_t header_lines,
+                          const std::function<void(std::size_t, const std::string&)>& row);
     std::string partial_path() const { return options_.path + ".partial"; }
     std::string state_path() const { return options_.path + ".partial.state"; }
 
