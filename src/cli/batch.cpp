@@ -14,6 +14,7 @@
 #include "batch/manifest.hpp"
 #include "batch/pool.hpp"
 #include "batch/results_file.hpp"
+#include "cli/cluster_front.hpp"
 #include "cli/options.hpp"
 #include "jobs/batch_plan.hpp"
 #include "jobs/record_store.hpp"
@@ -26,13 +27,6 @@ const char* kUsage = "usage: rocking batch MANIFEST [--jobs N] [--output FILE] [
 
 // The exit status of a batch that ran to its end with failed jobs.
 constexpr int kSomeJobsFailed = 3;
-
-// Under mpirun, before MPI is started: the rank from the launcher's variables.
-bool first_rank() {
-    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
-        if (const char* v = std::getenv(name)) return std::string(v) == "0";
-    return true;
-}
 
 struct Options {
     std::string manifest;
@@ -71,20 +65,9 @@ Options options_from(int argc, char** argv, bool mpi) {
 
 int cmd_batch(int argc, char** argv) {
     const bool mpi = batch::launched_by_mpirun();
-    if (mpi && !batch::built_with_mpi()) {
-        if (!first_rank()) return 2;
-        throw UsageError("started by mpirun, but this rocking was built without MPI, and each copy would run the whole "
-                         "batch: install libopenmpi-dev and openmpi-bin (make deps) and rebuild, or run it without "
-                         "mpirun (--jobs N threads)");
-    }
     Options o;
-    try {
-        o = options_from(argc, argv, mpi);
-    } catch (const UsageError&) {
-        if (mpi && !first_rank()) return 2;  // every rank has the same error: rank 0 says it
-        throw;
-    }
-    std::unique_ptr<batch::Ranks> ranks = mpi ? batch::join_cluster() : nullptr;
+    parse_on_every_rank([&] { o = options_from(argc, argv, mpi); });
+    std::unique_ptr<batch::Ranks> ranks = join_if_launched("batch");
 
     // Every rank reads the manifest; a failure is held until all have said how they fared.
     std::optional<batch::Manifest> manifest;
@@ -97,33 +80,9 @@ int cmd_batch(int argc, char** argv) {
     } catch (const std::exception&) {
         failure = std::current_exception();
     }
-    if (ranks) {
-        const int status = failure ? 1 : 0;
-        const bool first_failed = ranks->broadcast(std::to_string(status)) != "0";
-        const int all = ranks->agree(status);
-        if (all != 0) {
-            // One says why (rank 0, or a rank that failed where rank 0 did not), before any rank
-            // ends: mpirun stops the job at the first non-zero exit, and the message with it.
-            if (failure && (ranks->rank() == 0 || !first_failed)) {
-                try {
-                    std::rethrow_exception(failure);
-                } catch (const std::exception& e) {
-                    std::fprintf(stderr, "rocking batch: %s%s\n",
-                                 ranks->rank() == 0 ? "" : ("rank " + std::to_string(ranks->rank()) + ": ").c_str(), e.what());
-                }
-            }
-            ranks->agree(0);
-            return all;
-        }
-    } else if (failure)
-        std::rethrow_exception(failure);
+    if (const int status = agree_on_setup(ranks.get(), failure, "rocking batch")) return status;
 
-    batch::BatchOutcome outcome;
-    try {
-        outcome = batch::run_batch(plan, o.engine, ranks.get());
-    } catch (const batch::OtherRankFailed& e) {
-        return e.status;
-    }
+    const batch::BatchOutcome outcome = batch::run_batch(plan, o.engine, ranks.get());
     if (ranks && ranks->rank() != 0) return 0;
     if (!o.engine.quiet)
         std::fprintf(stderr, "rocking batch: %s%zu jobs, %zu failed%s%s\n",

@@ -5,6 +5,8 @@
 #include <iostream>
 #include <string>
 
+#include "batch/ranks.hpp"
+#include "cli/cluster_front.hpp"
 #include "cli/options.hpp"
 #include "harness/atomic_file.hpp"
 
@@ -129,6 +131,10 @@ int run(int argc, char** argv) {
         if (command == "eq27") return cmd_eq27(argc, argv);
         if (command == "batch") return cmd_batch(argc, argv);
         throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
+    } catch (const EndQuietly& e) {
+        return e.status;  // under mpirun, a rank other than the one that said why
+    } catch (const rocking::batch::OtherRankFailed& e) {
+        return e.status;
     } catch (const UsageError& e) {
         // The whole usage would bury the one line that says what is wrong.
         std::cerr << "rocking" << (command.empty() ? "" : " " + command) << ": " << e.what() << "\n";

@@ -1,0 +1,59 @@
+#include "cli/cluster_front.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "batch/cluster.hpp"
+#include "cli/options.hpp"
+
+namespace rocking::cli {
+
+bool first_rank() {
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+        if (const char* v = std::getenv(name)) return std::string(v) == "0";
+    return true;
+}
+
+std::unique_ptr<batch::Ranks> join_if_launched(const std::string& command) {
+    if (!batch::launched_by_mpirun()) return nullptr;
+    if (!batch::built_with_mpi()) {
+        if (!first_rank()) throw EndQuietly{2};
+        throw UsageError("started by mpirun, but this rocking was built without MPI, and each copy would run the whole " +
+                         command + ": install libopenmpi-dev and openmpi-bin (make deps) and rebuild, or run it without "
+                         "mpirun (--jobs N threads)");
+    }
+    return batch::join_cluster();
+}
+
+void parse_on_every_rank(const std::function<void()>& parse) {
+    try {
+        parse();
+    } catch (const UsageError&) {
+        if (batch::launched_by_mpirun() && !first_rank()) throw EndQuietly{2};
+        throw;
+    }
+}
+
+int agree_on_setup(batch::Ranks* ranks, std::exception_ptr failure, const std::string& command) {
+    if (!ranks) {
+        if (failure) std::rethrow_exception(failure);
+        return 0;
+    }
+    const int status = failure ? 1 : 0;
+    const bool first_failed = ranks->broadcast(std::to_string(status)) != "0";
+    const int all = ranks->agree(status);
+    if (all == 0) return 0;
+    // Said before any rank ends: mpirun stops the job at the first non-zero exit, and the message with it.
+    if (failure && (ranks->rank() == 0 || !first_failed)) {
+        try {
+            std::rethrow_exception(failure);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s: %s%s\n", command.c_str(),
+                         ranks->rank() == 0 ? "" : ("rank " + std::to_string(ranks->rank()) + ": ").c_str(), e.what());
+        }
+    }
+    ranks->agree(0);
+    return all;
+}
+
+}  // namespace rocking::cli

@@ -1,0 +1,41 @@
+// What the commands that run on the batch engine (rocking batch, fragility)
+// share under mpirun: the same binary started K times, each copy parsing the
+// same command line, so that each finds the same errors; rank 0 alone says
+// them, and every rank ends with the same status (docs/batch.md).
+#pragma once
+
+#include <exception>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "batch/ranks.hpp"
+
+namespace rocking::cli {
+
+// Under mpirun, before MPI is started: whether this copy is rank 0, from the
+// launcher's variables (true when not under mpirun).
+bool first_rank();
+
+// The ranks of an MPI run when mpirun started this process, null otherwise.
+// Under mpirun with a build without MPI each copy would run the whole study:
+// rank 0 throws UsageError saying so, the others end with status 2 silently
+// (through EndQuietly).
+std::unique_ptr<batch::Ranks> join_if_launched(const std::string& command);
+
+// A copy other than rank 0 ending with `status` after rank 0 said why.
+struct EndQuietly {
+    int status;
+};
+
+// `parse` run on every copy: a UsageError is rank 0's to say; the others
+// throw EndQuietly{2}.
+void parse_on_every_rank(const std::function<void()>& parse);
+
+// After each rank's setup (reading its inputs), `failure` null where it went
+// well: 0 when every rank is ready.  Otherwise the status to end with, the
+// failure said once (by rank 0, or by a rank that failed where rank 0 did
+// not) before any rank ends.  Without ranks a failure is rethrown.
+int agree_on_setup(batch::Ranks* ranks, std::exception_ptr failure, const std::string& command);
+
+}  // namespace rocking::cli
