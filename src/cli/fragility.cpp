@@ -4,6 +4,8 @@
 // bootstrap interval and the empirical curve, as text, CSV or JSON.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -11,8 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "batch/engine.hpp"
+#include "batch/pool.hpp"
+#include "batch/ranks.hpp"
+#include "cli/cluster_front.hpp"
 #include "cli/options.hpp"
 #include "harness/table.hpp"
+#include "jobs/fragility_plan.hpp"
 #include "studies/ida.hpp"
 
 namespace rocking::cli {
@@ -25,7 +32,8 @@ using studies::IdaInterval;
 
 const char* kUsage =
     "usage: rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N] "
-    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]";
+    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json] [--rows FILE [--resume]] "
+    "[--quiet]";
 
 std::string g7(double v) { return significant(v, 7); }
 
@@ -193,35 +201,111 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
     write_output(t, csv);
 }
 
+// The flags without a value, taken out before the generic parser.
+std::vector<char*> without_switches(int argc, char** argv, bool& resume, bool& quiet) {
+    std::vector<char*> args(argv, argv + argc);
+    for (auto it = args.begin() + (argc > 2 ? 2 : argc); it != args.end();) {
+        const std::string flag = *it;
+        if (flag == "--resume") resume = true, it = args.erase(it);
+        else if (flag == "--quiet") quiet = true, it = args.erase(it);
+        else ++it;
+    }
+    return args;
+}
+
+struct Command {
+    std::vector<std::string> files;
+    Args args;
+    std::vector<studies::BlockShape> blocks;
+    studies::FragilityStudyOptions study;
+    batch::EngineOptions engine;
+};
+
+Command command_from(int argc, char** argv, bool mpi) {
+    Command c;
+    std::vector<char*> args = without_switches(argc, argv, c.engine.resume, c.engine.quiet);
+    const int count = static_cast<int>(args.size());
+    int first = 0;
+    c.files = file_arguments(count, args.data(), first, kUsage);
+    c.args = parse(count, args.data(), first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
+                                               "--dt", "--jobs", "--output", "--rows"});
+    const Args& a = c.args;
+    const std::vector<double> alphas = list_in(a, "--alpha", 0, 0.7, "(0, 0.7)");
+    const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
+    c.study = options_from(a);
+    for (const char* flag : {"--output", "--rows"})
+        if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
+    if (c.files.size() > 1000) throw UsageError("at most 1000 files");
+    if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
+    if (c.engine.resume && c.engine.output.empty())
+        throw UsageError("--resume needs --rows FILE: the IDAs of an interrupted study are resumed from that file");
+    // Under mpirun each rank is one process on one core, as MPI runs are laid out.
+    c.engine.threads = a.values.count("--jobs") || !mpi ? c.study.threads : 1;
+    c.engine.command = "rocking fragility";
+    if (const char* every = std::getenv("ROCKING_BATCH_FLUSH_SECONDS")) c.engine.flush_seconds = std::atof(every);
+    for (double alpha : alphas)
+        for (double p : ps) c.blocks.push_back({alpha, p});
+    return c;
+}
+
+// The '#' lines of the rows file: what the IDAs are of.
+std::string description(const Command& c) {
+    std::string text = "# rocking fragility: the IDAs of " + std::to_string(c.files.size()) + " record(s) x " +
+                       std::to_string(c.blocks.size()) + " block(s)\n# model: " + c.study.ida.describe_model() +
+                       "\n# grid: " + grid_note(c.study) + "\n";
+    for (std::size_t k = 0; k < c.files.size(); ++k)
+        text += "# record " + std::to_string(k) + ": " + c.files[k] + "\n";
+    return text;
+}
+
 }  // namespace
 
 int cmd_fragility(int argc, char** argv) {
-    int first = 0;
-    const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
-    const Args a = parse(argc, argv, first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
-                                             "--dt", "--jobs", "--output"});
-    const std::vector<double> alphas = list_in(a, "--alpha", 0, 0.7, "(0, 0.7)");
-    const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
-    const studies::FragilityStudyOptions o = options_from(a);
-    if (a.values.count("--output") && a.values.at("--output").empty()) throw UsageError("--output: an empty file name");
-    if (files.size() > 1000) throw UsageError("at most 1000 files");
+    const bool mpi = batch::launched_by_mpirun();
+    Command c;
+    parse_on_every_rank([&] { c = command_from(argc, argv, mpi); });
+    std::unique_ptr<batch::Ranks> ranks = join_if_launched("fragility");
 
+    // Every rank reads every record (the jobs of a rank take any of them); a
+    // failure is held until all have said how they fared.
     std::vector<std::unique_ptr<dynamics::SampledInput>> records;
-    for (const std::string& path : files) {
-        const records::Record r = load_record(path, a);
-        records.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
-        if (!(records.back()->peak() > 0)) throw std::runtime_error(path + ": the record never moves (PGA 0)");
+    jobs::FragilityJobs jobs;
+    std::exception_ptr failure;
+    try {
+        for (const std::string& path : c.files) {
+            const records::Record r = load_record(path, c.args);
+            records.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
+            if (!(records.back()->peak() > 0)) throw std::runtime_error(path + ": the record never moves (PGA 0)");
+            jobs.inputs.push_back(records.back().get());
+        }
+    } catch (const std::exception&) {
+        failure = std::current_exception();
     }
-    std::vector<const dynamics::GroundInput*> inputs;
-    for (const auto& r : records) inputs.push_back(r.get());
-    std::vector<studies::BlockShape> blocks;
-    for (double alpha : alphas)
-        for (double p : ps) blocks.push_back({alpha, p});
+    if (const int status = agree_on_setup(ranks.get(), failure, "rocking fragility")) return status;
+    jobs.blocks = c.blocks;
+    jobs.ida = c.study.ida;
+    jobs.description = description(c);
+    const batch::BatchPlan plan = jobs::fragility_plan(jobs);
 
-    const std::vector<BlockFragility> study = studies::fragility_study(inputs, blocks, o);
-    if (a.values.count("--output")) write_csv(a.values.at("--output"), files, o, study);
-    if (a.json) print_json(files, o, study);
-    else print_text(files, o, study);
+    // Each (block, record) IDA a job of the engine; rank 0 gets their rows in
+    // order, from memory or from the rows file, and fits each block.
+    std::vector<std::vector<studies::Ida>> idas(c.blocks.size());
+    const std::size_t n = c.files.size();
+    c.engine.collect = [&](std::size_t j, const std::string& row) {
+        idas[j / n].push_back(jobs::ida_from_row(row, j, jobs));
+    };
+    batch::run_batch(plan, c.engine, ranks.get());
+    if (ranks && ranks->rank() != 0) return 0;
+
+    std::vector<BlockFragility> study(c.blocks.size());
+    batch::run_ordered<BlockFragility>(
+        c.blocks.size(), batch::PoolOptions{c.engine.threads},
+        [&](std::size_t b) { return studies::block_fragility(c.blocks[b], std::move(idas[b]), c.study); },
+        [&](std::size_t b, BlockFragility& f) { study[b] = std::move(f); });
+    const Args& a = c.args;
+    if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, study);
+    if (a.json) print_json(c.files, c.study, study);
+    else print_text(c.files, c.study, study);
     return 0;
 }
 

@@ -153,13 +153,27 @@ void fit_block(BlockFragility& f, const FragilityStudyOptions& o) {
 
 }  // namespace
 
+BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, const FragilityStudyOptions& o) {
+    BlockFragility f;
+    f.block = block;
+    for (const Ida& ida : idas) f.points.push_back(ida.point);
+    f.idas = std::move(idas);
+    int collapsed = 0;
+    for (const IdaPoint& point : f.points) collapsed += point.collapsed;
+    f.empirical = empirical_curve(f.points);
+    // fit_lognormal needs two collapses; fewer is an answer (a block too
+    // stocky for these records), not an error.
+    if (collapsed < 2) f.no_fit = "fewer than 2 records overturn the block below q_max";
+    else fit_block(f, o);
+    return f;
+}
+
 std::vector<BlockFragility> fragility_study(const std::vector<const GroundInput*>& inputs,
                                             const std::vector<BlockShape>& blocks, const FragilityStudyOptions& o) {
     // Every (block, input) IDA is a job of the batch engine, block by block;
     // then every block's fit.  The pool hands the results back in this order,
     // so the study is the same on any number of threads.
-    std::vector<BlockFragility> out(blocks.size());
-    for (std::size_t b = 0; b < blocks.size(); ++b) out[b].block = blocks[b];
+    std::vector<std::vector<Ida>> idas(blocks.size());
     const std::size_t n = inputs.size();
     const batch::PoolOptions pool{o.threads};
     batch::run_ordered<Ida>(
@@ -167,24 +181,10 @@ std::vector<BlockFragility> fragility_study(const std::vector<const GroundInput*
         [&](std::size_t job) {
             return incremental_dynamic_analysis(*inputs[job % n], blocks[job / n].alpha, blocks[job / n].p, o.ida);
         },
-        [&](std::size_t job, Ida& ida) {
-            BlockFragility& f = out[job / n];
-            f.points.push_back(ida.point);
-            f.idas.push_back(std::move(ida));
-        });
+        [&](std::size_t job, Ida& ida) { idas[job / n].push_back(std::move(ida)); });
+    std::vector<BlockFragility> out(blocks.size());
     batch::run_ordered<BlockFragility>(
-        blocks.size(), pool,
-        [&](std::size_t b) {
-            BlockFragility f = std::move(out[b]);
-            int collapsed = 0;
-            for (const IdaPoint& point : f.points) collapsed += point.collapsed;
-            f.empirical = empirical_curve(f.points);
-            // fit_lognormal needs two collapses; fewer is an answer (a block too
-            // stocky for these records), not an error.
-            if (collapsed < 2) f.no_fit = "fewer than 2 records overturn the block below q_max";
-            else fit_block(f, o);
-            return f;
-        },
+        blocks.size(), pool, [&](std::size_t b) { return block_fragility(blocks[b], std::move(idas[b]), o); },
         [&](std::size_t b, BlockFragility& f) { out[b] = std::move(f); });
     return out;
 }

@@ -98,6 +98,13 @@ struct BlockFragility {
     std::vector<EmpiricalPoint> empirical;
 };
 
+// One block's fragility from its IDAs (one per input, in the inputs' order):
+// their points, the empirical curve and, with at least 2 collapses, the
+// lognormal fit with its bootstrap interval.  fragility_study's second half,
+// for a front end that ran the IDAs elsewhere (rocking fragility on the batch
+// engine's ranks).  Throws what bootstrap throws.
+BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, const FragilityStudyOptions& options);
+
 // For each block, the IDA of every input, the lognormal fit of their points
 // with its bootstrap interval, and the empirical curve.  Throws what
 // incremental_dynamic_analysis and bootstrap throw.

@@ -1,0 +1,157 @@
+#include "jobs/fragility_plan.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "batch/manifest.hpp"
+#include "batch/sha256.hpp"
+#include "harness/table.hpp"
+
+namespace rocking::jobs {
+
+namespace {
+
+using harness::format_number;
+using studies::Confirmation;
+using studies::Ida;
+using studies::IdaInterval;
+
+const char kColumns[] =
+    "job,alpha,p,record,q_input,q,collapsed,simulations,check_simulations,point_confirmation,point_detail,intervals,"
+    "error\n";
+constexpr std::size_t kCells = 13;
+
+// One line a row: a message's newlines would split it.
+std::string one_line(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    return text;
+}
+
+std::string bracket_cells(bool has, const studies::Bracket& b) {
+    return has ? format_number(b.safe) + "|" + format_number(b.collapse) : "|";
+}
+
+std::string intervals_cell(const Ida& ida) {
+    std::string text;
+    for (const IdaInterval& in : ida.intervals)
+        text += (text.empty() ? "" : ";") + format_number(in.from) + "|" + format_number(in.to) + "|" +
+                bracket_cells(in.has_lower, in.lower) + "|" + bracket_cells(in.has_upper, in.upper);
+    return text;
+}
+
+std::string ida_row(std::size_t job, std::size_t record, const Ida& ida) {
+    const bool checked = !ida.intervals.empty() && ida.intervals.front().has_lower;
+    const studies::Checked none;
+    const studies::Checked& check = checked ? ida.intervals.front().lower_check : none;
+    return std::to_string(job) + "," + format_number(ida.alpha) + "," + format_number(ida.p) + "," +
+           std::to_string(record) + "," + format_number(ida.q_input) + "," + format_number(ida.point.q) + "," +
+           (ida.point.collapsed ? "yes" : "no") + "," + std::to_string(ida.simulations) + "," +
+           std::to_string(ida.check_simulations) + "," + batch::csv_cell(studies::confirmation_name(check.confirmation)) +
+           "," + batch::csv_cell(one_line(check.detail)) + "," + intervals_cell(ida) + ",";
+}
+
+std::string failed_row(std::size_t job, const studies::BlockShape& block, std::size_t record, const std::string& error) {
+    return std::to_string(job) + "," + format_number(block.alpha) + "," + format_number(block.p) + "," +
+           std::to_string(record) + ",,,,,,,,," + batch::csv_cell(one_line(error));
+}
+
+// A cell of our own writing back to its number, exactly: anything else is a damaged file.
+double number_of(const std::string& cell, const std::string& what) {
+    char* end = nullptr;
+    const double v = std::strtod(cell.c_str(), &end);
+    if (cell.empty() || *end != '\0') throw std::runtime_error("not a number in " + what + ": '" + cell + "'");
+    return v;
+}
+
+long whole_of(const std::string& cell, const std::string& what) {
+    char* end = nullptr;
+    const long v = std::strtol(cell.c_str(), &end, 10);
+    if (cell.empty() || *end != '\0') throw std::runtime_error("not a whole number in " + what + ": '" + cell + "'");
+    return v;
+}
+
+Confirmation confirmation_of(const std::string& name) {
+    for (Confirmation c : {Confirmation::not_checked, Confirmation::confirmed, Confirmation::disagrees,
+                           Confirmation::ill_conditioned})
+        if (studies::confirmation_name(c) == name) return c;
+    throw std::runtime_error("an unknown check '" + name + "'");
+}
+
+std::vector<std::string> split(const std::string& text, char by) {
+    std::vector<std::string> parts;
+    std::size_t at = 0;
+    for (std::size_t next; (next = text.find(by, at)) != std::string::npos; at = next + 1)
+        parts.push_back(text.substr(at, next - at));
+    parts.push_back(text.substr(at));
+    return parts;
+}
+
+}  // namespace
+
+batch::BatchPlan fragility_plan(const FragilityJobs& jobs) {
+    batch::BatchPlan plan;
+    const std::size_t n = jobs.inputs.size();
+    plan.jobs = jobs.blocks.size() * n;
+    plan.header = jobs.description + "# one row per IDA, block by block, the records in the order given; columns: "
+                                     "docs/batch.md (\"Studies on the engine\")\n" +
+                  kColumns;
+    batch::Sha256 identity;
+    identity.update(plan.header);
+    for (const studies::BlockShape& b : jobs.blocks) identity.update(format_number(b.alpha) + "," + format_number(b.p) + ";");
+    identity.update(jobs.ida.describe_grid() + jobs.ida.describe_model() + jobs.ida.describe_checks());
+    for (const dynamics::SampledInput* input : jobs.inputs) {
+        identity.update(format_number(input->dt()) + ";");
+        identity.update(input->samples().data(), input->samples().size() * sizeof(double));
+    }
+    plan.digest = identity.hex();
+    plan.run = [&jobs, n](std::size_t j) {
+        const studies::BlockShape& block = jobs.blocks[j / n];
+        try {
+            const Ida ida = studies::incremental_dynamic_analysis(*jobs.inputs[j % n], block.alpha, block.p, jobs.ida);
+            return batch::JobRow{ida_row(j, j % n, ida), false};
+        } catch (const std::exception& e) {
+            return batch::JobRow{failed_row(j, block, j % n, e.what()), true};
+        }
+    };
+    return plan;
+}
+
+Ida ida_from_row(const std::string& row, std::size_t job, const FragilityJobs& jobs) {
+    const std::string where = "row " + std::to_string(job) + " of the IDAs";
+    const std::vector<std::string> c = batch::split_csv_line(row);
+    if (c.size() != kCells) throw std::runtime_error(where + ": " + std::to_string(c.size()) + " cells, not " +
+                                                     std::to_string(kCells));
+    if (whole_of(c[0], where) != static_cast<long>(job)) throw std::runtime_error(where + ": holds job " + c[0]);
+    const std::size_t n = jobs.inputs.size();
+    if (!c[12].empty()) throw std::runtime_error("the IDA of record " + std::to_string(job % n + 1) + " on alpha " + c[1] +
+                                                 ", p " + c[2] + ": " + c[12]);
+    Ida ida;
+    ida.alpha = number_of(c[1], where);
+    ida.p = number_of(c[2], where);
+    ida.q_input = number_of(c[4], where);
+    ida.point = {number_of(c[5], where), c[6] == "yes"};
+    ida.simulations = whole_of(c[7], where);
+    ida.check_simulations = whole_of(c[8], where);
+    if (!c[11].empty())
+        for (const std::string& text : split(c[11], ';')) {
+            const std::vector<std::string> v = split(text, '|');
+            if (v.size() != 6) throw std::runtime_error(where + ": an interval of " + std::to_string(v.size()) + " numbers");
+            IdaInterval in;
+            in.from = number_of(v[0], where);
+            in.to = number_of(v[1], where);
+            in.has_lower = !v[2].empty();
+            if (in.has_lower) in.lower = {number_of(v[2], where), number_of(v[3], where)};
+            in.has_upper = !v[4].empty();
+            if (in.has_upper) in.upper = {number_of(v[4], where), number_of(v[5], where)};
+            ida.intervals.push_back(in);
+        }
+    if (!ida.intervals.empty()) ida.intervals.front().lower_check = {confirmation_of(c[9]), c[10]};
+    const studies::BlockShape& block = jobs.blocks[job / n];
+    if (ida.alpha != block.alpha || ida.p != block.p)
+        throw std::runtime_error(where + ": alpha " + c[1] + ", p " + c[2] + " where the study has " +
+                                 format_number(block.alpha) + ", " + format_number(block.p));
+    return ida;
+}
+
+}  // namespace rocking::jobs
