@@ -241,7 +241,7 @@ TEST(BatchEngine, AResumeIsRefusedForAnotherManifestOrADamagedFile) {
     {
         // Two batches on one results file: the second is refused while the first runs.
         ResultsFile first({out, true}, kHeader, kDigest, 7);
-        refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7); }, "another rocking batch is writing");
+        refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7); }, "another run is writing");
     }
     // A byte of a counted row changed: its checksum no longer holds.
     std::string text = slurp(out + ".partial");

@@ -78,7 +78,8 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
     std::exception_ptr failure;
     if (lead && !in_memory) {
         try {
-            file = std::make_unique<ResultsFile>(ResultsOptions{options.output, options.resume, options.flush_seconds},
+            file = std::make_unique<ResultsFile>(ResultsOptions{options.output, options.resume, options.flush_seconds,
+                                                                 ResultsOptions{}.flush_bytes, options.jobs_from},
                                                  plan.header, plan.digest, plan.jobs);
         } catch (...) {
             failure = std::current_exception();

@@ -36,6 +36,7 @@ struct EngineOptions {
     double flush_seconds = 1.0;
     // The command that runs the batch, as its messages name it.
     std::string command = "rocking batch";
+    std::string jobs_from = "manifest";  // or "study": what a refused resume says has changed
     // A front end that needs the rows themselves (rocking fragility fits
     // them): on rank 0, every row's text in the jobs' order, once each.  With
     // an output file it is called after the batch has run to its end, from

@@ -100,7 +100,7 @@ void ResultsFile::start_fresh(const std::string& preamble) {
         fd_ = ::open(partial_path().c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
         if (fd_ < 0) throw ResultsError(partial_path() + ": cannot create: " + why(errno));
         if (::flock(fd_, LOCK_EX | LOCK_NB) != 0)
-            throw ResultsError(partial_path() + ": another rocking batch is writing these results (the file is locked)");
+            throw ResultsError(partial_path() + ": another run is writing these results (the file is locked)");
     }
     if (::ftruncate(fd_, 0) != 0 || ::lseek(fd_, 0, SEEK_SET) != 0)
         throw ResultsError(partial_path() + ": cannot write: " + why(errno));
@@ -117,7 +117,7 @@ bool ResultsFile::resume_partial(const std::string& digest) {
     fd_ = ::open(partial_path().c_str(), O_RDWR | O_CLOEXEC);
     if (fd_ < 0) throw ResultsError(partial_path() + ": cannot open: " + why(errno));
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0)
-        throw ResultsError(partial_path() + ": another rocking batch is writing these results (the file is locked)");
+        throw ResultsError(partial_path() + ": another run is writing these results (the file is locked)");
     if (!exists(state_path())) return false;
     const std::string state = slurp(state_path());
     unsigned long long jobs = 0, failed = 0, bytes = 0;
@@ -137,12 +137,13 @@ bool ResultsFile::resume_partial(const std::string& digest) {
                            " (the file was changed or damaged); remove both to start over");
     const std::string head = first_line(std::string(kept.begin(), kept.end()));
     if (head != kDigestLine + digest)
-        throw ResultsError("the manifest has changed since " + partial_path() + " was begun (its sha256 was " +
+        throw ResultsError("the " + options_.jobs_from + " has changed since " + partial_path() + " was begun (its sha256 was " +
                            head.substr(std::min(head.size(), sizeof kDigestLine - 1)) + ", it is now " + digest +
-                           "): the rows written are another manifest's jobs. Run the manifest it was begun with, or "
+                           "): the rows written are another " + options_.jobs_from + "'s jobs. Run the " + options_.jobs_from +
+                           " it was begun with, or "
                            "remove " + partial_path() + " and " + state_path() + " to start over");
     if (jobs > jobs_ || failed > jobs)
-        throw ResultsError(state_path() + ": counts " + std::to_string(jobs) + " jobs, more than the manifest's " +
+        throw ResultsError(state_path() + ": counts " + std::to_string(jobs) + " jobs, more than the " + options_.jobs_from + "'s " +
                            std::to_string(jobs_));
     if (::ftruncate(fd_, static_cast<off_t>(bytes)) != 0 || ::lseek(fd_, 0, SEEK_END) != static_cast<off_t>(bytes))
         throw ResultsError(partial_path() + ": cannot cut off the rows its state does not count: " + why(errno));
@@ -158,7 +159,7 @@ bool ResultsFile::resume_partial(const std::string& digest) {
 void ResultsFile::check_complete(const std::string& digest) {
     const std::string text = slurp(options_.path);
     if (first_line(text) != kDigestLine + digest)
-        throw ResultsError(options_.path + " holds no results of this manifest (its first line is not '" + kDigestLine +
+        throw ResultsError(options_.path + " holds no results of this " + options_.jobs_from + " (its first line is not '" + kDigestLine +
                            digest + "'): --resume has nothing to complete; run without --resume to replace it");
     const std::size_t last = text.rfind('\n', text.size() >= 2 ? text.size() - 2 : 0);
     const std::string end = text.substr(last == std::string::npos ? 0 : last + 1);

@@ -47,6 +47,8 @@ struct ResultsOptions {
     // memory the rows not yet written take.
     double flush_seconds = 1.0;
     std::size_t flush_bytes = std::size_t{4} << 20;
+    // What the jobs come from, as a refused resume names it: "manifest", "study".
+    std::string jobs_from = "manifest";
 };
 
 class ResultsFile {

@@ -242,6 +242,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     // Under mpirun each rank is one process on one core, as MPI runs are laid out.
     c.engine.threads = a.values.count("--jobs") || !mpi ? c.study.threads : 1;
     c.engine.command = "rocking fragility";
+    c.engine.jobs_from = "study";
     if (const char* every = std::getenv("ROCKING_BATCH_FLUSH_SECONDS")) c.engine.flush_seconds = std::atof(every);
     for (double alpha : alphas)
         for (double p : ps) c.blocks.push_back({alpha, p});

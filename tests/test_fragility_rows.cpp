@@ -1,0 +1,101 @@
+// rocking fragility's IDAs through the batch engine's rows (src/jobs/fragility_plan):
+// an IDA read back from its row is the IDA computed, field by field and bit by
+// bit, so that a study fitted from a rows file (resumed, or from other ranks)
+// is the study fitted in memory; a failed job's row carries its error to the
+// command, and a row of another job or block is refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "jobs/fragility_plan.hpp"
+#include "studies/ida.hpp"
+
+using namespace rocking;
+
+namespace {
+
+// A decaying 1 Hz sine of 0.35 g: the block rocks, and overturns on several intervals of q.
+dynamics::SampledInput decaying_sine() {
+    std::vector<double> a;
+    for (int k = 0; k <= 800; ++k) a.push_back(0.35 * std::exp(-0.3 * k * 0.01) * std::sin(2 * M_PI * k * 0.01));
+    return dynamics::SampledInput(a, 0.01, "decaying sine");
+}
+
+void expect_same(const studies::Ida& got, const studies::Ida& want) {
+    EXPECT_EQ(got.alpha, want.alpha);
+    EXPECT_EQ(got.p, want.p);
+    EXPECT_EQ(got.q_input, want.q_input);
+    EXPECT_EQ(got.point.q, want.point.q);
+    EXPECT_EQ(got.point.collapsed, want.point.collapsed);
+    EXPECT_EQ(got.simulations, want.simulations);
+    EXPECT_EQ(got.check_simulations, want.check_simulations);
+    ASSERT_EQ(got.intervals.size(), want.intervals.size());
+    for (std::size_t i = 0; i < want.intervals.size(); ++i) {
+        const studies::IdaInterval &g = got.intervals[i], &w = want.intervals[i];
+        EXPECT_EQ(g.from, w.from);
+        EXPECT_EQ(g.to, w.to);
+        EXPECT_EQ(g.has_lower, w.has_lower);
+        EXPECT_EQ(g.has_upper, w.has_upper);
+        EXPECT_EQ(g.lower.safe, w.lower.safe);
+        EXPECT_EQ(g.lower.collapse, w.lower.collapse);
+        EXPECT_EQ(g.upper.safe, w.upper.safe);
+        EXPECT_EQ(g.upper.collapse, w.upper.collapse);
+    }
+    if (!want.intervals.empty()) {
+        EXPECT_EQ(got.intervals.front().lower_check.confirmation, want.intervals.front().lower_check.confirmation);
+        EXPECT_EQ(got.intervals.front().lower_check.detail, want.intervals.front().lower_check.detail);
+    }
+}
+
+}  // namespace
+
+TEST(FragilityRows, AnIdaReadBackFromItsRowIsTheIdaComputed) {
+    const dynamics::SampledInput sine = decaying_sine();
+    jobs::FragilityJobs jobs;
+    jobs.inputs = {&sine};
+    jobs.blocks = {{0.1, 2.0}, {0.2, 1.0}, {0.05, 5.0}};
+    jobs.ida.points = 30;
+    const batch::BatchPlan plan = jobs::fragility_plan(jobs);
+    ASSERT_EQ(plan.jobs, 3u);
+    int several = 0;
+    for (std::size_t j = 0; j < plan.jobs; ++j) {
+        const batch::JobRow row = plan.run(j);
+        EXPECT_FALSE(row.failed) << row.text;
+        const studies::Ida want =
+            studies::incremental_dynamic_analysis(sine, jobs.blocks[j].alpha, jobs.blocks[j].p, jobs.ida);
+        several += want.intervals.size() > 1;
+        expect_same(jobs::ida_from_row(row.text, j, jobs), want);
+    }
+    EXPECT_GT(several, 0) << "no IDA with more than one interval: the round trip of a list is untested";
+}
+
+TEST(FragilityRows, AFailedJobsErrorReachesTheCommandAndAForeignRowIsRefused) {
+    const dynamics::SampledInput sine = decaying_sine();
+    const dynamics::SampledInput still(std::vector<double>(100, 0.0), 0.01, "still");
+    jobs::FragilityJobs jobs;
+    jobs.inputs = {&sine, &still};
+    jobs.blocks = {{0.1, 2.0}};
+    jobs.ida.points = 20;
+    const batch::BatchPlan plan = jobs::fragility_plan(jobs);
+    const batch::JobRow failed = plan.run(1);
+    EXPECT_TRUE(failed.failed);
+    try {
+        jobs::ida_from_row(failed.text, 1, jobs);
+        ADD_FAILURE() << "a failed row was read as an IDA";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("record 2"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("never moves"), std::string::npos) << e.what();
+    }
+    const batch::JobRow row = plan.run(0);
+    EXPECT_THROW(jobs::ida_from_row(row.text, 1, jobs), std::runtime_error);  // job 0's row as job 1's
+    jobs::FragilityJobs other = jobs;
+    other.blocks = {{0.1, 2.5}};
+    EXPECT_THROW(jobs::ida_from_row(row.text, 0, other), std::runtime_error);  // another block's
+    EXPECT_THROW(jobs::ida_from_row(row.text.substr(0, row.text.size() / 2), 0, jobs), std::exception);
+    // Two different studies have two different identities, and one study always the same.
+    EXPECT_NE(jobs::fragility_plan(other).digest, plan.digest);
+    EXPECT_EQ(jobs::fragility_plan(jobs).digest, plan.digest);
+}
