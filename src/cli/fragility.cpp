@@ -201,18 +201,6 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
     write_output(t, csv);
 }
 
-// The flags without a value, taken out before the generic parser.
-std::vector<char*> without_switches(int argc, char** argv, bool& resume, bool& quiet) {
-    std::vector<char*> args(argv, argv + argc);
-    for (auto it = args.begin() + (argc > 2 ? 2 : argc); it != args.end();) {
-        const std::string flag = *it;
-        if (flag == "--resume") resume = true, it = args.erase(it);
-        else if (flag == "--quiet") quiet = true, it = args.erase(it);
-        else ++it;
-    }
-    return args;
-}
-
 struct Command {
     std::vector<std::string> files;
     Args args;
@@ -223,7 +211,7 @@ struct Command {
 
 Command command_from(int argc, char** argv, bool mpi) {
     Command c;
-    std::vector<char*> args = without_switches(argc, argv, c.engine.resume, c.engine.quiet);
+    std::vector<char*> args = without_engine_switches(argc, argv, c.engine.resume, c.engine.quiet);
     const int count = static_cast<int>(args.size());
     int first = 0;
     c.files = file_arguments(count, args.data(), first, kUsage);

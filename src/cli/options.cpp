@@ -173,6 +173,17 @@ Args parse(int argc, char** argv, int first, const std::vector<std::string>& all
     return a;
 }
 
+std::vector<char*> without_engine_switches(int argc, char** argv, bool& resume, bool& quiet) {
+    std::vector<char*> args(argv, argv + argc);
+    for (auto it = args.begin() + (argc > 2 ? 2 : argc); it != args.end();) {
+        const std::string flag = *it;
+        if (flag == "--resume") resume = true, it = args.erase(it);
+        else if (flag == "--quiet") quiet = true, it = args.erase(it);
+        else ++it;
+    }
+    return args;
+}
+
 PulseTrain train_from(const Args& a, std::string& equation) {
     const bool has_case = a.values.count("--case"), has_train = a.values.count("--train");
     if (has_case == has_train) throw UsageError("give exactly one of --case and --train");

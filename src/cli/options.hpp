@@ -50,6 +50,10 @@ std::string file_argument(int argc, char** argv, int at, const std::string& usag
 // index.  Throws UsageError (with the usage) when there is none.
 std::vector<std::string> file_arguments(int argc, char** argv, int& first_option, const std::string& usage);
 Args parse(int argc, char** argv, int first, const std::vector<std::string>& allowed);
+// argv without --resume and --quiet, the batch engine's switches of a study
+// on it (fragility, spectrum): parse() knows only --json among the options
+// without a value.
+std::vector<char*> without_engine_switches(int argc, char** argv, bool& resume, bool& quiet);
 // table written to path (atomically), a failure named as --output's.
 void write_output(const harness::Table& table, const std::string& path);
 PulseTrain train_from(const Args& a, std::string& equation);

@@ -1,18 +1,17 @@
 #include "jobs/fragility_plan.hpp"
 
-#include <cstdlib>
 #include <stdexcept>
 
 #include "batch/manifest.hpp"
 #include "batch/sha256.hpp"
 #include "harness/table.hpp"
+#include "jobs/row_cells.hpp"
 
 namespace rocking::jobs {
 
 namespace {
 
 using harness::format_number;
-using studies::Confirmation;
 using studies::Ida;
 using studies::IdaInterval;
 
@@ -20,13 +19,6 @@ const char kColumns[] =
     "job,alpha,p,record,q_input,q,collapsed,simulations,check_simulations,point_confirmation,point_detail,intervals,"
     "error\n";
 constexpr std::size_t kCells = 13;
-
-// One line a row: a message's newlines would split it.
-std::string one_line(std::string text) {
-    for (char& c : text)
-        if (c == '\n' || c == '\r') c = ' ';
-    return text;
-}
 
 std::string bracket_cells(bool has, const studies::Bracket& b) {
     return has ? format_number(b.safe) + "|" + format_number(b.collapse) : "|";
@@ -54,37 +46,6 @@ std::string ida_row(std::size_t job, std::size_t record, const Ida& ida) {
 std::string failed_row(std::size_t job, const studies::BlockShape& block, std::size_t record, const std::string& error) {
     return std::to_string(job) + "," + format_number(block.alpha) + "," + format_number(block.p) + "," +
            std::to_string(record) + ",,,,,,,,," + batch::csv_cell(one_line(error));
-}
-
-// A cell of our own writing back to its number, exactly: anything else is a damaged file.
-double number_of(const std::string& cell, const std::string& what) {
-    char* end = nullptr;
-    const double v = std::strtod(cell.c_str(), &end);
-    if (cell.empty() || *end != '\0') throw std::runtime_error("not a number in " + what + ": '" + cell + "'");
-    return v;
-}
-
-long whole_of(const std::string& cell, const std::string& what) {
-    char* end = nullptr;
-    const long v = std::strtol(cell.c_str(), &end, 10);
-    if (cell.empty() || *end != '\0') throw std::runtime_error("not a whole number in " + what + ": '" + cell + "'");
-    return v;
-}
-
-Confirmation confirmation_of(const std::string& name) {
-    for (Confirmation c : {Confirmation::not_checked, Confirmation::confirmed, Confirmation::disagrees,
-                           Confirmation::ill_conditioned})
-        if (studies::confirmation_name(c) == name) return c;
-    throw std::runtime_error("an unknown check '" + name + "'");
-}
-
-std::vector<std::string> split(const std::string& text, char by) {
-    std::vector<std::string> parts;
-    std::size_t at = 0;
-    for (std::size_t next; (next = text.find(by, at)) != std::string::npos; at = next + 1)
-        parts.push_back(text.substr(at, next - at));
-    parts.push_back(text.substr(at));
-    return parts;
 }
 
 }  // namespace
