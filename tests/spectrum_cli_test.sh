@@ -2,12 +2,17 @@
 # rocking spectrum on the command line: clear errors with their exit codes,
 # strict JSON, the CSV and the PNG whole, and every boundary it prints seen
 # as a bracket by two other subcommands (simulate at both of its ends,
-# collapse for Table 1's p).  The boundaries' places against known answers
-# are the unit tests' (tests/test_spectrum.cpp).
+# collapse for Table 1's p).  On the batch engine, the same JSON bytes on any
+# threads, from a rows file, from a resume of a finished or a killed one,
+# and under mpirun on 2 and 3 ranks; a resume of another study refused.  The
+# boundaries' places against known answers are the unit tests'
+# (tests/test_spectrum.cpp), the rows' round trip too (tests/test_study_rows.cpp).
 #
-#   tests/spectrum_cli_test.sh ROCKING   (the last check needs ../shared/records or $ROCKING_RECORDS)
+#   tests/spectrum_cli_test.sh ROCKING [MPI]   (MPI: "1" when built with MPI; the last check
+#                                              needs ../shared/records or $ROCKING_RECORDS)
 set -u
-rocking="$1"
+rocking=$(realpath "$1")
+built_with_mpi="${2:-0}"
 records="${ROCKING_RECORDS:-$(dirname "$0")/../../shared/records}"
 py=/usr/bin/python3
 tmp=$(mktemp -d) || exit 1
@@ -69,6 +74,74 @@ if [[ "$out" == *nan* || "$out" == *inf* ]]; then echo "FAIL: nan or inf in the 
 "${run[@]}" --alpha 0.2,0.1,0.15 --points 40 --json --jobs 3 >"$tmp/j3.json" 2>&1
 if cmp -s "$tmp/j1.json" "$tmp/j3.json"; then echo "ok: --jobs 1 and 3 identical"; else echo "FAIL: --jobs 1 and 3 differ"; fail=1; fi
 expect "jobs refused"          2 "--jobs must be an integer from 1 to 4096 (got 'x')" "${run[@]}" --alpha 0.1 --jobs x
+
+# ---- On the batch engine: each alpha a job, the same bytes however its rows came.
+same() {  # description, file, reference
+    if cmp -s "$2" "$3"; then echo "ok: $1"; else echo "FAIL: $1: differs from $3"; fail=1; fi
+}
+study=("${run[@]}" --alpha 0.2,0.1,0.15 --points 40 --json)
+"${study[@]}" --jobs 2 >"$tmp/j2.json" 2>&1
+same "--jobs 2 = --jobs 1" "$tmp/j2.json" "$tmp/j1.json"
+"${study[@]}" --rows "$tmp/r.rows" >"$tmp/rows.json" 2>"$tmp/rows.err"
+same "--rows = in memory" "$tmp/rows.json" "$tmp/j1.json"
+expect "the rows file is finished" 0 "# end: 3 jobs, 0 failed" tail -n 1 "$tmp/r.rows"
+if [[ -s "$tmp/rows.err" ]]; then echo "FAIL: --rows said on stderr: $(head -3 "$tmp/rows.err")"; fail=1; fi
+"${study[@]}" --rows "$tmp/r.rows" --resume >"$tmp/resumed.json" 2>&1
+same "--resume of the finished rows = in memory" "$tmp/resumed.json" "$tmp/j1.json"
+expect "resume needs rows"     2 "--resume needs --rows FILE" "${study[@]}" --resume
+expect "resume of other alphas" 1 "holds no results of this manifest" "${study[@]/0.2,0.1,0.15/0.2,0.1}" --rows "$tmp/r.rows" --resume
+expect "empty rows name"       2 "--rows: an empty file name" "${study[@]}" --rows ""
+expect "rows in no folder"     1 "$tmp/no/such/dir/r.rows" "${study[@]}" --rows "$tmp/no/such/dir/r.rows"
+
+# A study killed (SIGKILL) once some rows are on disk, then resumed: the JSON
+# of the uninterrupted run.  A longer record (60 s, decaying slowly) and 20
+# alphas, so that it runs for seconds; ROCKING_BATCH_FLUSH_SECONDS=0 commits
+# each row as it comes.
+long="$tmp/long.txt"
+$py -c "
+import math
+for k in range(6000):
+    t = k * 0.01
+    print('%.10f' % (0.3 * math.sin(2 * math.pi * t) * math.exp(-t / 30)))" >"$long"
+many=$(seq -s, 0.02 0.02 0.40)
+big=("$rocking" spectrum "$long" --unit g --dt 0.01 --alpha "$many" --points 2000 --json)
+"${big[@]}" >"$tmp/big.json" 2>&1
+ROCKING_BATCH_FLUSH_SECONDS=0 "${big[@]}" --rows "$tmp/k.rows" >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1200); do
+    grep -qs 'jobs [1-9]' "$tmp/k.rows.partial.state" && break
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.05
+done
+kill -KILL "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
+kept=$(sed -n 's/.* jobs \([0-9]*\) failed.*/\1/p' "$tmp/k.rows.partial.state" 2>/dev/null)
+if [[ -e "$tmp/k.rows" || -z "$kept" || $kept -ge 20 || $kept -lt 1 ]]; then
+    echo "FAIL: the kill did not leave a partial rows file (rows kept: '${kept}'; finished: $([[ -e "$tmp/k.rows" ]] && echo yes || echo no))"; fail=1
+else
+    echo "ok: killed with $kept of 20 rows on disk"
+    expect "resume of a partial with other alphas" 1 "has changed since $tmp/k.rows.partial was begun" \
+        "${big[@]/$many/0.02,0.04}" --rows "$tmp/k.rows" --resume
+    "${big[@]}" --rows "$tmp/k.rows" --resume >"$tmp/killed.json" 2>"$tmp/killed.err"
+    same "a killed study resumed = uninterrupted" "$tmp/killed.json" "$tmp/big.json"
+    expect "the resumed rows file is finished" 0 "# end: 20 jobs, 0 failed" tail -n 1 "$tmp/k.rows"
+fi
+
+# Under mpirun (2 and 3 ranks on 2 cores): the bytes of the threads.
+if [[ $built_with_mpi == 1 ]] && command -v mpirun >/dev/null; then
+    # Tests run as root in containers: OpenMPI refuses root unless told.
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    for np in 2 3; do
+        timeout 300 mpirun --oversubscribe -np $np "${study[@]}" >"$tmp/np$np.json" 2>"$tmp/np$np.err"
+        code=$?
+        if [[ $code != 0 ]]; then echo "FAIL: -np $np exits $code: $(head -3 "$tmp/np$np.err")"; fail=1; fi
+        same "-np $np = threads" "$tmp/np$np.json" "$tmp/j1.json"
+    done
+    timeout 300 mpirun --oversubscribe -np 2 "${study[@]}" --rows "$tmp/np2.rows" >"$tmp/np2rows.json" 2>/dev/null
+    same "-np 2 with --rows = threads" "$tmp/np2rows.json" "$tmp/j1.json"
+    same "-np 2's rows file = the threads'" "$tmp/np2.rows" "$tmp/r.rows"
+else
+    echo "skipped: mpirun checks (built with MPI: $built_with_mpi; mpirun: $(command -v mpirun || echo none))"
+fi
 
 # JSON, strict (no NaN or Infinity, nothing after the object), with the CSV
 # and the PNG from the same run.

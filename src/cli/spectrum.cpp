@@ -6,19 +6,24 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "batch/pool.hpp"
+#include "batch/engine.hpp"
+#include "batch/ranks.hpp"
+#include "cli/cluster_front.hpp"
 #include "cli/options.hpp"
 #include "harness/atomic_file.hpp"
 #include "harness/table.hpp"
+#include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
 #include "studies/spectrum.hpp"
 
@@ -33,12 +38,9 @@ using studies::SpectrumOptions;
 
 const char* kUsage =
     "usage: rocking spectrum FILE --alpha A[,A...] [--p-min P] [--p-max P] [--points N] [--unit U [--dt DT]] "
-    "[--jobs N] [--output CSV] [--png PNG] [--json]";
+    "[--jobs N] [--output CSV] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]";
 
-struct Study {
-    Spectrum spectrum;
-    records::CollapseResult table1;
-};
+using Study = jobs::SpectrumStudy;
 
 std::string g7(double v) { return significant(v, 7); }
 
@@ -323,36 +325,83 @@ void write_png(const std::string& png, const records::Record& r, const SpectrumO
     file->commit();
 }
 
+struct Command {
+    std::string path;
+    Args args;
+    std::vector<double> alphas;
+    SpectrumOptions grid;
+    batch::EngineOptions engine;
+};
+
+Command command_from(int argc, char** argv, bool mpi) {
+    Command c;
+    std::vector<char*> args = without_engine_switches(argc, argv, c.engine.resume, c.engine.quiet);
+    const int count = static_cast<int>(args.size());
+    c.path = file_argument(count, args.data(), 2, kUsage);
+    c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--jobs",
+                                           "--output", "--png", "--rows"});
+    const Args& a = c.args;
+    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
+    c.alphas = alphas_from(a.values.at("--alpha"));
+    c.grid = grid_from(a);
+    for (const char* flag : {"--output", "--png", "--rows"})
+        if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
+    if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
+    if (c.engine.resume && c.engine.output.empty())
+        throw UsageError("--resume needs --rows FILE: the spectra of an interrupted study are resumed from that file");
+    // Under mpirun each rank is one process on one core, as MPI runs are laid out.
+    c.engine.threads = a.values.count("--jobs") || !mpi ? jobs_option(a) : 1;
+    c.engine.command = "rocking spectrum";
+    if (const char* every = std::getenv("ROCKING_BATCH_FLUSH_SECONDS")) c.engine.flush_seconds = std::atof(every);
+    return c;
+}
+
+// The '#' lines of the rows file: what the spectra are of.
+std::string description(const Command& c) {
+    return "# rocking spectrum: the spectra of " + c.path + " at " + std::to_string(c.alphas.size()) +
+           " alpha(s)\n# model: " + c.grid.describe_model() + "\n# grid: " + grid_text(c.grid) +
+           "\n# refinement: " + c.grid.describe_refinement() + "\n";
+}
+
 }  // namespace
 
 int cmd_spectrum(int argc, char** argv) {
-    const std::string path = file_argument(argc, argv, 2, kUsage);
-    const Args a = parse(argc, argv, 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--jobs", "--output", "--png"});
-    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
-    const std::vector<double> alphas = alphas_from(a.values.at("--alpha"));
-    const SpectrumOptions o = grid_from(a);
-    for (const char* flag : {"--output", "--png"})
-        if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
-    const records::Record r = load_record(path, a);
-    const dynamics::SampledInput input(r.in_g(dynamics::kGravity), r.dt, r.name);
-    // Each alpha a job of the batch engine, delivered in the given order.
+    const bool mpi = batch::launched_by_mpirun();
+    Command c;
+    parse_on_every_rank([&] { c = command_from(argc, argv, mpi); });
+    std::unique_ptr<batch::Ranks> ranks = join_if_launched("spectrum");
+
+    // Every rank reads the record (its jobs need it); a failure is held until
+    // all have said how they fared.
+    std::optional<records::Record> r;
+    std::unique_ptr<dynamics::SampledInput> input;
+    std::exception_ptr failure;
+    try {
+        r = load_record(c.path, c.args);
+        input = std::make_unique<dynamics::SampledInput>(r->in_g(dynamics::kGravity), r->dt, r->name);
+    } catch (const std::exception&) {
+        failure = std::current_exception();
+    }
+    if (const int status = agree_on_setup(ranks.get(), failure, "rocking spectrum")) return status;
+    const jobs::SpectrumJobs jobs{input.get(), c.alphas, c.grid, description(c)};
+    const batch::BatchPlan plan = jobs::spectrum_plan(jobs);
+
+    // Each alpha a job of the engine; rank 0 gets the rows in order, from
+    // memory or from the rows file, and reads them after the batch: a failed
+    // alpha's error thrown from inside it would end rank 0 while the other
+    // ranks still run, and leave a rows file unfinished.
+    std::vector<std::string> rows(c.alphas.size());
+    c.engine.collect = [&](std::size_t k, const std::string& row) { rows[k] = row; };
+    batch::run_batch(plan, c.engine, ranks.get());
+    if (ranks && ranks->rank() != 0) return 0;
+
     std::vector<Study> studies;
-    batch::run_ordered<Study>(
-        alphas.size(), batch::PoolOptions{jobs_option(a)},
-        [&](std::size_t k) {
-            // Table 1's bracket joins the grid: an island its 1 % scan met and
-            // the grid stepped over is then refined as well (docs/spectrum.md).
-            const records::CollapseResult table1 = records::smallest_collapse_p(input, alphas[k], {});
-            SpectrumOptions with_table1 = o;
-            if (table1.found) with_table1.extra_points = {table1.p};
-            if (table1.found && !table1.below_range()) with_table1.extra_points.push_back(table1.p_safe);
-            return Study{studies::rocking_spectrum(input, alphas[k], with_table1), table1};
-        },
-        [&](std::size_t, Study& s) { studies.push_back(std::move(s)); });
-    if (a.values.count("--output")) write_csv(a.values.at("--output"), path, r, o, studies);
-    if (a.values.count("--png")) write_png(a.values.at("--png"), r, o, studies);
-    if (a.json) print_json(path, r, o, studies);
-    else print_text(path, r, o, studies);
+    for (std::size_t k = 0; k < rows.size(); ++k) studies.push_back(jobs::study_from_row(rows[k], k, jobs));
+    const Args& a = c.args;
+    if (a.values.count("--output")) write_csv(a.values.at("--output"), c.path, *r, c.grid, studies);
+    if (a.values.count("--png")) write_png(a.values.at("--png"), *r, c.grid, studies);
+    if (a.json) print_json(c.path, *r, c.grid, studies);
+    else print_text(c.path, *r, c.grid, studies);
     return 0;
 }
 
