@@ -89,7 +89,7 @@ if [[ -s "$tmp/rows.err" ]]; then echo "FAIL: --rows said on stderr: $(head -3 "
 "${study[@]}" --rows "$tmp/r.rows" --resume >"$tmp/resumed.json" 2>&1
 same "--resume of the finished rows = in memory" "$tmp/resumed.json" "$tmp/j1.json"
 expect "resume needs rows"     2 "--resume needs --rows FILE" "${study[@]}" --resume
-expect "resume of other alphas" 1 "holds no results of this manifest" "${study[@]/0.2,0.1,0.15/0.2,0.1}" --rows "$tmp/r.rows" --resume
+expect "resume of other alphas" 1 "holds no results of this study" "${study[@]/0.2,0.1,0.15/0.2,0.1}" --rows "$tmp/r.rows" --resume
 expect "empty rows name"       2 "--rows: an empty file name" "${study[@]}" --rows ""
 expect "rows in no folder"     1 "$tmp/no/such/dir/r.rows" "${study[@]}" --rows "$tmp/no/such/dir/r.rows"
 

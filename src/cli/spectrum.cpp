@@ -352,6 +352,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     // Under mpirun each rank is one process on one core, as MPI runs are laid out.
     c.engine.threads = a.values.count("--jobs") || !mpi ? jobs_option(a) : 1;
     c.engine.command = "rocking spectrum";
+    c.engine.jobs_from = "study";
     if (const char* every = std::getenv("ROCKING_BATCH_FLUSH_SECONDS")) c.engine.flush_seconds = std::atof(every);
     return c;
 }
