@@ -7,6 +7,7 @@
 #include "batch/pool.hpp"
 #include "common.hpp"
 #include "dynamics/ground_input.hpp"
+#include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
 #include "studies/eq27_at_scale.hpp"
 #include "studies/ida.hpp"
@@ -49,10 +50,7 @@ std::unique_ptr<dynamics::SampledInput> input_of(const records::Record& r) {
 
 // ---- rocking spectrum ----
 
-struct Study {
-    studies::Spectrum spectrum;
-    records::CollapseResult table1;
-};
+using Study = jobs::SpectrumStudy;
 
 py::object boundary(const studies::Interval& in, bool lower) {
     if (!(lower ? in.has_lower : in.has_upper)) return py::none();
@@ -86,13 +84,7 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
         // As rocking spectrum: Table 1's bracket joins each alpha's grid.
         batch::run_ordered<Study>(
             alphas.size(), batch::PoolOptions{threads},
-            [&](std::size_t k) {
-                const records::CollapseResult table1 = records::smallest_collapse_p(*input, alphas[k], {});
-                studies::SpectrumOptions with_table1 = o;
-                if (table1.found) with_table1.extra_points = {table1.p};
-                if (table1.found && !table1.below_range()) with_table1.extra_points.push_back(table1.p_safe);
-                return Study{studies::rocking_spectrum(*input, alphas[k], with_table1), table1};
-            },
+            [&](std::size_t k) { return jobs::spectrum_study(*input, alphas[k], o); },
             [&](std::size_t, Study& s) { found.push_back(std::move(s)); });
     }
     py::dict out = result();

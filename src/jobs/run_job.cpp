@@ -6,6 +6,7 @@
 
 #include "records/collapse.hpp"
 #include "studies/ida.hpp"
+#include "jobs/spectrum_plan.hpp"
 #include "studies/spectrum.hpp"
 
 namespace rocking::jobs {
@@ -88,10 +89,7 @@ Figures spectrum(const Job& job, const SampledInput& input) {
     o.p_max = job.p_max;
     o.points = job.points;
     // Table 1's bracket joins the grid, as in rocking spectrum (docs/spectrum.md).
-    const records::CollapseResult table1 = records::smallest_collapse_p(input, job.alpha, o.model);
-    if (table1.found) o.extra_points = {table1.p};
-    if (table1.found && !table1.below_range()) o.extra_points.push_back(table1.p_safe);
-    const studies::Spectrum s = studies::rocking_spectrum(input, job.alpha, o);
+    const studies::Spectrum s = spectrum_study(input, job.alpha, o).spectrum;
     Figures f;
     f.collapse = !s.intervals.empty();
     if (f.collapse) {

@@ -191,7 +191,7 @@ std::string digest_of(const batch::BatchPlan& plan, const SpectrumJobs& jobs) {
 }  // namespace
 
 SpectrumStudy spectrum_study(const dynamics::GroundInput& input, double alpha, const studies::SpectrumOptions& grid) {
-    const records::CollapseResult table1 = records::smallest_collapse_p(input, alpha, {});
+    const records::CollapseResult table1 = records::smallest_collapse_p(input, alpha, grid.model);
     studies::SpectrumOptions with_table1 = grid;
     if (table1.found) with_table1.extra_points = {table1.p};
     if (table1.found && !table1.below_range()) with_table1.extra_points.push_back(table1.p_safe);

@@ -44,8 +44,8 @@ struct SpectrumStudy {
     records::CollapseResult table1;
 };
 
-// Table 1's search (records::smallest_collapse_p), its bracket added to the
-// grid as extra points (an island its 1 % scan met and the grid stepped over
+// Table 1's search (records::smallest_collapse_p, on the grid's model: Table
+// 1's own by default), its bracket added to the grid as extra points (an island its 1 % scan met and the grid stepped over
 // is then refined too: docs/spectrum.md), then the spectrum on that grid.
 // Throws what the two throw.
 SpectrumStudy spectrum_study(const dynamics::GroundInput& input, double alpha, const studies::SpectrumOptions& grid);
