@@ -34,15 +34,8 @@ struct Options {
 };
 
 Options options_from(int argc, char** argv, bool mpi) {
-    std::vector<char*> args(argv, argv + argc);
     Options o;
-    // The flags without a value, before the generic parser.
-    for (auto it = args.begin() + (argc > 2 ? 2 : argc); it != args.end();) {
-        const std::string flag = *it;
-        if (flag == "--resume") o.engine.resume = true, it = args.erase(it);
-        else if (flag == "--quiet") o.engine.quiet = true, it = args.erase(it);
-        else ++it;
-    }
+    std::vector<char*> args = without_engine_switches(argc, argv, o.engine.resume, o.engine.quiet);
     const int count = static_cast<int>(args.size());
     o.manifest = file_argument(count, args.data(), 2, kUsage);
     const Args a = parse(count, args.data(), 3, {"--jobs", "--output"});
@@ -53,11 +46,7 @@ Options options_from(int argc, char** argv, bool mpi) {
     }
     if (o.engine.resume && o.engine.output.empty())
         throw UsageError("--resume needs --output: rows written to standard output cannot be resumed");
-    // How often the rows reach the disk (results_file.hpp): every second,
-    // or as the tests ask, to be killed between many flushes.
-    if (const char* every = std::getenv("ROCKING_BATCH_FLUSH_SECONDS")) o.engine.flush_seconds = std::atof(every);
-    // Under mpirun each rank is one process on one core, as MPI runs are laid out.
-    o.engine.threads = a.values.count("--jobs") || !mpi ? jobs_option(a) : 1;
+    set_threads_and_flush(o.engine, a, mpi);
     return o;
 }
 

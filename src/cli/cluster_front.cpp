@@ -56,4 +56,9 @@ int agree_on_setup(batch::Ranks* ranks, std::exception_ptr failure, const std::s
     return all;
 }
 
+void set_threads_and_flush(batch::EngineOptions& engine, const Args& a, bool mpi) {
+    engine.threads = a.values.count("--jobs") || !mpi ? jobs_option(a) : 1;
+    if (const char* every = std::getenv("ROCKING_BATCH_FLUSH_SECONDS")) engine.flush_seconds = std::atof(every);
+}
+
 }  // namespace rocking::cli

@@ -9,7 +9,9 @@
 #include <memory>
 #include <string>
 
+#include "batch/engine.hpp"
 #include "batch/ranks.hpp"
+#include "cli/options.hpp"
 
 namespace rocking::cli {
 
@@ -37,5 +39,12 @@ void parse_on_every_rank(const std::function<void()>& parse);
 // failure said once (by rank 0, or by a rank that failed where rank 0 did
 // not) before any rank ends.  Without ranks a failure is rethrown.
 int agree_on_setup(batch::Ranks* ranks, std::exception_ptr failure, const std::string& command);
+
+// What every front end of the engine sets alike from its command line: its
+// threads (--jobs, by default the cores; under mpirun one a rank unless
+// --jobs, each rank a process on a core as MPI runs are laid out), and how
+// often the rows reach the disk (results_file.hpp: every second, or as the
+// tests ask through ROCKING_BATCH_FLUSH_SECONDS, to be killed between many flushes).
+void set_threads_and_flush(batch::EngineOptions& engine, const Args& a, bool mpi);
 
 }  // namespace rocking::cli

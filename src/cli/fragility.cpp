@@ -227,11 +227,9 @@ Command command_from(int argc, char** argv, bool mpi) {
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
         throw UsageError("--resume needs --rows FILE: the IDAs of an interrupted study are resumed from that file");
-    // Under mpirun each rank is one process on one core, as MPI runs are laid out.
-    c.engine.threads = a.values.count("--jobs") || !mpi ? c.study.threads : 1;
+    set_threads_and_flush(c.engine, a, mpi);
     c.engine.command = "rocking fragility";
     c.engine.jobs_from = "study";
-    if (const char* every = std::getenv("ROCKING_BATCH_FLUSH_SECONDS")) c.engine.flush_seconds = std::atof(every);
     for (double alpha : alphas)
         for (double p : ps) c.blocks.push_back({alpha, p});
     return c;

@@ -349,11 +349,9 @@ Command command_from(int argc, char** argv, bool mpi) {
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
         throw UsageError("--resume needs --rows FILE: the spectra of an interrupted study are resumed from that file");
-    // Under mpirun each rank is one process on one core, as MPI runs are laid out.
-    c.engine.threads = a.values.count("--jobs") || !mpi ? jobs_option(a) : 1;
+    set_threads_and_flush(c.engine, a, mpi);
     c.engine.command = "rocking spectrum";
     c.engine.jobs_from = "study";
-    if (const char* every = std::getenv("ROCKING_BATCH_FLUSH_SECONDS")) c.engine.flush_seconds = std::atof(every);
     return c;
 }
 
