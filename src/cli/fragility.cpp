@@ -275,14 +275,24 @@ int cmd_fragility(int argc, char** argv) {
     const batch::BatchPlan plan = jobs::fragility_plan(jobs);
 
     // Each (block, record) IDA a job of the engine; rank 0 gets their rows in
-    // order, from memory or from the rows file, and fits each block.
+    // order, from memory or from the rows file, and fits each block.  A failed
+    // IDA's error is held until the batch ends: thrown from inside it, it
+    // would end rank 0 while the other ranks still run, and leave the rows
+    // file unfinished.
     std::vector<std::vector<studies::Ida>> idas(c.blocks.size());
     const std::size_t n = c.files.size();
+    std::exception_ptr first_error;
     c.engine.collect = [&](std::size_t j, const std::string& row) {
-        idas[j / n].push_back(jobs::ida_from_row(row, j, jobs));
+        if (first_error) return;
+        try {
+            idas[j / n].push_back(jobs::ida_from_row(row, j, jobs));
+        } catch (const std::exception&) {
+            first_error = std::current_exception();
+        }
     };
     batch::run_batch(plan, c.engine, ranks.get());
     if (ranks && ranks->rank() != 0) return 0;
+    if (first_error) std::rethrow_exception(first_error);
 
     std::vector<BlockFragility> study(c.blocks.size());
     batch::run_ordered<BlockFragility>(
