@@ -23,26 +23,13 @@
 #include "batch/progress.hpp"
 #include "batch/results_file.hpp"
 #include "batch/sha256.hpp"
+#include "test_util.hpp"
 
 using namespace rocking::batch;
 
 namespace {
 
-// A folder of the test's own, removed with everything in it when the test binary ends.
-std::string temp_dir() {
-    struct Folders {
-        std::vector<std::string> made;
-        ~Folders() {
-            for (const std::string& dir : made) std::filesystem::remove_all(dir);
-        }
-    };
-    static Folders folders;
-    char pattern[] = "/tmp/rocking-batch-test.XXXXXX";
-    const char* dir = mkdtemp(pattern);
-    if (!dir) throw std::runtime_error("mkdtemp failed");
-    folders.made.push_back(dir);
-    return dir;
-}
+std::string temp_dir() { return rocking::testing::temp_folder("rocking-batch-test"); }
 
 std::string slurp(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -25,6 +25,7 @@
 #include "records/record.hpp"
 #include "studies/ida.hpp"
 #include "studies/spectrum.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using jobs::Columns;
@@ -34,21 +35,7 @@ using jobs::parse_job;
 
 namespace {
 
-// A folder of the test's own, removed with everything in it when the test binary ends.
-std::string temp_dir() {
-    struct Folders {
-        std::vector<std::string> made;
-        ~Folders() {
-            for (const std::string& dir : made) std::filesystem::remove_all(dir);
-        }
-    };
-    static Folders folders;
-    char pattern[] = "/tmp/rocking-jobs-test.XXXXXX";
-    const char* dir = mkdtemp(pattern);
-    if (!dir) throw std::runtime_error("mkdtemp failed");
-    folders.made.push_back(dir);
-    return dir;
-}
+std::string temp_dir() { return rocking::testing::temp_folder("rocking-jobs-test"); }
 
 // A decaying 1 Hz sine of 0.3 g, 10 s at dt = 0.01 s, one column in g: it
 // lifts blocks of alpha 0.1 and overturns some.

@@ -3,11 +3,15 @@
 // (S1) summed in long double (the reference response to a pulse train).
 #pragma once
 
+#include <stdlib.h>
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <cmath>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "pulse/pulse_train.hpp"
 
@@ -19,6 +23,22 @@ inline std::string write_temp(const std::string& folder, const std::string& name
     const std::string path = (dir / name).string();
     std::ofstream(path) << text;
     return path;
+}
+
+// A new folder /tmp/STEM.XXXXXX of the test's own, removed with everything in
+// it when the test binary ends.
+inline std::string temp_folder(const std::string& stem) {
+    struct Folders {
+        std::vector<std::string> made;
+        ~Folders() {
+            for (const std::string& dir : made) std::filesystem::remove_all(dir);
+        }
+    };
+    static Folders folders;
+    std::string pattern = "/tmp/" + stem + ".XXXXXX";
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
+    folders.made.push_back(pattern);
+    return pattern;
 }
 
 // The what() of the exception f throws, or "" when it throws none.
