@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "harness/compare.hpp"
+#include "harness/output_paths.hpp"
 #include "harness/table.hpp"
 #include "scene.hpp"
 #include "test_util.hpp"
@@ -103,4 +104,35 @@ TEST(Harness, ExpectedFilesCatchAPerturbationJustBeyondTheirTolerance) {
             }
         }
     }
+}
+
+// Issue 38: an output that is an input is refused by inode, whatever its
+// spelling or a link to it; two outputs that are one file are refused before
+// either exists; a folder that cannot take the file is found before any work,
+// and the probe leaves nothing behind.
+TEST(OutputPaths, AnOutputThatIsAnInputIsRefusedWhateverItsSpelling) {
+    const std::string dir = rocking::testing::temp_folder("rocking-output-paths");
+    const std::string record = dir + "/r.txt";
+    std::ofstream(record) << "0.1\n";
+    fs::create_symlink(record, dir + "/link.txt");
+    fs::create_hard_link(record, dir + "/hard.txt");
+    for (const std::string& spelling : {record, dir + "/./r.txt", dir + "/link.txt", dir + "/hard.txt"}) {
+        const std::string e = error_of([&] { check_outputs({{"--output", spelling}}, {{"FILE", record}}); });
+        EXPECT_NE(e.find("--output '" + spelling + "' is the input FILE '" + record + "'"), std::string::npos) << e;
+    }
+    EXPECT_EQ(error_of([&] { check_outputs({{"--output", dir + "/new.csv"}}, {{"FILE", record}}); }), "");
+    EXPECT_FALSE(same_file("/dev/null", "/dev/null"));  // devices are written in place, not replaced
+    const std::string two = error_of(
+        [&] { check_outputs({{"--output", dir + "/x.csv"}, {"--png", dir + "/../" + fs::path(dir).filename().string() + "/x.csv"}}, {}); });
+    EXPECT_NE(two.find("are one file"), std::string::npos) << two;
+}
+
+TEST(OutputPaths, AnUnwritableOutputIsFoundBeforeTheWorkAndTheProbeLeavesNothing) {
+    const std::string dir = rocking::testing::temp_folder("rocking-output-paths");
+    EXPECT_NE(error_of([&] { check_outputs({{"--output", dir + "/no/such/folder/x.csv"}}, {}); })
+                  .find("--output: " + dir + "/no/such/folder/x.csv: cannot create a file in"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] { check_outputs({{"--rows", dir}}, {}); }).find("is a folder"), std::string::npos);
+    EXPECT_EQ(error_of([&] { check_outputs({{"--output", dir + "/x.csv"}, {"--png", "/dev/null"}}, {}); }), "");
+    EXPECT_TRUE(fs::is_empty(dir));
 }
