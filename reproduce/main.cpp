@@ -12,10 +12,11 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "harness/atomic_file.hpp"
+#include "harness/plot_file.hpp"
 #include "harness/compare.hpp"
 #include "scene.hpp"
 
@@ -58,18 +59,19 @@ std::string describe(const harness::Deviation& d) {
 
 std::string quote(const std::string& s) { return "'" + s + "'"; }
 
-// Plots with gnuplot when a script exists; a missing gnuplot is said, not fatal.
+// Plots with gnuplot when a script exists; a missing gnuplot is said, not
+// fatal, but a plot that fails or is not written whole is the scene's error.
 // gnuplot draws into a temporary file (its script's png variable) that
-// replaces <scene>.png only once gnuplot has succeeded, as the CSVs are
-// written (harness/atomic_file.hpp): a failed or killed plot left half a PNG.
+// replaces <scene>.png only once gnuplot has succeeded and the PNG is whole
+// (harness/plot_file.hpp): a failed, killed or starved plot left half a PNG.
 std::string plot(const Options& o, const std::string& scene, const std::string& dir) {
     const std::string script = o.plots + "/" + scene + ".gp";
     if (!o.plot || !fs::exists(script)) return "";
     if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return "plot skipped: gnuplot not installed (make deps)";
-    harness::AtomicFile png(dir + "/" + scene + ".png");
-    const std::string cmd = "gnuplot -e \"dir='" + dir + "'; png='" + png.temporary_path() + "'\" " + quote(script) +
+    harness::PlotFile png(dir + "/" + scene + ".png");
+    const std::string cmd = "gnuplot -e \"dir='" + dir + "'; png='" + png.draw_path() + "'\" " + quote(script) +
                             " 2>" + quote(dir + "/gnuplot.log");
-    if (std::system(cmd.c_str()) != 0) return "plot failed: see " + dir + "/gnuplot.log";
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("plot failed: see " + dir + "/gnuplot.log");
     png.commit();
     return "";
 }

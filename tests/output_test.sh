@@ -182,4 +182,75 @@ mkdir -p "$tmp/blocked/fig04/fig04.csv"
 expect_error "reproduce: a table it cannot write" 1 "fig04/fig04.csv" "is a folder" -- \
     "$reproduce" --no-plot --out "$tmp/blocked" fig04
 
+# --- Issue 38, item 5: every file the program writes, gnuplot's PNG included,
+# is whole or absent, and a failed write exits non-zero.  gnuplot exits 0 when
+# its own writes fail, so the PNG is read back to its IEND chunk before it lands.
+"$rocking" record synth --stochastic 1 --dt 0.01 --duration 8 --output "$tmp/rec.txt" >/dev/null || bad "record synth"
+spectrum=(spectrum "$tmp/rec.txt" --unit m/s2 --alpha 0.1 --points 12 --quiet)
+for writer in "spectrum --output" "spectrum --png" "fragility --output" "simulate --output" "record synth --output"; do
+    case "$writer" in
+        "spectrum --output") cmd=("${spectrum[@]}" --output /dev/full) ;;
+        "spectrum --png") cmd=("${spectrum[@]}" --png /dev/full) ;;
+        "fragility --output") cmd=(fragility "$tmp/rec.txt" "$tmp/rec.txt" --unit m/s2 --alpha 0.2 --p 3 --points 4 --q-max 2 --quiet --output /dev/full) ;;
+        "simulate --output") cmd=(simulate "${block[@]}" --rd 0.9 --output /dev/full) ;;
+        "record synth --output") cmd=(record synth --stochastic 1 --dt 0.01 --duration 8 --output /dev/full) ;;
+    esac
+    [[ "$writer" == "spectrum --png" ]] && ! command -v gnuplot >/dev/null && { echo "skipped: --png (no gnuplot)"; continue; }
+    expect_error "$writer /dev/full" 1 "/dev/full" "No space left on device" -- "$rocking" "${cmd[@]}"
+done
+if command -v gnuplot >/dev/null; then
+    "$rocking" "${spectrum[@]}" --png "$tmp/s.png" >/dev/null || bad "spectrum --png"
+    cp "$tmp/s.png" "$tmp/s.png.ref"
+    # A disk that fills while gnuplot draws: its write fails (EFBIG), it exits 0.
+    expect_error "spectrum --png on a disk that fills" 1 "$tmp/s.png" "not written whole" "no IEND chunk" -- \
+        sh -c 'trap "" XFSZ; ulimit -f 8; exec "$@"' sh "$rocking" "${spectrum[@]}" --png "$tmp/s.png"
+    cmp -s "$tmp/s.png" "$tmp/s.png.ref" && ok "after it, the previous PNG is whole" || bad "a truncated PNG landed"
+    no_leftovers "spectrum --png on a full disk" "$tmp"
+    rm -f "$tmp/fresh.png"
+    sh -c 'trap "" XFSZ; ulimit -f 8; exec "$@"' sh "$rocking" "${spectrum[@]}" --png "$tmp/fresh.png" >/dev/null 2>&1
+    [[ ! -e "$tmp/fresh.png" ]] && ok "a PNG not written whole is absent" || bad "a truncated new PNG was left"
+    "$reproduce" --out "$tmp/limited-out" fig04 >/dev/null 2>&1   # its CSVs, whole, before the limit below
+    sh -c 'trap "" XFSZ; ulimit -f 120; exec "$@"' sh "$reproduce" --out "$tmp/limited-out" fig04 >"$tmp/err" 2>&1
+    status=$?
+    if [[ $status != 0 ]] && grep -q "not written whole" "$tmp/err"; then ok "reproduce: a PNG cut by a full disk is the scene's error (exit $status)"
+    else bad "reproduce: a PNG cut by a full disk: exit $status, $(grep -m1 -i 'plot\|error' "$tmp/err")"; fi
+else
+    echo "skipped: PNGs on a full disk (gnuplot is not installed)"
+fi
+
+# --- Issue 38, items 6 and 9: an output that is an input is refused before
+# any work, and the input stays as it was; an output that cannot be written
+# is found before the study, not after it.
+cp "$tmp/rec.txt" "$tmp/rec.ref"
+guarded() {  # what, output flag, command...
+    local what="$1" flag="$2"; shift 2
+    expect_error "$what" 2 "$flag '$tmp/rec.txt' is the input" -- "$rocking" "$@"
+    cmp -s "$tmp/rec.txt" "$tmp/rec.ref" || { bad "$what: the input changed"; cp "$tmp/rec.ref" "$tmp/rec.txt"; }
+}
+guarded "spectrum --output is its record" --output "${spectrum[@]}" --output "$tmp/rec.txt"
+guarded "spectrum --png is its record" --png "${spectrum[@]}" --png "$tmp/rec.txt"
+guarded "spectrum --rows is its record" --rows "${spectrum[@]}" --rows "$tmp/rec.txt"
+guarded "fragility --output is a record" --output fragility "$tmp/rec.ref" "$tmp/rec.txt" --unit m/s2 --alpha 0.2 --p 3 --output "$tmp/rec.txt"
+guarded "fragility --rows is a record" --rows fragility "$tmp/rec.ref" "$tmp/rec.txt" --unit m/s2 --alpha 0.2 --p 3 --rows "$tmp/rec.txt"
+guarded "eq27 --output is a record" --output eq27 "$tmp/rec.ref" "$tmp/rec.txt" --unit m/s2 --output "$tmp/rec.txt"
+guarded "simulate --output is its --record" --output simulate --record "$tmp/rec.txt" --unit m/s2 --alpha 0.2 --p 3 --output "$tmp/rec.txt"
+ln -s rec.txt "$tmp/rec-link.txt"
+expect_error "spectrum --output through a link to its record" 2 "is the input" -- "$rocking" "${spectrum[@]}" --output "$tmp/rec-link.txt"
+cmp -s "$tmp/rec.txt" "$tmp/rec.ref" && ok "the record behind the link is untouched" || bad "the record behind the link changed"
+expect_error "spectrum --output and --png on one file" 2 "are one file" -- \
+    "$rocking" "${spectrum[@]}" --output "$tmp/one.out" --png "$tmp/./one.out"
+# An output in a missing folder is found before any record is read, so
+# before the first simulation: the error is the output's, not the missing record's.
+for study in spectrum fragility eq27; do
+    case $study in
+        spectrum) cmd=(spectrum "$tmp/no-such-record.txt" --unit m/s2 --alpha 0.1 --quiet) ;;
+        fragility) cmd=(fragility "$tmp/rec.txt" "$tmp/no-such-record.txt" --unit m/s2 --alpha 0.1 --p 2 --quiet) ;;
+        eq27) cmd=(eq27 "$tmp/rec.txt" "$tmp/no-such-record.txt" --unit m/s2) ;;
+    esac
+    expect_error "$study --output in a missing folder, before the records are read" 1 "--output: $tmp/missing/o.csv" \
+        "cannot create a file" -- "$rocking" "${cmd[@]}" --output "$tmp/missing/o.csv"
+done
+[[ ! -e "$tmp/missing" ]] && ok "the missing folder is still not created" || bad "the missing folder was created"
+no_leftovers "outputs checked before the work" "$tmp"
+
 exit $fail

@@ -54,13 +54,9 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     if (!(o.ida.q_max > o.ida.q_min && o.ida.q_max <= 1e4)) throw UsageError("--q-max: must be in (1, 10000]");
     if (a.values.count("--points")) o.ida.points = integer("--points", a.values.at("--points"));
     if (o.ida.points < 2 || o.ida.points > 10000) throw UsageError("--points: must be between 2 and 10000");
-    o.resamples = 0;
-    if (a.values.count("--bootstrap")) o.resamples = integer("--bootstrap", a.values.at("--bootstrap"));
-    if (o.resamples < 0 || o.resamples > 100000) throw UsageError("--bootstrap: must be between 0 and 100000");
-    if (a.values.count("--seed") && !a.values.count("--bootstrap")) throw UsageError("--seed goes with --bootstrap");
-    if (o.resamples > 0 && !a.values.count("--seed"))
-        throw UsageError("--bootstrap needs --seed (the interval is reproducible only from a stated seed)");
-    if (a.values.count("--seed")) o.seed = seed_option("--seed", a.values.at("--seed"));
+    const Bootstrap b = bootstrap_options(a);
+    o.resamples = b.resamples;
+    o.seed = b.seed;
     o.threads = jobs_option(a);
     return o;
 }
@@ -224,6 +220,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     for (const char* flag : {"--output", "--rows"})
         if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
+    check_outputs(a, {"--output", "--rows"}, c.files);
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
         throw UsageError("--resume needs --rows FILE: the IDAs of an interrupted study are resumed from that file");

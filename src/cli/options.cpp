@@ -10,6 +10,7 @@
 
 #include "batch/pool.hpp"
 #include "cli/options.hpp"
+#include "harness/output_paths.hpp"
 #include "harness/table.hpp"
 
 namespace rocking::cli {
@@ -119,6 +120,19 @@ std::uint64_t seed_option(const std::string& flag, const std::string& text) {
     return seed;
 }
 
+Bootstrap bootstrap_options(const Args& a) {
+    Bootstrap b;
+    if (a.values.count("--bootstrap")) b.resamples = integer("--bootstrap", a.values.at("--bootstrap"));
+    if (b.resamples != 0 && (b.resamples < 2 || b.resamples > 100000))
+        throw UsageError("--bootstrap: must be 0 (none) or from 2 to 100000 resamples (got " + a.values.at("--bootstrap") +
+                         ")");
+    if (a.values.count("--seed") && !a.values.count("--bootstrap")) throw UsageError("--seed goes with --bootstrap");
+    if (b.resamples > 0 && !a.values.count("--seed"))
+        throw UsageError("--bootstrap needs --seed (the interval is reproducible only from a stated seed)");
+    if (a.values.count("--seed")) b.seed = seed_option("--seed", a.values.at("--seed"));
+    return b;
+}
+
 int jobs_option(const Args& a) {
     if (!a.values.count("--jobs")) return batch::default_threads();
     try {
@@ -145,6 +159,20 @@ std::vector<std::string> file_arguments(int argc, char** argv, int& first_option
         throw UsageError(argc > 2 ? "FILE comes first, before '" + std::string(argv[2]) + "': " + usage : usage);
     first_option = i;
     return files;
+}
+
+void check_outputs(const Args& a, const std::vector<std::string>& output_flags, const std::vector<std::string>& inputs,
+                   const std::string& input_role) {
+    std::vector<harness::NamedPath> outputs, files;
+    for (const std::string& flag : output_flags)
+        if (a.values.count(flag)) outputs.push_back({flag, a.values.at(flag)});
+    for (const std::string& path : inputs) files.push_back({input_role, path});
+    try {
+        harness::refuse_outputs_over_inputs(outputs, files);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    for (const harness::NamedPath& out : outputs) harness::check_writable(out);
 }
 
 void write_output(const harness::Table& table, const std::string& path) {
@@ -348,8 +376,9 @@ std::string json_string(const std::string& s) {
 // why beside it (a flag or a reason field) or the command refuses the input.
 std::string json_number(double v) { return std::isfinite(v) ? harness::format_number(v) : "null"; }
 
-// A record file by content, or a plain-text one when --unit (and, for one
-// column, the sampling step under dt_flag) is given.
+// A record file by content; --unit (and, for one column, the sampling step
+// under dt_flag) reads a plain-text one, and leaves an ESM or AT2 file, which
+// states its own, to its format: a study may mix the three.
 records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag) {
     if (a.values.count("--unit") || a.values.count(dt_flag)) {
         if (!a.values.count("--unit")) throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2)");
@@ -360,7 +389,7 @@ records::Record load_record(const std::string& path, const Args& a, const std::s
         // 0 would read as "not given" (a two-column file), and a negative
         // step was reported against the file's line 0.
         if (a.values.count(dt_flag) && !(dt > 0)) throw UsageError(dt_flag + ": must be > 0 (got " + a.values.at(dt_flag) + ")");
-        return records::read_plain(path, unit, dt);
+        return records::read_with_unit(path, unit, dt);
     }
     return records::read_any(path);
 }

@@ -42,6 +42,15 @@ std::map<std::string, double> key_values(const std::string& flag, const std::str
                                          const std::vector<std::string>& keys);
 // A random generator's seed: a whole number in [1, 2^32 - 1].
 std::uint64_t seed_option(const std::string& flag, const std::string& text);
+// --bootstrap K --seed S of the studies (fragility, eq27): K = 0 (the
+// default: none) or 2 to 100000 resamples, refused before any work (a
+// percentile interval of one resample is no interval), with the seed the
+// interval is reproduced from.
+struct Bootstrap {
+    int resamples = 0;
+    std::uint64_t seed = 0;
+};
+Bootstrap bootstrap_options(const Args& a);
 // The batch engine's threads: --jobs N (1 to 4096), by default the cores
 // this process may use.  The results do not depend on it.
 int jobs_option(const Args& a);
@@ -54,6 +63,11 @@ Args parse(int argc, char** argv, int first, const std::vector<std::string>& all
 // on it (fragility, spectrum): parse() knows only --json among the options
 // without a value.
 std::vector<char*> without_engine_switches(int argc, char** argv, bool& resume, bool& quiet);
+// Before any work (issue 38): the outputs the options in output_flags name
+// are neither one of the input files (a UsageError) nor one another, and
+// each can be written (a runtime_error, as a failed write at the end was).
+void check_outputs(const Args& a, const std::vector<std::string>& output_flags, const std::vector<std::string>& inputs,
+                   const std::string& input_role = "FILE");
 // table written to path (atomically), a failure named as --output's.
 void write_output(const harness::Table& table, const std::string& path);
 PulseTrain train_from(const Args& a, std::string& equation);

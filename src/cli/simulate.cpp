@@ -148,6 +148,8 @@ int cmd_simulate(int argc, char** argv) {
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
     if (has("--output")) check_output_rows(model, *input, options);
+    check_outputs(a, {"--output"}, has("--record") ? std::vector<std::string>{a.values.at("--record")} : std::vector<std::string>{},
+                  "--record");
     const SimulationResult r = simulate(model, *input, options);
     dynamics::refuse_overflow_in_alpha(r, alpha);
     char atol_rad[48];
@@ -163,7 +165,7 @@ int cmd_simulate(int argc, char** argv) {
         table.note("criterion", criterion_name(criterion));
         for (const Sample& s : r.samples)
             table.row().add(s.t).add(s.theta / alpha).add(s.omega / (alpha * model.block.p));
-        table.write(a.values.at("--output"));
+        write_output(table, a.values.at("--output"));
     }
     const bool collapse = r.collapse(criterion, alpha);
     // The block starts at rest and rocks only once |a| > the threshold (eq. 3: alpha g; eq. 1: g tan alpha).

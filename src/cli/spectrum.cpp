@@ -21,7 +21,7 @@
 #include "batch/ranks.hpp"
 #include "cli/cluster_front.hpp"
 #include "cli/options.hpp"
-#include "harness/atomic_file.hpp"
+#include "harness/plot_file.hpp"
 #include "harness/table.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
@@ -305,15 +305,19 @@ void write_png(const std::string& png, const records::Record& r, const SpectrumO
             for (const studies::SpectrumPoint& pt : studies[k].spectrum.points)
                 out << harness::format_number(pt.p) << "," << harness::format_number(pt.max_theta) << "\n";
         }
-        if (!out) throw std::runtime_error("--png " + png + ": cannot write the plot's data to " + data.path);
+        if (!out.flush()) throw std::runtime_error("--png " + png + ": cannot write the plot's data to " + data.path);
     }
-    std::unique_ptr<harness::AtomicFile> file;
+    std::unique_ptr<harness::PlotFile> file;
     try {
-        file = std::make_unique<harness::AtomicFile>(png);
+        file = std::make_unique<harness::PlotFile>(png);
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(std::string("--png: ") + e.what());
     }
-    std::ofstream(script.path) << plot_script(data.path, file->temporary_path(), r, o, studies);
+    {
+        std::ofstream out(script.path);
+        out << plot_script(data.path, file->draw_path(), r, o, studies);
+        if (!out.flush()) throw std::runtime_error("--png " + png + ": cannot write the plot's script to " + script.path);
+    }
     const std::string cmd = "gnuplot " + shell_quote(script.path) + " 2>" + shell_quote(log.path);
     if (std::system(cmd.c_str()) != 0) {
         std::ifstream in(log.path);
@@ -322,7 +326,11 @@ void write_png(const std::string& png, const records::Record& r, const SpectrumO
             if (!line.empty()) first += (first.empty() ? "" : " | ") + line;
         throw std::runtime_error("--png " + png + ": gnuplot failed: " + first.substr(0, 400));
     }
-    file->commit();
+    try {
+        file->commit();
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(std::string("--png: ") + e.what());
+    }
 }
 
 struct Command {
@@ -346,6 +354,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     c.grid = grid_from(a);
     for (const char* flag : {"--output", "--png", "--rows"})
         if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
+    check_outputs(a, {"--output", "--png", "--rows"}, {c.path});
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
         throw UsageError("--resume needs --rows FILE: the spectra of an interrupted study are resumed from that file");

@@ -105,6 +105,7 @@ int cmd_record_synth(int argc, char** argv) {
     if (pulse && a.values.count("--params")) throw UsageError("--params goes with --stochastic");
     const double dt = positive(a, "--dt"), duration = positive(a, "--duration");
     const std::string flag = pulse ? "--pulse" : a.values.count("--params") ? "--params" : "--stochastic";
+    check_outputs(a, {"--output"}, {});
     records::Record r;
     try {
         if (pulse) {

@@ -418,19 +418,39 @@ Record parse_plain(const std::string& text, const std::string& path, const std::
     return r;
 }
 
-Record parse_any(const std::string& text, const std::string& path) {
+namespace {
+
+enum class Stated { none, esm, peer };
+
+// ESM's first line is 'KEY: value' (a '#' comment with a colon is plain
+// text's); PEER's third says 'UNITS OF G'.
+Stated stated_format(const std::string& text) {
     Lines in(text);
     std::string first, second, third;
-    if (!in.next(first)) return parse_peer(text, path);  // empty: parse_peer says so
-    if (first.find(':') != std::string::npos) return parse_esm(text, path);
+    if (!in.next(first)) return Stated::none;
+    if (first.rfind('#', 0) != 0 && first.find(':') != std::string::npos) return Stated::esm;
     in.next(second);
     in.next(third);
-    if (!peer_units_line(third))
-        throw RecordError(path, 1,
-                          "neither ESM ASCII (its header lines are 'KEY: value') nor PEER AT2 ('UNITS OF G' on "
-                          "line 3); plain one- or two-column text is read with its unit (rocking: --unit)");
-    return parse_peer(text, path);
+    return peer_units_line(third) ? Stated::peer : Stated::none;
 }
+
+}  // namespace
+
+Record parse_any(const std::string& text, const std::string& path) {
+    Lines in(text);
+    std::string first;
+    if (!in.next(first)) return parse_peer(text, path);  // empty: parse_peer says so
+    switch (stated_format(text)) {
+        case Stated::esm: return parse_esm(text, path);
+        case Stated::peer: return parse_peer(text, path);
+        case Stated::none: break;
+    }
+    throw RecordError(path, 1,
+                      "neither ESM ASCII (its header lines are 'KEY: value') nor PEER AT2 ('UNITS OF G' on "
+                      "line 3); plain one- or two-column text is read with its unit (rocking: --unit)");
+}
+
+bool states_its_units(const std::string& text) { return stated_format(text) != Stated::none; }
 
 Record read_esm(const std::string& path) { return parse_esm(read_text(path), path); }
 Record read_peer(const std::string& path) { return parse_peer(read_text(path), path); }
@@ -438,6 +458,11 @@ Record read_any(const std::string& path) { return parse_any(read_text(path), pat
 Record read_plain(const std::string& path, const std::string& unit, double dt) {
     scale_of(path, unit, dt);
     return parse_plain(read_text(path), path, unit, dt);
+}
+Record read_with_unit(const std::string& path, const std::string& unit, double dt) {
+    scale_of(path, unit, dt);
+    const std::string text = read_text(path);
+    return states_its_units(text) ? parse_any(text, path) : parse_plain(text, path, unit, dt);
 }
 
 }  // namespace rocking::records

@@ -68,10 +68,19 @@ Record parse_any(const std::string& text, const std::string& path);
 // between two digits ("0,0123") is refused, as that comma could be either.
 Record parse_plain(const std::string& text, const std::string& path, const std::string& unit, double dt);
 
+// Whether the text is ESM ASCII (a first line 'KEY: value', not a '#'
+// comment) or PEER AT2 ('UNITS OF G' on line 3): a file that states its own
+// unit and step, which a plain-text unit must not override.
+bool states_its_units(const std::string& text);
+
 // The same, reading the file with read_text's default caps.
 Record read_esm(const std::string& path);
 Record read_peer(const std::string& path);
 Record read_any(const std::string& path);
 Record read_plain(const std::string& path, const std::string& unit, double dt);
+// read_plain for a plain-text file, read_any for one that states its units:
+// a study's --unit and --dt apply to its plain-text records only, so that
+// ESM, AT2 and text records can be mixed in one command.
+Record read_with_unit(const std::string& path, const std::string& unit, double dt);
 
 }  // namespace rocking::records

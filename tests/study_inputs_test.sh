@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Issue 38: what the studies refuse or read before their first simulation.
+# --bootstrap 1 is refused at the start, with one message and exit 2, by
+# fragility and eq27 alike (fragility used to run every IDA, then exit 1);
+# --unit and --dt apply to plain-text records only, so that one study mixes
+# ESM, AT2 and text records of the same motion and finds the same q for each.
+#
+#   tests/study_inputs_test.sh ROCKING
+set -u
+rocking="$1"
+source "$(dirname "$0")/check_lib.sh"
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+
+# A missing record beside the bad option: the option's error comes first,
+# so nothing was read, let alone run.
+for study in fragility eq27; do
+    case $study in
+        fragility) more=(--alpha 0.1 --p 2) ;;
+        eq27) more=() ;;
+    esac
+    for k in 1 -1 100001; do
+        check "$study --bootstrap $k: refused first" "--bootstrap: must be 0 (none) or from 2 to 100000 resamples (got $k)" \
+            "$rocking" $study "$tmp/no-such-record.txt" "${more[@]}" --bootstrap $k --seed 1
+        status "$study --bootstrap $k: exit 2" 2 "$rocking" $study "$tmp/no-such-record.txt" "${more[@]}" --bootstrap $k --seed 1
+    done
+done
+
+# One motion in three formats: plain text in m/s^2 (two columns), PEER AT2
+# (g = 9.81 m/s^2, as the reader takes it) and ESM ASCII (cm/s^2).
+"$rocking" record synth --pulse 1,1,0,2 --dt 0.005 --duration 6 --output "$tmp/plain.txt" >/dev/null || { echo "FAIL: record synth"; exit 1; }
+/usr/bin/python3 - "$tmp" <<'PY' || { echo "FAIL: writing the AT2 and ESM copies"; exit 1; }
+import sys
+d = sys.argv[1]
+rows = [l.split(",") for l in open(d + "/plain.txt") if not l.startswith("#")]
+a = [float(r[1]) for r in rows]
+dt = float(rows[1][0]) - float(rows[0][0])
+with open(d + "/motion.AT2", "w") as f:
+    f.write("PEER NGA STRONG MOTION DATABASE RECORD\nsynthetic pulse\nACCELERATION TIME SERIES IN UNITS OF G\n")
+    f.write("NPTS= %d, DT= %.4f SEC\n" % (len(a), dt))
+    for k in range(0, len(a), 5):
+        f.write("".join(" %.17e" % (v / 9.81) for v in a[k:k + 5]) + "\n")
+with open(d + "/motion.ASC", "w") as f:
+    f.write("EVENT_NAME: synthetic\nSTATION_CODE: SYN\nSTREAM: HNE\nUNITS: cm/s^2\nSAMPLING_INTERVAL_S: %.6f\n" % dt)
+    f.write("NDATA: %d\nPGA_CM/S^2: %.6f\nDATA_TYPE: ACCELERATION\n" % (len(a), max(abs(v) for v in a) * 100))
+    f.write("".join("%.17e\n" % (v * 100) for v in a))
+PY
+q_of() {  # the first collapse q of each record, as fragility --json gives them
+    "$rocking" fragility "$@" --alpha 0.2 --p 3 --points 20 --quiet --json |
+        /usr/bin/python3 -c 'import json,sys; print(" ".join("%.6g" % r["q"] for r in json.load(sys.stdin)["blocks"][0]["records"]))'
+}
+alone=$(q_of "$tmp/plain.txt" "$tmp/plain.txt" --unit m/s2)
+mixed=$(q_of "$tmp/plain.txt" "$tmp/motion.AT2" "$tmp/motion.ASC" --unit m/s2)
+first=${alone%% *}
+if [[ -n "$first" && "$mixed" == "$first $first $first" ]]; then echo "ok: fragility mixes text, AT2 and ESM under --unit: q = $mixed"
+else echo "FAIL: fragility with text, AT2 and ESM under --unit: q = '$mixed', the text record alone: '$first'"; fail=1; fi
+check "eq27 mixes them too" "3 record(s)" "$rocking" eq27 "$tmp/plain.txt" "$tmp/motion.AT2" "$tmp/motion.ASC" --unit m/s2 \
+    --alpha 0.2 --p-min 3 --p-max 3 --p-points 1
+check "a plain-text record still needs --unit" "is read with its unit (rocking: --unit)" "$rocking" fragility "$tmp/plain.txt" "$tmp/motion.AT2" \
+    --alpha 0.2 --p 3
+exit $fail
