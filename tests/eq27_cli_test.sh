@@ -41,7 +41,7 @@ check "unknown option"    "unknown option '--p'"                         "$rocki
 check "seed alone"        "--seed goes with --bootstrap"                 "$rocking" eq27 x --seed 3
 status "seed alone"       2                                              "$rocking" eq27 x --seed 3
 check "bootstrap, no seed" "--bootstrap needs --seed"                    "$rocking" eq27 x --bootstrap 100
-check "bootstrap of 1"    "--bootstrap: must be 0 or between 2 and 100000" "$rocking" eq27 x --bootstrap 1 --seed 3
+check "bootstrap of 1"    "--bootstrap: must be 0 (none) or from 2 to 100000 resamples (got 1)" "$rocking" eq27 x --bootstrap 1 --seed 3
 check "seed range"        "--seed: the seed must be a whole number"      "$rocking" eq27 x --bootstrap 100 --seed 0
 check "jobs range"        "--jobs must be an integer from 1 to 4096 (got '5000')" "$rocking" eq27 x --jobs 5000
 # Bad files: exit 1, the file named.

@@ -71,14 +71,9 @@ studies::Eq27Options options_from(const Args& a) {
     // Beyond 1e4 the scaled record reaches thousands of g: no physical input.
     o.ida.q_max = bounded(a, "--q-max", o.ida.q_max, o.ida.q_min, 1e4, "(1, 10000]");
     // As rocking fragility's: no bootstrap unless asked, and then from a stated seed.
-    o.bootstrap.resamples = 0;
-    if (a.values.count("--bootstrap")) o.bootstrap.resamples = integer("--bootstrap", a.values.at("--bootstrap"));
-    if (o.bootstrap.resamples != 0 && (o.bootstrap.resamples < 2 || o.bootstrap.resamples > 100000))
-        throw UsageError("--bootstrap: must be 0 or between 2 and 100000");
-    if (a.values.count("--seed") && !a.values.count("--bootstrap")) throw UsageError("--seed goes with --bootstrap");
-    if (o.bootstrap.resamples > 0 && !a.values.count("--seed"))
-        throw UsageError("--bootstrap needs --seed (the interval is reproducible only from a stated seed)");
-    if (a.values.count("--seed")) o.bootstrap.seed = seed_option("--seed", a.values.at("--seed"));
+    const Bootstrap b = bootstrap_options(a);
+    o.bootstrap.resamples = b.resamples;
+    if (b.resamples > 0) o.bootstrap.seed = b.seed;
     o.threads = jobs_option(a);
     return o;
 }
@@ -252,6 +247,7 @@ int cmd_eq27(int argc, char** argv) {
     const studies::Eq27Options o = options_from(a);
     if (a.values.count("--output") && a.values.at("--output").empty()) throw UsageError("--output: an empty file name");
     if (files.size() > 1000) throw UsageError("at most 1000 files");
+    check_outputs(a, {"--output"}, files);
     const Loaded l = load(files, a);
     const Eq27Study s = studies::eq27_at_scale(l.records, o);
     if (a.values.count("--output")) write_csv(a.values.at("--output"), files, o, s);
