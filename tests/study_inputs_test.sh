@@ -58,4 +58,20 @@ check "eq27 mixes them too" "3 record(s)" "$rocking" eq27 "$tmp/plain.txt" "$tmp
     --alpha 0.2 --p-min 3 --p-max 3 --p-points 1
 check "a plain-text record still needs --unit" "is read with its unit (rocking: --unit)" "$rocking" fragility "$tmp/plain.txt" "$tmp/motion.AT2" \
     --alpha 0.2 --p 3
+# A run the solvers cannot follow (p t above 1e9, at 4.5e15 not a step moves
+# t) is refused by the option that made it, not by the solver's "no progress".
+grep -v '^#' "$tmp/plain.txt" | cut -d, -f2 >"$tmp/one-column.txt"
+long="p t = "
+check "simulate --record --p 1e300" "--p 1e300: $long" "$rocking" simulate --record "$tmp/plain.txt" --unit m/s2 --alpha 0.15 --p 1e300
+check "simulate --to 1e300" "--to 1e300, --p 2: $long" "$rocking" simulate --case 2 --to 1e300 --alpha 0.15 --p 2 --pga 1
+for study in spectrum fragility eq27 collapse; do
+    case $study in
+        spectrum) more=(--alpha 0.1) ;; fragility) more=(--alpha 0.1 --p 2) ;; eq27) more=() ;; collapse) more=(--alpha 0.1) ;;
+    esac
+    for dt in 1e300 1e8; do
+        check "$study --dt $dt" "--dt $dt" "$rocking" $study "$tmp/one-column.txt" --unit m/s2 --dt $dt "${more[@]}"
+        check "$study --dt $dt: p t" "$long" "$rocking" $study "$tmp/one-column.txt" --unit m/s2 --dt $dt "${more[@]}"
+        status "$study --dt $dt: exit 2" 2 "$rocking" $study "$tmp/one-column.txt" --unit m/s2 --dt $dt "${more[@]}"
+    done
+done
 exit $fail

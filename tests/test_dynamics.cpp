@@ -1395,3 +1395,15 @@ TEST(Conservativeness, BeyondThePapersRangeTheBlockCollapsesOnTheOtherSide) {
         EXPECT_NEAR(smallest, first_failure[c], 1e-12) << "case " << c;
     }
 }
+
+// The solver's own guard behind the commands' refusal of p t above
+// kLongestRunTimesP (issue 38): p = 1e20 rad/s, lifted at t = 0.01 alpha / 0.3 g
+// = 0.00667 s by a record rising from 0 to 0.3 g in 0.01 s, where a step of
+// max_step_p / p is below t's resolution: an error, never an endless loop.
+TEST(Dynamics, AStepBelowTheResolutionOfTIsNoProgressNotALoop) {
+    const SampledInput ramp({0, 0.3, 0.5}, 0.01, "ramp");
+    EXPECT_NE(unresolvable_run(1e20, ramp.t_end()), "");
+    EXPECT_EQ(unresolvable_run(1000, 86400), "");  // 1000 rad/s over a day stays within it
+    const std::string e = rocking::testing::error_of([&] { simulate(linear_model(0.2, 1e20), ramp, SimulationOptions{}); });
+    EXPECT_NE(e.find("no progress at t = 0.00666666666666"), std::string::npos) << e;
+}

@@ -44,6 +44,7 @@ int cmd_collapse(int argc, char** argv) {
         throw UsageError("the exact solver handles the linearised equation only");
     const records::Record r = load_record(path, a);
     const SampledInput input(r.in_g(kGravity), r.dt, r.name);
+    refuse_unresolvable_run(o.p_max, input.t_end(), a, {"--dt"}, path);
     const records::CollapseResult c = records::smallest_collapse_p(input, alpha, o);
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << json_number(alpha)

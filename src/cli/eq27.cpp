@@ -83,12 +83,13 @@ struct Loaded {
     std::vector<studies::Eq27Record> records;
 };
 
-Loaded load(const std::vector<std::string>& files, const Args& a) {
+Loaded load(const std::vector<std::string>& files, const Args& a, double p_max) {
     Loaded l;
     for (const std::string& path : files) {
         const records::Record r = load_record(path, a);
-        const records::HalfPeriods h = half_periods_of(r, path);
         l.inputs.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
+        refuse_unresolvable_run(p_max, l.inputs.back()->t_end(), a, {"--dt", "--p-max"}, path);
+        const records::HalfPeriods h = half_periods_of(r, path);
         if (!(l.inputs.back()->peak() > 0)) throw std::runtime_error(path + ": the record never moves (PGA 0)");
         l.records.push_back({l.inputs.back().get(), h.to});
     }
@@ -248,7 +249,7 @@ int cmd_eq27(int argc, char** argv) {
     if (a.values.count("--output") && a.values.at("--output").empty()) throw UsageError("--output: an empty file name");
     if (files.size() > 1000) throw UsageError("at most 1000 files");
     check_outputs(a, {"--output"}, files);
-    const Loaded l = load(files, a);
+    const Loaded l = load(files, a, o.grid.p_max);
     const Eq27Study s = studies::eq27_at_scale(l.records, o);
     if (a.values.count("--output")) write_csv(a.values.at("--output"), files, o, s);
     if (a.json) print_json(files, o, s);

@@ -2,6 +2,7 @@
 // (studies/ida.hpp), each record's first collapse q and all its overturning
 // intervals in q, and per block the lognormal fragility fit with its
 // bootstrap interval and the empirical curve, as text, CSV or JSON.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -260,6 +261,9 @@ int cmd_fragility(int argc, char** argv) {
             const records::Record r = load_record(path, c.args);
             records.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
             if (!(records.back()->peak() > 0)) throw std::runtime_error(path + ": the record never moves (PGA 0)");
+            double p_max = 0;
+            for (const studies::BlockShape& b : c.blocks) p_max = std::max(p_max, b.p);
+            refuse_unresolvable_run(p_max, records.back()->t_end(), c.args, {"--dt", "--p"}, path);
             jobs.inputs.push_back(records.back().get());
         }
     } catch (const std::exception&) {

@@ -175,6 +175,17 @@ void check_outputs(const Args& a, const std::vector<std::string>& output_flags, 
     for (const harness::NamedPath& out : outputs) harness::check_writable(out);
 }
 
+void refuse_unresolvable_run(double p, double duration, const Args& a, const std::vector<std::string>& culprits,
+                             const std::string& path) {
+    const std::string why = dynamics::unresolvable_run(p, duration);
+    if (why.empty()) return;
+    std::string given;
+    for (const std::string& flag : culprits)
+        if (a.values.count(flag)) given += (given.empty() ? "" : ", ") + flag + " " + a.values.at(flag);
+    if (given.empty()) throw std::runtime_error(path + ": " + why);
+    throw UsageError(given + ": " + why);
+}
+
 void write_output(const harness::Table& table, const std::string& path) {
     try {
         table.write(path);

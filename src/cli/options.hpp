@@ -68,6 +68,12 @@ std::vector<char*> without_engine_switches(int argc, char** argv, bool& resume, 
 // each can be written (a runtime_error, as a failed write at the end was).
 void check_outputs(const Args& a, const std::vector<std::string>& output_flags, const std::vector<std::string>& inputs,
                    const std::string& input_role = "FILE");
+// Refuses a run the solvers cannot follow (dynamics::unresolvable_run: p
+// times the input's duration above 1e9), naming those of `culprits` given
+// on the command line (a record's --dt, --p, ...: a UsageError), or else
+// the file the duration came from.
+void refuse_unresolvable_run(double p, double duration, const Args& a, const std::vector<std::string>& culprits,
+                             const std::string& path);
 // table written to path (atomically), a failure named as --output's.
 void write_output(const harness::Table& table, const std::string& path);
 PulseTrain train_from(const Args& a, std::string& equation);

@@ -147,6 +147,9 @@ int cmd_simulate(int argc, char** argv) {
     }
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
+    refuse_unresolvable_run(model.block.p, input->t_end(), a,
+                            {"--record-dt", "--to", "--wp", "--x", "--p", "--half-height", "--height"},
+                            has("--record") ? a.values.at("--record") : "the input");
     if (has("--output")) check_output_rows(model, *input, options);
     check_outputs(a, {"--output"}, has("--record") ? std::vector<std::string>{a.values.at("--record")} : std::vector<std::string>{},
                   "--record");

@@ -387,6 +387,7 @@ int cmd_spectrum(int argc, char** argv) {
     try {
         r = load_record(c.path, c.args);
         input = std::make_unique<dynamics::SampledInput>(r->in_g(dynamics::kGravity), r->dt, r->name);
+        refuse_unresolvable_run(c.grid.p_max, input->t_end(), c.args, {"--dt", "--p-max"}, c.path);
     } catch (const std::exception&) {
         failure = std::current_exception();
     }

@@ -59,6 +59,17 @@ double latest_run_time(const Model& model, const GroundInput& input, const Simul
     return input.t_end() + std::max(options.free_record_time, free);
 }
 
+std::string unresolvable_run(double p, double duration) {
+    const double pt = p * duration;
+    if (pt <= kLongestRunTimesP) return "";
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "p t = %.3g (p = %.6g rad/s over %.6g s) exceeds %.0e: the solvers cannot follow so long a run "
+                  "(each step at most %.3g/p s, below the resolution of t)",
+                  pt, p, duration, kLongestRunTimesP, SolverOptions{}.max_step_p);
+    return text;
+}
+
 // As Driver::sample_until takes them: k record_dt <= t_limit (1 + 1e-12), k = 0, 1, ...
 double max_record_rows(const Model& model, const GroundInput& input, const SimulationOptions& options) {
     if (!(options.record_dt > 0)) return 0;

@@ -47,6 +47,17 @@ struct SimulationOptions {
 // seconds of free rocking (run_rules.hpp, stop_after_input).
 constexpr double kFreeRockingTimesP = 200.0;
 
+// The longest run the solvers are asked to follow, in units of 1/p.  At
+// p t = 1e9 a step (at most max_step_p / p = 0.5/p) spans 0.5/(1e9 eps) =
+// 2.3e6 ulps of t, so rounding t moves a step's end by 4e-7 of the step,
+// near the 1e-6 the studies bisect to, and the run takes 2e9 steps; at
+// 4.5e15 no step moves t ("no progress").  No record or block comes near
+// it: 1000 rad/s over a day is 8.6e7.
+constexpr double kLongestRunTimesP = 1e9;
+// Empty when p times duration (s) is within kLongestRunTimesP, otherwise why
+// ("p t = 1.5e+301 (p = 30 rad/s over 5e+299 s) exceeds 1e9, ...").
+std::string unresolvable_run(double p, double duration);
+
 // The rows a theta(t) record at options.record_dt > 0 can hold: the samples k
 // record_dt up to the latest time a run can reach, t_fin plus the free rocking
 // followed (up to max(free_record_time, 200/p) seconds).  A double: a tiny
