@@ -248,12 +248,21 @@ TEST(Ida, TheStudyFitsEachBlocksPointsFromItsRecords) {
     EXPECT_EQ(f.interval.median.lo, bootstrap(f.points, 200, 7, 0.9).median.lo);
     EXPECT_EQ(f.empirical.size(), lengths.size() - 1);
     // At p = 0.03 only d = 2 s overturns the block below q = 20 (q* = 17.2;
-    // d = 1.2 s needs 28.3): one collapse, no fit, and no error.
+    // d = 1.2 s needs 28.3): one collapse below six censored points at 20,
+    // whose ln L has a maximum (docs/fragility.md): fitted, as fit_lognormal.
     const BlockFragility& stocky = study[1];
     int collapsed = 0;
     for (const IdaPoint& pt : stocky.points) collapsed += pt.collapsed;
     EXPECT_EQ(collapsed, 1);
-    EXPECT_FALSE(stocky.fitted);
+    ASSERT_TRUE(stocky.fitted);
+    EXPECT_EQ(stocky.fit.beta, fit_lognormal(stocky.points).beta);
+    EXPECT_GT(stocky.fit.median, 20);
+    // Without a censored point above it, the one collapse has no fit and says why.
+    std::vector<Ida> alone(1, stocky.idas[5]);
+    ASSERT_TRUE(alone[0].point.collapsed);
+    const BlockFragility single = block_fragility(stocky.block, alone, o);
+    EXPECT_FALSE(single.fitted);
+    EXPECT_NE(single.no_fit.find("no spread to fit"), std::string::npos) << single.no_fit;
 }
 
 TEST(Ida, TheStudyIsTheSameOnAnyNumberOfThreads) {

@@ -230,14 +230,18 @@ def percentile(v, p):
     return v[k] + (at - k) * (v[k + 1] - v[k]) if k + 1 < len(v) else v[-1]
 
 
+def has_maximum(points):
+    """Whether ln L has a maximum: a collapse, and two distinct collapse q or a censored q above the one."""
+    collapsed = {q for q, c in points if c}
+    return len(collapsed) > 1 or (len(collapsed) == 1 and any(q > min(collapsed) for q, c in points if not c))
+
+
 def bootstrap(points, resamples, seed, level):
     rng = GslMt19937(seed)
     med, bet = [], []
     while len(med) < resamples:
         draw = [points[rng.uniform_int(len(points))] for _ in points]
-        if sum(c for _, c in draw) < 2:
-            continue
-        if closed_form(draw)[1] <= 0:
+        if not has_maximum(draw):
             continue
         m, b = fit(draw)
         med.append(m)

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -14,15 +15,15 @@ namespace rocking::studies {
 namespace {
 
 void check_points(const std::vector<IdaPoint>& points) {
-    int collapsed = 0;
-    for (const IdaPoint& p : points) {
+    for (const IdaPoint& p : points)
         if (!(std::isfinite(p.q) && p.q > 0))
             throw std::invalid_argument("fragility: every q must be finite and > 0 (got " + std::to_string(p.q) + ")");
-        collapsed += p.collapsed;
-    }
-    if (collapsed < 2)
-        throw std::invalid_argument("fragility: a lognormal fit needs at least 2 records that overturned (got " +
-                                    std::to_string(collapsed) + ")");
+}
+
+std::string g10(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", v);
+    return text;
 }
 
 // ln L of (F1) at (mu, beta) = (ln median, beta): Baker 2015's likelihood
@@ -39,16 +40,38 @@ double log_likelihood(const std::vector<IdaPoint>& points, double mu, double bet
     return sum;
 }
 
-// The closed form of the likelihood's maximum on collapsed points alone.
-void moments(const std::vector<IdaPoint>& points, double& mu, double& beta) {
-    double sum = 0, sum2 = 0;
+// ln(q / reference) without the rounding of ln q - ln reference: near the
+// reference q - reference is exact (Sterbenz), so a q that differs from it
+// gives a deviation that is not 0 and holds all its digits.
+double log_ratio(double q, double reference) {
+    if (q >= 0.5 * reference && q <= 2 * reference) return std::log1p((q - reference) / reference);
+    return std::log(q) - std::log(reference);
+}
+
+// The closed form of the likelihood's maximum on the collapsed points (with
+// every point, censored ones too, where `all` is set): the mean and rms of
+// ln q, taken about one of the q, so that beta is 0 exactly when every q is
+// equal and otherwise their spread to rounding, never rounding alone.
+void moments(const std::vector<IdaPoint>& points, bool all, double& mu, double& beta) {
+    double reference = 0, sum = 0, sum2 = 0;
     int n = 0;
     for (const IdaPoint& p : points)
-        if (p.collapsed) sum += std::log(p.q), ++n;
-    mu = sum / n;
+        if (all || p.collapsed) {
+            if (n == 0) reference = p.q;
+            sum += log_ratio(p.q, reference), ++n;
+        }
+    const double mean = sum / n;
     for (const IdaPoint& p : points)
-        if (p.collapsed) sum2 += (std::log(p.q) - mu) * (std::log(p.q) - mu);
+        if (all || p.collapsed) sum2 += (log_ratio(p.q, reference) - mean) * (log_ratio(p.q, reference) - mean);
+    mu = std::log(reference) + mean;
     beta = std::sqrt(sum2 / n);
+}
+
+// phi(z)/Q(z).  Below z = -37 Q is 1 to the last bit and phi underflows
+// there, which GSL reports as an error (its default handler aborts):
+// a censored point far below the median on Newton's way.
+double normal_hazard(double z) {
+    return z < -37 ? std::exp(-0.5 * z * z) / std::sqrt(2 * M_PI) : gsl_sf_hazard(z);
 }
 
 // With censored points, Newton's method in Olsen's (1978) parameters
@@ -56,46 +79,75 @@ void moments(const std::vector<IdaPoint>& points, double& mu, double& beta) {
 //     ln L = sum_collapsed [ln theta - z_i^2/2 - ln q_i - ln(2 pi)/2] + sum_censored ln Q(z_i)
 // is concave (Olsen's theorem for the censored normal), so Newton with a
 // step halved until ln L does not fall reaches the one maximum from the
-// collapsed points' closed form.  A simplex took ~30 times as many
+// collapsed points' closed form (from every point's where the collapses
+// share one q; any start with beta > 0 will do).  A simplex took ~30 times as many
 // evaluations of ln L, and a bootstrap fits thousands of resamples.
 // Derivatives: d ln Q(z)/dz = -h(z), d^2/dz^2 = -h(z)(h(z) - z), with the
 // normal hazard h = phi/Q (GSL's gsl_sf_hazard, accurate for large z).
 void maximise_with_censoring(const std::vector<IdaPoint>& points, double& mu, double& beta) {
-    double theta = 1 / beta, gamma = mu / beta;
-    auto lnl = [&](double th, double ga) { return log_likelihood(points, ga / th, 1 / th); };
+    // ln q about one collapsed q: with ln q itself, z = theta ln q - gamma
+    // cancels (to 5 digits where the q lie 1e-4 apart), so that rounding hid
+    // the last steps and Newton never met its 1e-13.
+    double reference = 0;
+    for (const IdaPoint& p : points)
+        if (p.collapsed && reference == 0) reference = p.q;
+    std::vector<double> y(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) y[k] = log_ratio(points[k].q, reference);
+    double theta = 1 / beta, gamma = (mu - std::log(reference)) / beta;
+    // ln L less the terms that do not depend on (theta, gamma).
+    auto lnl = [&](double th, double ga) {
+        double sum = 0;
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const double z = th * y[k] - ga;
+            sum += points[k].collapsed ? std::log(th) - 0.5 * z * z : gsl_sf_log_erfc(z / M_SQRT2);
+        }
+        return sum;
+    };
     double current = lnl(theta, gamma);
-    for (int iteration = 0; iteration < 200; ++iteration) {
+    bool converged = false;
+    for (int iteration = 0; iteration < 200 && !converged; ++iteration) {
         double g_th = 0, g_ga = 0, h_thth = 0, h_thga = 0, h_gaga = 0;
-        for (const IdaPoint& p : points) {
-            const double y = std::log(p.q), z = theta * y - gamma;
-            if (p.collapsed) {
-                g_th += 1 / theta - z * y;
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const double z = theta * y[k] - gamma;
+            if (points[k].collapsed) {
+                g_th += 1 / theta - z * y[k];
                 g_ga += z;
-                h_thth -= 1 / (theta * theta) + y * y;
-                h_thga += y;
+                h_thth -= 1 / (theta * theta) + y[k] * y[k];
+                h_thga += y[k];
                 h_gaga -= 1;
             } else {
-                const double h = gsl_sf_hazard(z), c = h * (h - z);
-                g_th -= h * y;
+                const double h = normal_hazard(z), c = h * (h - z);
+                g_th -= h * y[k];
                 g_ga += h;
-                h_thth -= c * y * y;
-                h_thga += c * y;
+                h_thth -= c * y[k] * y[k];
+                h_thga += c * y[k];
                 h_gaga -= c;
             }
         }
         // The Newton step solves H d = -g (H negative definite).
         const double det = h_thth * h_gaga - h_thga * h_thga;
-        if (!(det > 0)) break;  // not concave here: only rounding at the maximum does this
+        if (!(det > 0))  // with a collapsed point H is negative definite: only rounding gets here
+            throw std::runtime_error("fragility: ln L's Hessian lost its sign to rounding at beta " +
+                                     std::to_string(1 / theta));
         double d_th = (-g_th * h_gaga + g_ga * h_thga) / det, d_ga = (-g_ga * h_thth + g_th * h_thga) / det;
-        // Converged: Newton's last steps shrink quadratically, and one this
-        // small moves ln L by less than its rounding, so the search below
-        // could not tell up from down.
         if (std::fabs(d_th) <= 1e-13 * theta && std::fabs(d_ga) <= 1e-13 * std::max(1.0, std::fabs(gamma))) {
             theta += d_th;
             gamma += d_ga;
+            converged = true;
             break;
         }
-        // Halve the step until ln L does not fall and theta stays > 0.
+        // Near the maximum Newton's predicted rise of ln L, g.d/2, is below
+        // ln L's rounding, which can no longer judge a step: take it whole
+        // (Newton converges quadratically there).  Stopping at the first step
+        // whose rise rounding hid left a fit 1e-8 off.
+        const double rise = 0.5 * (g_th * d_th + g_ga * d_ga);
+        if (rise <= 1e-12 * (1 + std::fabs(current)) && theta + d_th > 0) {
+            theta += d_th;
+            gamma += d_ga;
+            current = lnl(theta, gamma);
+            continue;
+        }
+        // Farther off, halve the step until ln L does not fall and theta stays > 0.
         double next = -INFINITY;
         for (int halving = 0; halving < 60; ++halving) {
             if (theta + d_th > 0) {
@@ -105,12 +157,15 @@ void maximise_with_censoring(const std::vector<IdaPoint>& points, double& mu, do
             d_th *= 0.5;
             d_ga *= 0.5;
         }
-        if (!(next >= current)) break;  // no step up: at the maximum to rounding
+        if (!(next >= current))
+            throw std::runtime_error("fragility: Newton's method found no step up although ln L should rise by " +
+                                     std::to_string(rise));
         theta += d_th;
         gamma += d_ga;
         current = next;
     }
-    mu = gamma / theta;
+    if (!converged) throw std::runtime_error("fragility: Newton's method did not converge in 200 iterations");
+    mu = std::log(reference) + gamma / theta;
     beta = 1 / theta;
 }
 
@@ -124,15 +179,44 @@ double log_likelihood(const std::vector<IdaPoint>& points, const LognormalFragil
     return log_likelihood(points, std::log(f.median), f.beta);
 }
 
+bool all_collapses_equal(const std::vector<IdaPoint>& points) {
+    const IdaPoint* first = nullptr;
+    for (const IdaPoint& p : points) {
+        if (!p.collapsed) continue;
+        if (!first) first = &p;
+        else if (p.q != first->q) return false;
+    }
+    return first != nullptr;
+}
+
+std::string why_no_maximum(const std::vector<IdaPoint>& points) {
+    double c = 0, censored_max = 0;
+    bool any_collapsed = false;
+    for (const IdaPoint& p : points) {
+        if (p.collapsed) c = p.q, any_collapsed = true;
+        else censored_max = std::max(censored_max, p.q);
+    }
+    if (!any_collapsed) return "no record overturned (every point is censored): ln L has no maximum";
+    if (all_collapses_equal(points) && !(censored_max > c))
+        return "every record that overturned did so at the same q = " + g10(c) +
+               " and no censored record lies above it: ln L grows without bound as beta -> 0 (no spread to fit)";
+    return "";
+}
+
 LognormalFragility fit_lognormal(const std::vector<IdaPoint>& points) {
     check_points(points);
+    const std::string why = why_no_maximum(points);
+    if (!why.empty()) throw std::invalid_argument("fragility: " + why);
     LognormalFragility out;
     for (const IdaPoint& p : points) (p.collapsed ? out.collapsed : out.censored) += 1;
     double mu = 0, beta = 0;
-    moments(points, mu, beta);
-    if (!(beta > 0)) throw std::invalid_argument("fragility: every record overturned at the same q; beta is 0");
+    // Equal collapses have no spread of their own: Newton starts from all
+    // the points' (a censored one lies above them, so beta > 0).
+    moments(points, all_collapses_equal(points), mu, beta);
     if (out.censored > 0) maximise_with_censoring(points, mu, beta);
     out.median = std::exp(mu);
+    if (!std::isfinite(out.median))  // censored points far above so few collapses, at beta in the hundreds
+        throw std::invalid_argument("fragility: the fitted median, e^" + g10(mu) + ", is beyond a double");
     out.beta = beta;
     out.log_likelihood = log_likelihood(points, mu, beta);
     return out;
@@ -142,22 +226,18 @@ BootstrapInterval bootstrap(const std::vector<IdaPoint>& points, int resamples, 
     check_points(points);
     if (resamples < 2) throw std::invalid_argument("fragility bootstrap: at least 2 resamples");
     if (!(level > 0 && level < 1)) throw std::invalid_argument("fragility bootstrap: the level must be in (0, 1)");
+    const std::string why = why_no_maximum(points);
+    if (!why.empty()) throw std::invalid_argument("fragility bootstrap: " + why);
     SeededRng rng(seed);
     std::vector<double> medians, betas;
     std::vector<IdaPoint> draw(points.size());
     for (long attempts = 0; static_cast<int>(medians.size()) < resamples; ++attempts) {
         if (attempts > 100L * resamples)
-            throw std::invalid_argument("fragility bootstrap: fewer than 1 in 100 resamples hold 2 distinct "
-                                        "overturning records; too few records overturned to resample");
-        int collapsed = 0;
-        for (IdaPoint& d : draw) {
-            d = points[rng.index(points.size())];
-            collapsed += d.collapsed;
-        }
-        double mu = 0, beta = 0;
-        if (collapsed < 2) continue;
-        moments(draw, mu, beta);
-        if (!(beta > 0)) continue;  // every draw of the same record: no spread to fit
+            throw std::invalid_argument("fragility bootstrap: fewer than 1 in 100 resamples have a maximum of ln L "
+                                        "(two distinct overturning q, or one below a censored record); too few "
+                                        "records overturned to resample");
+        for (IdaPoint& d : draw) d = points[rng.index(points.size())];
+        if (!why_no_maximum(draw).empty()) continue;
         const LognormalFragility f = fit_lognormal(draw);
         medians.push_back(f.median);
         betas.push_back(f.beta);

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "studies/resampling.hpp"
@@ -38,20 +39,39 @@ double overturning_probability(const LognormalFragility& f, double q);
 // fit_lognormal maximises).
 double log_likelihood(const std::vector<IdaPoint>& points, const LognormalFragility& f);
 
+// Whether every collapsed point has the same q, compared as doubles (bit for
+// bit), with no tolerance: the IDA bisects every record's boundary by the same
+// halvings of the same grid, so two records whose first collapse falls in one
+// final bracket already get the same double, and two that do not differ by a
+// bracket (1e-6 relative by default); a tolerance here would have to know the
+// IDA's.  False without collapsed points.
+bool all_collapses_equal(const std::vector<IdaPoint>& points);
+
+// Why ln L of (F1) on the points has no maximum, or "" when it has one.  It
+// has none when no point collapsed (ln L rises towards 0 as the median grows),
+// or when every collapse is at one q = c and no censored point lies above c:
+// at median c, ln L grows like -n ln beta as beta -> 0.  A censored point
+// above c makes ln L -> -inf there instead (its ln[1 - Phi] falls like
+// -1/beta^2), and so do two distinct collapses; then ln L, continuous and
+// -inf at every edge, has its maximum, one collapse being enough
+// (docs/fragility.md, "Equal and censored collapse values").
+std::string why_no_maximum(const std::vector<IdaPoint>& points);
+
 // Maximum likelihood of (F1) on the points: with every point collapsed it is
 // the closed form ln median = mean of ln q_i, beta^2 = mean of (ln q_i - ln median)^2
 // (Baker 2015's moment estimates, with 1/n where Baker's sample deviation has
 // 1/(n - 1)); with censored points it maximises
 //     sum_collapsed ln[phi(z_i) / (beta q_i)] + sum_censored ln[1 - Phi(z_i)],  z_i = ln(q_i / median) / beta
 // by Newton's method in Olsen's concave parameters (1/beta, ln median / beta),
-// from the collapsed points' closed form, to a step of 1e-13 relative.
-// Throws std::invalid_argument with fewer than 2 collapsed points, or a q
+// from the collapsed points' closed form (from all points' when the collapses
+// share one q), to a step of 1e-13 relative.
+// Throws std::invalid_argument where why_no_maximum says why, or for a q
 // that is not finite and > 0.
 LognormalFragility fit_lognormal(const std::vector<IdaPoint>& points);
 
 struct BootstrapInterval {
     Range median, beta;  // percentile intervals at the given level
-    int resamples = 0;   // resamples fitted (those with < 2 collapsed points are redrawn)
+    int resamples = 0;   // resamples fitted (those whose ln L has no maximum, by why_no_maximum, are redrawn)
     std::uint64_t seed = 0;
     double level = 0;
 };
@@ -59,7 +79,9 @@ struct BootstrapInterval {
 // The records resampled with replacement `resamples` times (GSL's mt19937,
 // seeded: the same seed gives the same interval on any machine;
 // studies/resampling.hpp), each resample refitted; the percentile interval at
-// `level` (e.g. 0.9).
+// `level` (e.g. 0.9).  A resample whose ln L has no maximum (why_no_maximum:
+// say every draw of one record) is redrawn, so the interval is over resamples
+// that have a fit.  Throws std::invalid_argument where the points have none.
 BootstrapInterval bootstrap(const std::vector<IdaPoint>& points, int resamples, std::uint64_t seed, double level);
 
 // The empirical curve: at each collapsed point's q, in increasing order, the

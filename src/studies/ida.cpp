@@ -135,15 +135,13 @@ Ida incremental_dynamic_analysis(const GroundInput& input, double alpha, double 
 
 namespace {
 
-// fit_lognormal refuses points that all share one q (beta 0): the same
-// record twice, say.  That is an answer about the records, not an error.
+// Points whose ln L has no maximum (no collapse, or every collapse at one q
+// with no censored record above it: the same record twice, say) are an
+// answer about the records, not an error.
 void fit_block(BlockFragility& f, const FragilityStudyOptions& o) {
-    try {
-        f.fit = fit_lognormal(f.points);
-    } catch (const std::invalid_argument& e) {
-        f.no_fit = e.what();
-        return;
-    }
+    f.no_fit = why_no_maximum(f.points);
+    if (!f.no_fit.empty()) return;
+    f.fit = fit_lognormal(f.points);
     f.fitted = true;
     if (o.resamples > 0) {
         f.interval = bootstrap(f.points, o.resamples, o.seed, o.level);
@@ -158,13 +156,8 @@ BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, c
     f.block = block;
     for (const Ida& ida : idas) f.points.push_back(ida.point);
     f.idas = std::move(idas);
-    int collapsed = 0;
-    for (const IdaPoint& point : f.points) collapsed += point.collapsed;
     f.empirical = empirical_curve(f.points);
-    // fit_lognormal needs two collapses; fewer is an answer (a block too
-    // stocky for these records), not an error.
-    if (collapsed < 2) f.no_fit = "fewer than 2 records overturn the block below q_max";
-    else fit_block(f, o);
+    fit_block(f, o);
     return f;
 }
 

@@ -90,7 +90,7 @@ struct BlockFragility {
     BlockShape block;
     std::vector<Ida> idas;            // one per input, in the inputs' order
     std::vector<IdaPoint> points;     // each IDA's point
-    bool fitted = false;              // false with fewer than 2 collapsed points, or all at one q
+    bool fitted = false;              // false where ln L has no maximum (why_no_maximum)
     std::string no_fit;               // why not fitted
     LognormalFragility fit;
     bool bootstrapped = false;
@@ -99,10 +99,11 @@ struct BlockFragility {
 };
 
 // One block's fragility from its IDAs (one per input, in the inputs' order):
-// their points, the empirical curve and, with at least 2 collapses, the
-// lognormal fit with its bootstrap interval.  fragility_study's second half,
-// for a front end that ran the IDAs elsewhere (rocking fragility on the batch
-// engine's ranks).  Throws what bootstrap throws.
+// their points, the empirical curve and, where ln L has a maximum
+// (why_no_maximum), the lognormal fit with its bootstrap interval.
+// fragility_study's second half, for a front end that ran the IDAs elsewhere
+// (rocking fragility on the batch engine's ranks).  Throws what fit_lognormal
+// and bootstrap throw on points that have a maximum.
 BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, const FragilityStudyOptions& options);
 
 // For each block, the IDA of every input, the lognormal fit of their points
