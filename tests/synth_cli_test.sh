@@ -60,7 +60,8 @@ check  "a pulse cut short is named" "lengthen the duration" "$rocking" record sy
 check  "seed 0 is named"           "--stochastic: the seed must be a whole number from 1 to 4294967295" \
     "$rocking" record synth --stochastic 0 --dt 0.01 --duration 5
 status "seed 0 exits 2"            2 "$rocking" record synth --stochastic 0 --dt 0.01 --duration 5
-check  "a step above Nyquist is named" "--dt: the filter's frequency reaches" \
+# The defaults' filter above 1/(2 dt): only the step is the user's, so --dt is named.
+check  "a step above Nyquist is named" "--dt: fmid = 5.87 Hz, the filter's frequency at tmid = 12.4 s, is at or above the Nyquist frequency 1/(2 dt) = 5 Hz of dt = 0.1 s" \
     "$rocking" record synth --stochastic 1 --dt 0.1 --duration 30
 # An alpha2 whose gamma inverse GSL cannot find aborted the process (GSL's default handler).
 check  "a huge alpha2 is named"    "--params: alpha2 must be in (1, 100000] (got 1e+300)" \
@@ -73,6 +74,83 @@ status "a sum too long exits 2"    2 timeout 20 "$rocking" record synth --stocha
 check  "an unknown key is named"   "--params: unknown key 'foo'" \
     "$rocking" record synth --stochastic 1 --dt 0.01 --duration 10 --params foo=1
 status "an unknown key exits 2"    2 "$rocking" record synth --stochastic 1 --dt 0.01 --duration 10 --params foo=1
+# Every frequency of a generator at or above 1/(2 dt) is refused naming the option, the
+# parameter and the limit (exit 2); just below it the record is kept and warned of, on
+# standard error and in --json's "warnings".  dt = 0.01 s: 1/(2 dt) = 50 Hz.
+refused() {  # description, expected message, synth arguments...
+    local what="$1" want="$2"; shift 2
+    check  "$what is named" "$want" "$rocking" record synth "$@"
+    status "$what exits 2" 2 "$rocking" record synth "$@"
+}
+kept() {  # description, expected warning, synth arguments...
+    local what="$1" want="$2"; shift 2
+    status "$what is kept" 0 "$rocking" record synth "$@"
+    check  "$what is warned of" "rocking record: warning: $want" "$rocking" record synth "$@"
+    same   "$what: one warning in --json" "1" "$(json_field '["warnings"].__len__()' "$rocking" record synth "$@" --json)"
+}
+refused "the issue's pulse, fp = 100 Hz at dt = 0.02 s" \
+    "--pulse: fp = 100 Hz, the pulse's carrier frequency, is at or above the Nyquist frequency 1/(2 dt) = 25 Hz of dt = 0.02 s: lower fp, or take dt below 0.003333 s" \
+    --pulse 0.5,100,0,2 --dt 0.02 --duration 5
+for fp in 50 50.001; do
+    refused "the carrier fp = $fp Hz" "--pulse: fp = 50 Hz, the pulse's carrier frequency, is at or above the Nyquist frequency 1/(2 dt) = 50 Hz of dt = 0.01 s" \
+        --pulse 0.5,$fp,0,2 --dt 0.01 --duration 2
+done
+for gamma in 4 3.99; do  # fp + fp/gamma = 50 Hz, then 50.03 Hz: the envelope widens the carrier's band
+    refused "the envelope's sideband (gamma = $gamma)" "--pulse: fp + fp/gamma = 50" --pulse 0.5,40,0,$gamma --dt 0.01 --duration 2
+done
+kept "a sideband just below 1/(2 dt)" "fp + fp/gamma = 49.98 Hz, the pulse's highest frequency" --pulse 0.5,40,0,4.01 --dt 0.01 --duration 2
+same "a well-sampled pulse: no warnings" "[]" "$(json_field '["warnings"]' "$rocking" record synth --pulse 0.5,1,0,2 --dt 0.001 --duration 3 --json)"
+for fmid in 50 50.001; do
+    refused "fmid = $fmid Hz" "--params: fmid = 50 Hz, the filter's frequency at tmid = 12.4 s, is at or above the Nyquist frequency 1/(2 dt) = 50 Hz of dt = 0.01 s" \
+        --stochastic 1 --dt 0.01 --duration 20 --params fmid=$fmid,fprime=0,zeta=0.8
+done
+# fmid + fprime (t - tmid) = 50 Hz at the record's end (fprime = 1.25 Hz/s) or start (-5 Hz/s); tmid = 4 s.
+for fprime in 1.2500001 1.3; do
+    refused "the filter at the record's end (fprime = $fprime)" "--params: fmid + fprime (t - tmid) = 50" \
+        --stochastic 1 --dt 0.01 --duration 20 --params fmid=30,fprime=$fprime,zeta=0.8,tmid=4,D5_95=5
+done
+kept "the filter just below 1/(2 dt) at the record's end" "the filter's band edge = 50 Hz" \
+    --stochastic 1 --dt 0.01 --duration 20 --params fmid=30,fprime=1.2499999,zeta=0.8,tmid=4,D5_95=5
+for fprime in -5.000001 -5.1; do
+    refused "the filter at the record's start (fprime = $fprime)" "--params: fmid + fprime (t - tmid) = 50" \
+        --stochastic 1 --dt 0.01 --duration 5 --params fmid=30,fprime=$fprime,zeta=0.8,tmid=4,D5_95=5
+done
+kept "the filter just below 1/(2 dt) at the record's start" "the filter's band edge = 50 Hz" \
+    --stochastic 1 --dt 0.01 --duration 5 --params fmid=30,fprime=-4.999999,zeta=0.8,tmid=4,D5_95=5
+# The band's upper half-power edge, fmid sqrt(1 - 2 zeta^2 + 2 zeta sqrt(1 - zeta^2)): 50 Hz at
+# fmid = 42.373 Hz for zeta = 0.3; with zeta = 0.8 the band ends at fmid itself.
+band_limit=$(/usr/bin/python3 -c "import math; z = 0.3; print(50 / math.sqrt(1 - 2*z*z + 2*z*math.sqrt(1 - z*z)))")
+for factor in 1.000001 1.01; do
+    refused "the band's edge (fmid = $factor x $band_limit Hz)" "--params: the filter's band edge = 50" \
+        --stochastic 1 --dt 0.01 --duration 20 --params "fmid=$(/usr/bin/python3 -c "print($band_limit * $factor)"),fprime=0,zeta=0.3"
+done
+kept "the band's edge just below 1/(2 dt)" "the filter's band edge = 50 Hz" \
+    --stochastic 1 --dt 0.01 --duration 20 --params "fmid=$(/usr/bin/python3 -c "print($band_limit * 0.999999)"),fprime=0,zeta=0.3"
+refused "a band zeta widens past 1/(2 dt)" "--params: the filter's band edge = 51.81 Hz, the upper half-power frequency of its band around 45 Hz, widened by zeta = 0.213" \
+    --stochastic 1 --dt 0.01 --duration 20 --params fmid=45,fprime=0
+status "the same fmid with zeta = 0.8 is kept" 0 "$rocking" record synth --stochastic 1 --dt 0.01 --duration 20 --params fmid=45,fprime=0,zeta=0.8
+refused "the issue's fc = 1000 Hz at dt = 0.02 s" \
+    "--params: fc = 1000 Hz, the post-filter's corner, is at or above the Nyquist frequency 1/(2 dt) = 25 Hz of dt = 0.02 s: lower fc, or take dt below 0.0005 s" \
+    --stochastic 1 --dt 0.02 --duration 5 --params fc=1000
+for fc in 50 50.001; do
+    refused "fc = $fc Hz" "--params: fc = 50 Hz, the post-filter's corner, is at or above the Nyquist frequency 1/(2 dt) = 50 Hz" \
+        --stochastic 1 --dt 0.01 --duration 20 --params fc=$fc
+done
+kept "fc just below 1/(2 dt)" "fc = 49.99 Hz, the post-filter's corner, has 2" --stochastic 1 --dt 0.01 --duration 20 --params fc=49.99
+same "the defaults at dt = 0.01 s: no warnings" "[]" "$(json_field '["warnings"]' "$rocking" record synth --stochastic 1 --dt 0.01 --duration 40 --json)"
+check "a warning is written into the file" "# warning: the filter's band edge = 8.029 Hz" \
+    sh -c "'$rocking' record synth --stochastic 1 --dt 0.02 --duration 40 --output '$tmp/coarse.txt' >/dev/null 2>&1; cat '$tmp/coarse.txt'"
+
+# A bad physical parameter is named as given, not as the alpha it gives.
+refused "tmid = 1000 s" "--params: tmid = 1000 s and D5_95 = 17.3 s (Ia = 0.459108 m/s) give alpha1 = 10^-46453, outside a double's range: with tmid 57.8 times D5_95" \
+    --stochastic 1 --dt 0.01 --duration 20 --params tmid=1000
+refused "tmid = 0.001 s" "--params: tmid/D5_95 must be in (0.203, 96.09) for a gamma modulating function with alpha2 > 1 (got 5.78e-05: tmid = 0.001 s and D5_95 = 17.3 s)" \
+    --stochastic 1 --dt 0.01 --duration 20 --params tmid=0.001
+refused "a q(t) that overflows within the record" "--params: q(t) = alpha1 t^(alpha2 - 1) exp(-alpha3 t) overflows a double before the record's end at 250 s" \
+    --stochastic 1 --dt 0.02 --duration 250 --params tmid=100,fprime=0
+refused "fc = -1" "--params: fc must be > 0 and finite (got -1)" --stochastic 1 --dt 0.01 --duration 20 --params fc=-1
+refused "zeta = 1" "--params: zeta must be in (0, 1) (got 1)" --stochastic 1 --dt 0.01 --duration 20 --params zeta=1
+
 check  "--dt is required"          "--dt is required" "$rocking" record synth --pulse 0.5,1,0,2 --duration 5
 status "both generators exit 2"    2 "$rocking" record synth --pulse 0.5,1,0,2 --stochastic 1 --dt 0.01 --duration 5
 # An --output that cannot be written is an input error (exit 1) naming the file; nothing lands.

@@ -237,16 +237,22 @@ std::shared_ptr<Record> record_synth(const py::object& pulse_given, const std::o
         try {
             r = std::make_shared<Record>(has_pulse ? records::pulse_record(pp, dt, duration)
                                                : records::stochastic_record(sp, seed, dt, duration));
+        } catch (const records::SamplingError& e) {
+            // The argument that set the frequency, as the command line names it: params when
+            // it gave one of the frequency's keys, dt for a default's.
+            bool given = has_pulse;
+            for (const std::string& key : e.parameters) given = given || (params && params->count(key));
+            error = std::string(has_pulse ? "pulse" : given ? "params" : "dt") + ": " + e.what();
         } catch (const std::invalid_argument& e) {
             // The argument to change, as the command line names it.
             const std::string what = e.what();
-            const std::string option = what.find("Nyquist") != std::string::npos ? "dt"
-                                       : what.rfind("duration/dt", 0) == 0        ? "duration"
-                                                                                  : flag;
-            error = option + ": " + what;
+            error = (what.rfind("duration/dt", 0) == 0 ? std::string("duration") : flag) + ": " + what;
         }
     }
     if (!error.empty()) refuse(error);
+    // The command line's warnings on standard error, as Python's (the record's header keeps them).
+    for (const std::string& w : records::warnings_of(*r))
+        if (PyErr_WarnEx(PyExc_RuntimeWarning, ("record_synth: " + w).c_str(), 1) != 0) throw py::error_already_set();
     return r;
 }
 

@@ -43,9 +43,13 @@ def test_a_gamma_shape_beyond_gsl_s_inverse_is_refused_not_aborted():
     message, code = cli_error("record", "synth", "--stochastic", 1, "--dt", 0.01, "--duration", 20,
                               "--params", "alpha1=1,alpha2=1e300,alpha3=1")
     assert code == 2 and message.startswith("--params: alpha2 must be in (1, 100000]"), message
-    # The largest alpha2 taken still runs (the Arias route gives at most 50000.5: shape 1e5).
-    assert rq.record_synth(stochastic=1, params={"alpha1": 1, "alpha2": 1e5, "alpha3": 4000}, dt=0.01,
-                           duration=20).samples == 2001
+    # The largest alpha2 taken still runs (the Arias route gives at most 50000.5: shape 1e5), on a
+    # record short enough for t^(alpha2 - 1) to stay a double; over 20 s it overflowed, and the record
+    # was inf times 0, NaN, until q's range was checked.
+    r = rq.record_synth(stochastic=1, params={"alpha1": 1, "alpha2": 1e5, "alpha3": 1e5}, dt=0.01, duration=1)
+    assert r.samples == 101 and np.isfinite(r.accel).all()
+    with pytest.raises(ValueError, match=r"^params: q\(t\) = alpha1 t\^\(alpha2 - 1\) exp\(-alpha3 t\) overflows"):
+        rq.record_synth(stochastic=1, params={"alpha1": 1, "alpha2": 1e5, "alpha3": 4000}, dt=0.01, duration=20)
 
 
 def test_a_gsl_error_during_a_call_is_a_runtime_error_not_an_abort():

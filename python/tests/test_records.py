@@ -178,3 +178,44 @@ def test_a_bad_plain_file_names_its_line(tmp_path):
     with pytest.raises(rq.RecordError) as e:
         rq.read_record(missing)
     assert str(e.value) == message
+
+
+# Every frequency of a generator at or above 1/(2 dt) (issue 38: fp = 100 Hz at dt = 0.02 s gave a
+# PGA of 1e-14 m/s^2, fc = 1000 Hz one of 2e-16): refused by the library, so record_synth says what
+# `record synth` says, naming the argument that set it; a default's names dt.
+SAMPLING = [
+    (["--pulse", "0.5,100,0,2"], dict(pulse=(0.5, 100, 0, 2)), 0.02, 5),          # the carrier
+    (["--pulse", "0.5,40,0,4"], dict(pulse=(0.5, 40, 0, 4)), 0.01, 2),           # its sideband at 50 Hz
+    (["--stochastic", 1, "--params", "fmid=50,fprime=0,zeta=0.8"],
+     dict(stochastic=1, params={"fmid": 50, "fprime": 0, "zeta": 0.8}), 0.01, 20),
+    (["--stochastic", 1, "--params", "fmid=30,fprime=1.3,zeta=0.8,tmid=4,D5_95=5"],
+     dict(stochastic=1, params={"fmid": 30, "fprime": 1.3, "zeta": 0.8, "tmid": 4, "D5_95": 5}), 0.01, 20),
+    (["--stochastic", 1, "--params", "fmid=45,fprime=0"], dict(stochastic=1, params={"fmid": 45, "fprime": 0}), 0.01, 20),
+    (["--stochastic", 1, "--params", "fc=1000"], dict(stochastic=1, params={"fc": 1000}), 0.02, 5),
+    (["--stochastic", 1, "--params", "Ia=0.5"], dict(stochastic=1, params={"Ia": 0.5}), 0.1, 30),  # a default's fmid
+    (["--stochastic", 1, "--params", "tmid=1000"], dict(stochastic=1, params={"tmid": 1000}), 0.01, 20),
+]
+
+
+@pytest.mark.parametrize("words,kwargs,dt,duration", SAMPLING)
+def test_record_synth_refuses_what_record_synth_refuses(words, kwargs, dt, duration):
+    message, code = cli_error("record", "synth", *words, "--dt", dt, "--duration", duration)
+    option = "--pulse" if "--pulse" in words else "--dt" if words[-1] == "Ia=0.5" else "--params"
+    assert code == 2 and message.startswith(option + ": "), message
+    with pytest.raises(ValueError) as raised:
+        rq.record_synth(dt=dt, duration=duration, **kwargs)
+    assert "--" + str(raised.value) == message
+
+
+def test_record_synth_warns_below_ten_samples_per_period():
+    # fp + fp/gamma = 10.1 Hz at dt = 0.01 s: 9.9 samples a period, kept and warned of, as the command warns.
+    with pytest.warns(RuntimeWarning, match=r"^record_synth: fp \+ fp/gamma = 10\.1 Hz, .* has 9\.901 samples per "
+                                            r"period at dt = 0\.01 s, fewer than 10"):
+        r = rq.record_synth(pulse=(0.5, 8.08, 0, 4), dt=0.01, duration=2)
+    expected = cli("record", "synth", "--pulse", "0.5,8.08,0,4", "--dt", 0.01, "--duration", 2)
+    assert [r.header["warning"]] == expected["warnings"]
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        fine = rq.record_synth(pulse=(0.5, 7.92, 0, 4), dt=0.01, duration=2)
+    assert "warning" not in fine.header

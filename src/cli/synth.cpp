@@ -3,7 +3,9 @@
 // `record info FILE --unit m/s2` reads back.
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -35,12 +37,20 @@ records::PulseParameters pulse_from(const std::string& text) {
     return p;
 }
 
-// --params key=value,...: records::stochastic_parameters_from's names; its refusals
-// reach the caller's catch, which names --params.
-records::StochasticParameters stochastic_from(const Args& a) {
-    if (!a.values.count("--params")) return records::default_stochastic_parameters();
-    return records::stochastic_parameters_from(
-        key_values("--params", a.values.at("--params"), records::stochastic_parameter_names()));
+// --params key=value,...: records::stochastic_parameters_from's names.
+std::map<std::string, double> params_from(const Args& a) {
+    if (!a.values.count("--params")) return {};
+    return key_values("--params", a.values.at("--params"), records::stochastic_parameter_names());
+}
+
+// The option that set a frequency the step cannot represent: --pulse (fp, gamma), --params
+// when it gave one of the frequency's parameters, else --dt (a default's frequency: the
+// step is the user's only say in it).
+std::string sampling_option(const records::SamplingError& e, bool pulse, const std::map<std::string, double>& params) {
+    if (pulse) return "--pulse";
+    const bool given = std::any_of(e.parameters.begin(), e.parameters.end(),
+                                   [&](const std::string& key) { return params.count(key) > 0; });
+    return given ? "--params" : "--dt";
 }
 
 // The header's values are %.17g text or words: numbers stay numbers in JSON.
@@ -80,17 +90,21 @@ void print_summary(const records::Record& r, const records::PeakMotion& m, const
                   << ", \"to5_s\": " << json_number(m.to5) << ", \"parameters\": {";
         bool first = true;
         for (const auto& [key, value] : r.header) {
+            if (key == "warning") continue;
             std::cout << (first ? "" : ", ") << json_string(key) << ": " << json_value(value);
             first = false;
         }
-        std::cout << "}, \"output\": " << (output.empty() ? "null" : json_string(output)) << "}\n";
+        std::cout << "}, \"warnings\": [";
+        first = true;
+        for (const std::string& w : records::warnings_of(r)) std::cout << (first ? "" : ", ") << json_string(w), first = false;
+        std::cout << "], \"output\": " << (output.empty() ? "null" : json_string(output)) << "}\n";
         return;
     }
     std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,
                 r.duration());
     std::printf("  generator: %s\n", r.header.at("generator").c_str());
     for (const auto& [key, value] : r.header)
-        if (key != "generator") std::printf("  %s = %s\n", key.c_str(), value.c_str());
+        if (key != "generator" && key != "warning") std::printf("  %s = %s\n", key.c_str(), value.c_str());
     std::printf("  PGA = %s m/s^2 (%s g), PGV = %s m/s, to_5 = %s s\n", four(m.pga).c_str(),
                 four(m.pga / dynamics::kGravity).c_str(), four(m.pgv).c_str(), four(m.to5).c_str());
     if (!output.empty()) std::printf("  written to %s (t, acceleration in m/s^2)\n", output.c_str());
@@ -106,22 +120,25 @@ int cmd_record_synth(int argc, char** argv) {
     const double dt = positive(a, "--dt"), duration = positive(a, "--duration");
     const std::string flag = pulse ? "--pulse" : a.values.count("--params") ? "--params" : "--stochastic";
     check_outputs(a, {"--output"}, {});
+    const std::map<std::string, double> params = pulse ? std::map<std::string, double>{} : params_from(a);
     records::Record r;
     try {
         if (pulse) {
             r = records::pulse_record(pulse_from(a.values.at("--pulse")), dt, duration);
         } else {
             const std::uint64_t seed = seed_option("--stochastic", a.values.at("--stochastic"));
-            r = records::stochastic_record(stochastic_from(a), seed, dt, duration);
+            r = records::stochastic_record(
+                params.empty() ? records::default_stochastic_parameters() : records::stochastic_parameters_from(params),
+                seed, dt, duration);
         }
+    } catch (const records::SamplingError& e) {
+        throw UsageError(sampling_option(e, pulse, params) + ": " + e.what());
     } catch (const std::invalid_argument& e) {
-        // The option to change: the step for the Nyquist limit, the duration for the sample cap.
+        // The option to change: the duration for the sample cap, else the generator's.
         const std::string what = e.what();
-        const std::string option = what.find("Nyquist") != std::string::npos  ? "--dt"
-                                   : what.rfind("duration/dt", 0) == 0         ? "--duration"
-                                                                               : flag;
-        throw UsageError(option + ": " + what);
+        throw UsageError((what.rfind("duration/dt", 0) == 0 ? "--duration" : flag) + ": " + what);
     }
+    for (const std::string& w : records::warnings_of(r)) std::cerr << "rocking record: warning: " << w << "\n";
     const std::string output = a.values.count("--output") ? a.values.at("--output") : "";
     if (!output.empty()) write_two_columns(r, output);
     print_summary(r, records::peak_motion(r.accel, r.dt), output, a.json);

@@ -7,6 +7,7 @@
 #include <gsl/gsl_roots.h>
 #include <gsl/gsl_sf_gamma.h>
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <algorithm>
@@ -42,6 +43,65 @@ std::string text_of(double v) {
     throw std::invalid_argument(name + " must be " + rule + " (got " + text_of(got) + ")");
 }
 
+// A derived value in a message (a limit, a count, a ratio): four digits, where text_of
+// would write 1/(2 dt) = 24.999999999999996.
+std::string short_text(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+// A frequency a generator puts into its record, for the checks against the step.
+struct Frequency {
+    std::string name;                     // as the message writes it: "fp", "fc", ...
+    std::string role;                     // what it is, after the value
+    double hz;
+    std::vector<std::string> parameters;  // the keys whose values set it
+    std::string remedy;                   // the change of those that lowers it
+};
+
+// A frequency at or above 1/(2 dt) is refused: its samples alias it to a lower one (at
+// 1/(2 dt) itself a sine is sampled at two phases only, its amplitude lost).  The first
+// such frequency is named; the step offered is below 1/(2 f) for the highest f of all.
+void refuse_unsampled(const std::vector<Frequency>& frequencies, double dt) {
+    const double nyquist = 0.5 / dt;
+    double highest = 0;
+    for (const Frequency& f : frequencies) highest = std::max(highest, f.hz);
+    for (const Frequency& f : frequencies)
+        if (!(f.hz < nyquist))
+            throw SamplingError(f.name + " = " + short_text(f.hz) + " Hz, " + f.role +
+                                    ", is at or above the Nyquist frequency 1/(2 dt) = " + short_text(nyquist) +
+                                    " Hz of dt = " + text_of(dt) + " s: " + f.remedy + ", or take dt below " +
+                                    short_text(0.5 / highest) + " s",
+                                f.parameters);
+}
+
+// Below 1/(2 dt) a frequency is represented, but with n = 1/(f dt) samples a period the
+// samples of a sine miss its crest by up to 1 - cos(pi/n): the record's PGA, and the
+// block's input read linear between samples, fall short of the motion's.  The pulse's
+// sampled PGA, measured, falls up to 3.4 % short at n = 10 (docs/synthetic.md, "Sampling").
+std::vector<std::string> sampling_warnings(const std::vector<Frequency>& frequencies, double dt) {
+    std::vector<std::string> out;
+    for (const Frequency& f : frequencies) {
+        const double per_period = 1 / (f.hz * dt);
+        if (!(per_period < kWarnSamplesPerPeriod)) continue;
+        out.push_back(f.name + " = " + short_text(f.hz) + " Hz, " + f.role + ", has " + short_text(per_period) +
+                      " samples per period at dt = " + text_of(dt) + " s, fewer than " +
+                      short_text(kWarnSamplesPerPeriod) + ": a sine of that frequency so sampled peaks up to " +
+                      short_text(100 * (1 - std::cos(M_PI / per_period))) + " % below its crest (take dt at most " +
+                      short_text(1 / (kWarnSamplesPerPeriod * f.hz)) + " s)");
+    }
+    return out;
+}
+
+// The header's "warning": the sentences, "; " between them (sampling_warnings writes none
+// with "; " inside).
+void state_warnings(Record& r, const std::vector<std::string>& warnings) {
+    std::string all;
+    for (const std::string& w : warnings) all += (all.empty() ? "" : "; ") + w;
+    if (!all.empty()) r.header["warning"] = all;
+}
+
 // n - 1 = floor(duration/dt): the last sample at or just before `duration`
 // (1e-9 of a step forgives duration/dt landing a rounding below an integer).
 std::size_t sample_count(double dt, double duration) {
@@ -67,7 +127,39 @@ void check_pulse(const PulseParameters& p) {
 
 double half_width(const PulseParameters& p) { return p.gamma / (2 * p.fp); }
 
+// v = A [cos(b s + nu)/2 + cos((b + c) s + nu)/4 + cos((b - c) s + nu)/4], b = 2 pi fp,
+// c = b/gamma: the carrier fp and the sidebands fp -+ fp/gamma that the envelope, of
+// frequency fp/gamma, puts around it; a = v' holds the same three.  The highest is
+// fp + fp/gamma: the envelope alone (fp/gamma < fp, gamma > 1) never reaches 1/(2 dt)
+// before the carrier does, but it widens the carrier's band by its own frequency.  (The
+// support's ends, where a' jumps, add a tail falling as 1/f^3 that no step removes.)
+Frequency pulse_carrier(const PulseParameters& p) {
+    return {"fp", "the pulse's carrier frequency", p.fp, {"fp"}, "lower fp"};
+}
+Frequency pulse_highest(const PulseParameters& p) {
+    return {"fp + fp/gamma",
+            "the pulse's highest frequency (the carrier fp = " + text_of(p.fp) +
+                " Hz widened by its envelope's frequency fp/gamma = " + short_text(p.fp / p.gamma) + " Hz)",
+            p.fp + p.fp / p.gamma,
+            {"fp", "gamma"},
+            "raise gamma or lower fp"};
+}
+
 }  // namespace
+
+std::vector<std::string> warnings_of(const Record& r) {
+    std::vector<std::string> out;
+    const auto found = r.header.find("warning");
+    if (found == r.header.end()) return out;
+    const std::string& all = found->second;
+    for (std::size_t start = 0;;) {
+        const std::size_t end = all.find("; ", start);
+        out.push_back(all.substr(start, end == std::string::npos ? std::string::npos : end - start));
+        if (end == std::string::npos) break;
+        start = end + 2;
+    }
+    return out;
+}
 
 double pulse_velocity(const PulseParameters& p, double t) {
     const double s = t - p.t0;
@@ -99,6 +191,7 @@ double pulse_displacement(const PulseParameters& p, double t) {
 Record pulse_record(const PulseParameters& p, double dt, double duration) {
     check_pulse(p);
     const std::size_t n = sample_count(dt, duration);
+    refuse_unsampled({pulse_carrier(p), pulse_highest(p)}, dt);
     if (p.t0 - half_width(p) < 0)
         throw std::invalid_argument("t0 must be >= gamma/(2 fp) = " + text_of(half_width(p)) +
                                     " s, so that the pulse starts at or after t = 0 (got " + text_of(p.t0) + ")");
@@ -123,6 +216,7 @@ Record pulse_record(const PulseParameters& p, double dt, double duration) {
                 {"t0_s", text_of(p.t0)},
                 {"dt_s", text_of(dt)},
                 {"duration_s", text_of(duration)}};
+    state_warnings(r, sampling_warnings({pulse_highest(p)}, dt));
     return r;
 }
 
@@ -157,6 +251,14 @@ StochasticParameters stochastic_parameters_from(const std::map<std::string, doub
     const int arias = given("Ia") + given("D5_95") + given("tmid");
     if (alphas && arias) throw std::invalid_argument("give the alphas or Ia, D5_95, tmid, not both");
     if (alphas && alphas != 3) throw std::invalid_argument("alpha1, alpha2 and alpha3 go together");
+    // Each key's range in its own unit, so that fc = -1 is not refused as omega_c = -6.28.
+    auto given_in = [&](const char* key, bool (*inside)(double), const char* rule) {
+        if (values.count(key) && !inside(values.at(key))) refuse(key, rule, values.at(key));
+    };
+    given_in("fmid", [](double v) { return v > 0 && std::isfinite(v); }, "> 0 and finite");
+    given_in("fprime", [](double v) { return static_cast<bool>(std::isfinite(v)); }, "finite");
+    given_in("zeta", [](double v) { return v > 0 && v < 1; }, "in (0, 1)");
+    given_in("fc", [](double v) { return v > 0 && std::isfinite(v); }, "> 0 and finite");
     StochasticParameters p = default_stochastic_parameters();
     if (values.count("fmid")) p.omega_mid = 2 * M_PI * values.at("fmid");
     if (values.count("fprime")) p.omega_prime = 2 * M_PI * values.at("fprime");
@@ -190,10 +292,46 @@ double filter_frequency(const StochasticParameters& p, double t_mid, double tau)
     return p.omega_mid + p.omega_prime * (tau - t_mid);
 }
 
-// The filter must stay a damped oscillator above 0 Hz and below the Nyquist
-// frequency over the record: a falling omega_f crosses 0 on a long record,
-// and one above pi/dt is aliased by the sampling of the noise.
-void check_filter(const StochasticParameters& p, double t_mid, double dt, double t_end) {
+// The filter's frequencies over the record [0, t_end], in Hz.  omega_f is linear in t, so
+// its largest is at an end: omega_mid - omega_prime t_mid at t = 0 when omega_prime < 0, at
+// t_end otherwise; omega_mid itself is reached (at t_mid) when t_mid is in the record.
+// Around omega_f the filtered noise's spectrum is |H|^2 = omega_f^4 / ((omega_f^2 - w^2)^2
+// + 4 zeta^2 omega_f^2 w^2) (h is omega_f^2 times an oscillator's displacement response),
+// whose half-power band ends above at w_u = omega_f sqrt(1 - 2 zeta^2 + 2 zeta sqrt(1 - zeta^2))
+// for zeta <= 1/sqrt(2) (w_u >= omega_f: zeta widens the band); for a larger zeta |H|^2
+// falls from w = 0 and omega_f bounds the band.  Past w_u, |H|^2 falls as (omega_f/w)^4.
+std::vector<Frequency> filter_frequencies(const StochasticParameters& p, double t_mid, double t_end) {
+    std::vector<Frequency> out;
+    const double hz = 1 / (2 * M_PI);
+    if (t_mid <= t_end)
+        out.push_back({"fmid", "the filter's frequency at tmid = " + short_text(t_mid) + " s", p.omega_mid * hz,
+                       {"fmid"}, "lower fmid"});
+    const double t_top = p.omega_prime < 0 ? 0 : t_end, top = filter_frequency(p, t_mid, t_top) * hz;
+    out.push_back({"fmid + fprime (t - tmid)",
+                   "the filter's highest frequency over the record, at t = " + short_text(t_top) +
+                       " s (fmid = " + short_text(p.omega_mid * hz) + " Hz, fprime = " +
+                       short_text(p.omega_prime * hz) + " Hz/s, tmid = " + short_text(t_mid) + " s)",
+                   top,
+                   {"fmid", "fprime"},
+                   p.omega_prime < 0 ? "lower fmid or raise fprime" : "lower fmid or fprime, or shorten the record"});
+    const double z = p.zeta_f, widening = std::sqrt(std::max(1.0, 1 - 2 * z * z + 2 * z * std::sqrt(1 - z * z)));
+    out.push_back({"the filter's band edge",
+                   "the upper half-power frequency of its band around " + short_text(top) + " Hz, widened by zeta = " +
+                       text_of(z) + " (a factor sqrt(1 - 2 zeta^2 + 2 zeta sqrt(1 - zeta^2)) = " +
+                       short_text(widening) + ")",
+                   top * widening,
+                   {"zeta", "fmid", "fprime"},
+                   "lower zeta or the filter's frequency"});
+    return out;
+}
+
+Frequency corner_frequency(const StochasticParameters& p) {
+    return {"fc", "the post-filter's corner", p.omega_c / (2 * M_PI), {"fc"}, "lower fc"};
+}
+
+// The filter must stay a damped oscillator above 0 Hz over the record (a falling
+// omega_f crosses 0 on a long record).
+void check_filter_range(const StochasticParameters& p, double t_mid, double t_end) {
     if (!std::isfinite(p.omega_mid)) refuse("omega_mid", "finite", p.omega_mid);
     if (!std::isfinite(p.omega_prime)) refuse("omega_prime", "finite", p.omega_prime);
     if (!(p.zeta_f > 0 && p.zeta_f < 1)) refuse("zeta_f", "in (0, 1)", p.zeta_f);
@@ -201,14 +339,37 @@ void check_filter(const StochasticParameters& p, double t_mid, double dt, double
     for (double tau : {0.0, t_end}) {
         const double w = filter_frequency(p, t_mid, tau);
         if (!(w > 0))
-            throw std::invalid_argument("the filter's frequency omega_mid + omega_prime (tau - t_mid) is " + text_of(w) +
-                                        " rad/s at tau = " + text_of(tau) + " s (t_mid = " + text_of(t_mid) +
-                                        " s): it must stay > 0 over the record (shorten it or raise omega_prime)");
-        if (!(w < M_PI / dt))
-            throw std::invalid_argument("the filter's frequency reaches " + text_of(w / (2 * M_PI)) + " Hz at tau = " +
-                                        text_of(tau) + " s, at or above the Nyquist frequency 1/(2 dt) = " +
-                                        text_of(0.5 / dt) + " Hz: take a smaller dt");
+            throw std::invalid_argument("the filter's frequency fmid + fprime (t - tmid) is " +
+                                        short_text(w / (2 * M_PI)) + " Hz at t = " + short_text(tau) + " s (fmid = " +
+                                        text_of(p.omega_mid / (2 * M_PI)) + " Hz, fprime = " +
+                                        text_of(p.omega_prime / (2 * M_PI)) + " Hz/s, tmid = " + short_text(t_mid) +
+                                        " s): it must stay > 0 over the record (" +
+                                        (tau == 0 ? "lower fprime or raise fmid"
+                                                  : "shorten the record, bring fprime closer to 0 or raise fmid") +
+                                        ")");
     }
+}
+
+// ... and its band below the Nyquist frequency.
+void check_filter(const StochasticParameters& p, double t_mid, double dt, double t_end) {
+    check_filter_range(p, t_mid, t_end);
+    refuse_unsampled(filter_frequencies(p, t_mid, t_end), dt);
+}
+
+// q(t) = alpha1 t^(alpha2 - 1) exp(-alpha3 t) is evaluated as written, and alpha1 t^(alpha2 - 1)
+// grows with t: finite at the record's end, it is finite throughout.  A large alpha2 (a
+// tmid many times D5_95: a narrow burst long after t = 0) overflows it, and q would be
+// inf times 0.
+void check_modulation_over(const StochasticParameters& p, double t_end) {
+    if (std::isfinite(p.alpha1 * std::pow(t_end, p.alpha2 - 1))) return;
+    const double t_mid = arias_time(p, 0.45), d5_95 = arias_time(p, 0.95) - arias_time(p, 0.05);
+    throw std::invalid_argument(
+        "q(t) = alpha1 t^(alpha2 - 1) exp(-alpha3 t) overflows a double before the record's end at " +
+        short_text(t_end) + " s (alpha1 = " + short_text(p.alpha1) + ", alpha2 = " + short_text(p.alpha2) +
+        ", alpha3 = " + short_text(p.alpha3) + " 1/s): its tmid = " + short_text(t_mid) + " s is " +
+        short_text(t_mid / d5_95) + " times its D5_95 = " + short_text(d5_95) +
+        " s, a burst so narrow and late that alpha2 is this large; bring tmid closer to D5_95 (or lower alpha2), or "
+        "shorten the record");
 }
 
 // The sum below runs each sample's term until its envelope exp(-zeta_f omega_f s) falls
@@ -251,13 +412,12 @@ struct RatioTarget {
 };
 double ratio_gap(double k, void* target) { return midpoint_ratio(k, nullptr) - static_cast<RatioTarget*>(target)->ratio; }
 
-// The shape k >= 1 with midpoint_ratio(k) = ratio, by Brent's method to 1e-14 relative.
+constexpr double kHighestShape = 1e5;
+
+// The shape k >= 1 with midpoint_ratio(k) = ratio (in its range, midpoint_ratio(1) to
+// midpoint_ratio(kHighestShape)), by Brent's method to 1e-14 relative.
 double shape_for_ratio(double ratio) {
-    const double lowest = midpoint_ratio(1, nullptr), highest_k = 1e5;
-    if (!(ratio > lowest) || !(ratio < midpoint_ratio(highest_k, nullptr)))
-        throw std::invalid_argument("t_mid/d5_95 must be in (" + text_of(lowest) + ", " +
-                                    text_of(midpoint_ratio(highest_k, nullptr)) +
-                                    ") for a gamma modulating function with alpha2 > 1 (got " + text_of(ratio) + ")");
+    const double highest_k = kHighestShape;
     GslErrorsAsCodes guard;
     RatioTarget target{ratio};
     gsl_function f{&ratio_gap, &target};
@@ -288,16 +448,46 @@ double arias_time(const StochasticParameters& p, double fraction) {
     return gsl_cdf_gamma_Pinv(fraction, 2 * p.alpha2 - 1, 1 / (2 * p.alpha3));
 }
 
+namespace {
+// e^x as the power of ten in a message: "-46451" for alpha1 = e^-106958.
+std::string power_of_ten(double log_value) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.0f", log_value / std::log(10.0));
+    return buf;
+}
+}  // namespace
+
 StochasticParameters with_arias_modulation(StochasticParameters base, double Ia, double d5_95, double t_mid) {
     if (!(Ia > 0) || !std::isfinite(Ia)) refuse("Ia", "> 0 and finite", Ia);
-    if (!(d5_95 > 0) || !std::isfinite(d5_95)) refuse("d5_95", "> 0 and finite", d5_95);
-    if (!(t_mid > 0) || !std::isfinite(t_mid)) refuse("t_mid", "> 0 and finite", t_mid);
-    const double k = shape_for_ratio(t_mid / d5_95);
+    if (!(d5_95 > 0) || !std::isfinite(d5_95)) refuse("D5_95", "> 0 and finite", d5_95);
+    if (!(t_mid > 0) || !std::isfinite(t_mid)) refuse("tmid", "> 0 and finite", t_mid);
+    const std::string given = "tmid = " + text_of(t_mid) + " s and D5_95 = " + text_of(d5_95) + " s";
+    const double ratio = t_mid / d5_95, lowest = midpoint_ratio(1, nullptr),
+                 highest = midpoint_ratio(kHighestShape, nullptr);
+    if (!(ratio > lowest) || !(ratio < highest))
+        throw std::invalid_argument("tmid/D5_95 must be in (" + short_text(lowest) + ", " + short_text(highest) +
+                                    ") for a gamma modulating function with alpha2 > 1 (got " + short_text(ratio) +
+                                    ": " + given + ")");
+    const double k = shape_for_ratio(ratio);
     base.alpha2 = (k + 1) / 2;
     base.alpha3 = (gsl_cdf_gamma_Pinv(0.95, k, 1) - gsl_cdf_gamma_Pinv(0.05, k, 1)) / (2 * d5_95);
     // int_0^inf q^2 = alpha1^2 Gamma(k) / (2 alpha3)^k = 2 g Ia / pi, in logarithms:
     // Gamma(k) and (2 alpha3)^k overflow long before their ratio does.
-    base.alpha1 = std::exp(0.5 * (std::log(2 * kGravity * Ia / M_PI) + k * std::log(2 * base.alpha3) - gsl_sf_lngamma(k)));
+    const double log_alpha1 =
+        0.5 * (std::log(2 * kGravity * Ia / M_PI) + k * std::log(2 * base.alpha3) - gsl_sf_lngamma(k));
+    base.alpha1 = std::exp(log_alpha1);
+    // The alphas are what the model uses; one out of a double's range is the user's
+    // Ia, D5_95 and tmid out of its reach, and is refused in their names.
+    if (!(base.alpha3 > 0) || !std::isfinite(base.alpha3))
+        throw std::invalid_argument(given + " give alpha3 = " + short_text(base.alpha3) +
+                                    " 1/s, outside a double's range: take D5_95 and tmid in seconds");
+    if (!(base.alpha1 >= DBL_MIN) || !std::isfinite(base.alpha1))
+        throw std::invalid_argument(
+            given + " (Ia = " + text_of(Ia) + " m/s) give alpha1 = 10^" + power_of_ten(log_alpha1) +
+            ", outside a double's range: with tmid " + short_text(ratio) +
+            " times D5_95, q(t) = alpha1 t^(alpha2 - 1) exp(-alpha3 t) needs alpha2 = " + short_text(base.alpha2) +
+            ", a burst so narrow and late that alpha1 leaves a double; bring tmid closer to D5_95" +
+            (ratio < 3 ? std::string(" or take D5_95 and tmid in seconds") : std::string()));
     return base;
 }
 
@@ -363,19 +553,29 @@ std::vector<double> critically_damped_high_pass(const std::vector<double>& x, do
 std::vector<double> modulated_noise(const StochasticParameters& p, std::uint64_t seed, double dt, double duration) {
     check_modulation(p);
     const std::size_t n = sample_count(dt, duration);
+    check_modulation_over(p, dt * (n - 1));
     std::vector<double> a = filtered_noise(p, white_noise(seed, n), dt);
     for (std::size_t k = 0; k < n; ++k) a[k] *= modulating_function(p, dt * k);
     return a;
 }
 
 Record stochastic_record(const StochasticParameters& p, std::uint64_t seed, double dt, double duration) {
+    // Every frequency against the step before the sum's work; modulated_noise checks the rest.
+    check_modulation(p);
+    const double t_end = dt * (sample_count(dt, duration) - 1), t_mid = arias_time(p, 0.45);
+    check_filter_range(p, t_mid, t_end);
+    std::vector<Frequency> frequencies = filter_frequencies(p, t_mid, t_end);
+    // The band's edge, the filter's last frequency, is its highest (fmid and the top lie below).
+    const Frequency band = frequencies.back();
+    frequencies.push_back(corner_frequency(p));
+    refuse_unsampled(frequencies, dt);
     Record r;
     r.accel = critically_damped_high_pass(modulated_noise(p, seed, dt, duration), dt, p.omega_c);
     r.format = "synthetic";
     r.path = "(synthetic)";
     r.name = "RDK2008 stochastic seed=" + std::to_string(seed);
     r.dt = dt;
-    const double t_mid = arias_time(p, 0.45), t05 = arias_time(p, 0.05), t95 = arias_time(p, 0.95);
+    const double t05 = arias_time(p, 0.05), t95 = arias_time(p, 0.95);
     const double k = 2 * p.alpha2 - 1;
     const double Ia = M_PI / (2 * kGravity) * p.alpha1 * p.alpha1 *
                       std::exp(gsl_sf_lngamma(k) - k * std::log(2 * p.alpha3));
@@ -395,6 +595,7 @@ Record stochastic_record(const StochasticParameters& p, std::uint64_t seed, doub
                 {"expected_D5_95_s", text_of(t95 - t05)},
                 {"dt_s", text_of(dt)},
                 {"duration_s", text_of(duration)}};
+    state_warnings(r, sampling_warnings({band, corner_frequency(p)}, dt));
     return r;
 }
 

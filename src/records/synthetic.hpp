@@ -7,18 +7,48 @@
 // sources and what was checked: docs/synthetic.md.
 //
 // Every function refuses a parameter outside its model with
-// std::invalid_argument naming the parameter.
+// std::invalid_argument naming the parameter, and a frequency the step cannot
+// represent with SamplingError (below).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "records/record.hpp"
 
 namespace rocking::records {
+
+// ---- What the step can represent ----
+//
+// A generator's record holds frequencies its parameters set (the pulse's carrier and
+// sidebands, the stochastic filter's band and the post-filter's corner); sampled at dt, a
+// frequency at or above the Nyquist frequency 1/(2 dt) is aliased into a record that is
+// not the motion asked for (an fp of 100 Hz at dt = 0.02 s gave a PGA of 1e-14 m/s^2).
+// pulse_record and stochastic_record refuse such a frequency with a SamplingError; one
+// with fewer than kWarnSamplesPerPeriod samples per period is kept, and the record's
+// header says so under "warning" (warnings_of).  Why 10: docs/synthetic.md ("Sampling").
+
+// A frequency at or above the Nyquist frequency: what() names it, its value, the limit and
+// dt; `parameters` are the names (as --pulse and stochastic_parameter_names spell them)
+// whose values set it, so that a front end can name the option to change.
+struct SamplingError : std::invalid_argument {
+    SamplingError(const std::string& what, std::vector<std::string> parameters)
+        : std::invalid_argument(what), parameters(std::move(parameters)) {}
+    std::vector<std::string> parameters;
+};
+
+// Fewer samples than this per period of a generator's frequency: the record is warned of
+// (at 10, the pulse's sampled PGA falls up to 3.4 % below its closed-form peak, measured;
+// more below).
+constexpr double kWarnSamplesPerPeriod = 10;
+
+// A generated record's warnings, one sentence each (its header's "warning", "; " between
+// them); none for a record sampled finely enough or not generated here.
+std::vector<std::string> warnings_of(const Record& r);
 
 // ---- The near-fault pulse of Mavroeidis & Papageorgiou (2003, BSSA 93(3)) ----
 
@@ -48,7 +78,8 @@ double pulse_acceleration(const PulseParameters& p, double t);
 double pulse_displacement(const PulseParameters& p, double t);
 // a(k dt), k = 0 .. n - 1 with n - 1 = floor(duration/dt): the whole pulse
 // must lie in [0, duration] (t0 - gamma/(2 fp) >= 0, t0 + gamma/(2 fp) <= duration),
-// so that the velocity integrated from rest at t = 0 is the pulse's.
+// so that the velocity integrated from rest at t = 0 is the pulse's; and its highest
+// frequency fp (1 + 1/gamma) must lie below 1/(2 dt) (SamplingError).
 Record pulse_record(const PulseParameters& p, double dt, double duration);
 
 // ---- The stochastic model of Rezaeian & Der Kiureghian (2008, EESD 37) ----
@@ -96,7 +127,8 @@ double arias_time(const StochasticParameters& p, double fraction);
 // duration is d5_95 (s) and whose 45 % time is t_mid (s): the shape from
 // t_mid / d5_95 (a function of the shape alone), then alpha3 from d5_95, then
 // alpha1 from Ia = (pi/2g) alpha1^2 Gamma(k) / (2 alpha3)^k, k = 2 alpha2 - 1.
-// The filter's fields of `base` are kept.
+// The filter's fields of `base` are kept.  Refusals name Ia, D5_95 and tmid (the keys
+// of stochastic_parameters_from), also when it is a derived alpha that leaves a double's range.
 StochasticParameters with_arias_modulation(StochasticParameters base, double Ia, double d5_95, double t_mid);
 
 // The names stochastic_parameters_from takes, as `rocking record synth --params`
@@ -106,8 +138,9 @@ const std::vector<std::string>& stochastic_parameter_names();
 // modulation as alpha1, alpha2, alpha3 (all three) or as Ia (m/s), D5_95 (s), tmid (s)
 // (those missing from the defaults, through with_arias_modulation); the filter as fmid
 // (Hz), fprime (Hz/s), zeta; the post-filter's corner fc (Hz).  Throws
-// std::invalid_argument for an unknown name, the alphas mixed with Ia/D5_95/tmid, or
-// fewer than three alphas: one front end's spelling, one set of checks.
+// std::invalid_argument for an unknown name, the alphas mixed with Ia/D5_95/tmid,
+// fewer than three alphas, or a value outside its range, naming the key as given (fc,
+// not omega_c; tmid, not the alpha1 it gives): one front end's spelling, one set of checks.
 StochasticParameters stochastic_parameters_from(const std::map<std::string, double>& values);
 
 // n standard normal numbers: GSL's gsl_rng_mt19937 seeded with `seed`, through
@@ -128,9 +161,13 @@ std::vector<double> filtered_noise(const StochasticParameters& p, const std::vec
 std::vector<double> critically_damped_high_pass(const std::vector<double>& x, double dt, double omega_c);
 
 // q(t_k) nu(t_k) for the seed's noise, before the post-filter: n - 1 = floor(duration/dt).
+// Refused when alpha1 t^(alpha2 - 1) overflows a double within the record (q could not be
+// evaluated as written), naming tmid and D5_95 as well as the alphas.
 std::vector<double> modulated_noise(const StochasticParameters& p, std::uint64_t seed, double dt, double duration);
 
-// The record: modulated_noise through critically_damped_high_pass.
+// The record: modulated_noise through critically_damped_high_pass.  Refused
+// (SamplingError) when, over the record, the filter's frequency omega_f(t), the upper
+// edge of its half-power band or the post-filter's corner omega_c reaches 1/(2 dt).
 Record stochastic_record(const StochasticParameters& p, std::uint64_t seed, double dt, double duration);
 
 }  // namespace rocking::records
