@@ -59,8 +59,7 @@ studies::Eq27Grid grid_from(const Args& a) {
     g.p_min = bounded(a, "--p-min", g.p_min, 0.01, 1000, "(0.01, 1000] rad/s");
     g.p_max = bounded(a, "--p-max", g.p_max, 0.01, 1000, "(0.01, 1000] rad/s");
     if (g.p_max < g.p_min) throw UsageError("--p-max: must not be below --p-min (" + g7(g.p_min) + ")");
-    if (a.values.count("--p-points")) g.p_points = integer("--p-points", a.values.at("--p-points"));
-    if (g.p_points < 1 || g.p_points > 1000) throw UsageError("--p-points: must be between 1 and 1000");
+    if (a.values.count("--p-points")) g.p_points = integer("--p-points", a.values.at("--p-points"), 1, 1000);
     if (g.p_points > 1 && g.p_max == g.p_min) throw UsageError("--p-points: more than 1 needs --p-max above --p-min");
     return g;
 }
@@ -72,8 +71,8 @@ studies::Eq27Options options_from(const Args& a) {
     o.ida.q_max = bounded(a, "--q-max", o.ida.q_max, o.ida.q_min, 1e4, "(1, 10000]");
     // As rocking fragility's: no bootstrap unless asked, and then from a stated seed.
     o.bootstrap.resamples = 0;
-    if (a.values.count("--bootstrap")) o.bootstrap.resamples = integer("--bootstrap", a.values.at("--bootstrap"));
-    if (o.bootstrap.resamples != 0 && (o.bootstrap.resamples < 2 || o.bootstrap.resamples > 100000))
+    if (a.values.count("--bootstrap")) o.bootstrap.resamples = integer("--bootstrap", a.values.at("--bootstrap"), 0, 100000);
+    if (o.bootstrap.resamples == 1)
         throw UsageError("--bootstrap: must be 0 or between 2 and 100000");
     if (a.values.count("--seed") && !a.values.count("--bootstrap")) throw UsageError("--seed goes with --bootstrap");
     if (o.bootstrap.resamples > 0 && !a.values.count("--seed"))

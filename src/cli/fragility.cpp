@@ -52,11 +52,9 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     if (a.values.count("--q-max")) o.ida.q_max = number("--q-max", a.values.at("--q-max"));
     // Beyond 1e4 the scaled record reaches thousands of g: no physical input.
     if (!(o.ida.q_max > o.ida.q_min && o.ida.q_max <= 1e4)) throw UsageError("--q-max: must be in (1, 10000]");
-    if (a.values.count("--points")) o.ida.points = integer("--points", a.values.at("--points"));
-    if (o.ida.points < 2 || o.ida.points > 10000) throw UsageError("--points: must be between 2 and 10000");
+    if (a.values.count("--points")) o.ida.points = integer("--points", a.values.at("--points"), 2, 10000);
     o.resamples = 0;
-    if (a.values.count("--bootstrap")) o.resamples = integer("--bootstrap", a.values.at("--bootstrap"));
-    if (o.resamples < 0 || o.resamples > 100000) throw UsageError("--bootstrap: must be between 0 and 100000");
+    if (a.values.count("--bootstrap")) o.resamples = integer("--bootstrap", a.values.at("--bootstrap"), 0, 100000);
     if (a.values.count("--seed") && !a.values.count("--bootstrap")) throw UsageError("--seed goes with --bootstrap");
     if (o.resamples > 0 && !a.values.count("--seed"))
         throw UsageError("--bootstrap needs --seed (the interval is reproducible only from a stated seed)");

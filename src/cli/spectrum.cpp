@@ -69,8 +69,7 @@ SpectrumOptions grid_from(const Args& a) {
     if (!(o.p_max >= 0.01 && o.p_max <= 1000)) throw UsageError("--p-max: must be in [0.01, 1000] rad/s");
     if (!(o.p_max > o.p_min))
         throw UsageError("--p-max: must be above --p-min (" + g7(o.p_min) + " rad/s)");
-    if (a.values.count("--points")) o.points = integer("--points", a.values.at("--points"));
-    if (o.points < 2 || o.points > 100000) throw UsageError("--points: must be between 2 and 100000");
+    if (a.values.count("--points")) o.points = integer("--points", a.values.at("--points"), 2, 100000);
     return o;
 }
 

@@ -11,6 +11,7 @@
 #include "cli/options.hpp"
 #include "harness/atomic_file.hpp"
 #include "harness/table.hpp"
+#include "numerics/number_text.hpp"
 #include "records/synthetic.hpp"
 
 namespace rocking::cli {
@@ -43,15 +44,11 @@ records::StochasticParameters stochastic_from(const Args& a) {
         key_values("--params", a.values.at("--params"), records::stochastic_parameter_names()));
 }
 
-// The header's values are %.17g text or words: numbers stay numbers in JSON.
+// The header's values are %.17g text or words: numbers stay numbers in JSON,
+// written as JSON writes them (".5" or "+1" would not be JSON).
 std::string json_value(const std::string& text) {
-    std::size_t used = 0;
-    try {
-        const double v = std::stod(text, &used);
-        if (used == text.size() && std::isfinite(v)) return text;
-    } catch (const std::exception&) {
-    }
-    return json_string(text);
+    double v;
+    return numerics::sample_number(text, v) ? json_number(v) : json_string(text);
 }
 
 // '#' lines naming the generator and every parameter, then t,a rows: the plain

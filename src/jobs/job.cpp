@@ -5,6 +5,7 @@
 #include <set>
 
 #include "dynamics/stepper.hpp"
+#include "numerics/number_text.hpp"
 
 namespace rocking::jobs {
 
@@ -67,22 +68,21 @@ namespace {
     throw std::invalid_argument(column + ": " + problem);
 }
 
+// The one number reader's rules and messages (numerics/number_text.hpp), under the column's name.
 double number(const std::string& column, const std::string& text) {
-    std::size_t used = 0;
-    double v = 0;
     try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        bad(column, "'" + text + "' is not a number");
+        return numerics::parameter_number(text);
+    } catch (const std::invalid_argument& e) {
+        bad(column, e.what());
     }
-    if (used != text.size() || !std::isfinite(v)) bad(column, "'" + text + "' is not a finite number");
-    return v;
 }
 
-int whole(const std::string& column, const std::string& text) {
-    const double v = number(column, text);
-    if (v != std::floor(v) || std::fabs(v) > 1e6) bad(column, "'" + text + "' is not a whole number");
-    return static_cast<int>(v);
+int whole(const std::string& column, const std::string& text, int lo, int hi) {
+    try {
+        return static_cast<int>(numerics::whole_number(text, lo, hi));
+    } catch (const std::invalid_argument& e) {
+        bad(column, e.what());
+    }
 }
 
 std::string g(double v) {
@@ -258,9 +258,7 @@ Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::
     if (job.kind == Kind::ida || job.kind == Kind::spectrum) {
         const std::string& points = c.cell(row, "points");
         const int most = job.kind == Kind::ida ? 10000 : 100000;
-        job.points = points.empty() ? (job.kind == Kind::ida ? 100 : 200) : whole("points", points);
-        if (job.points < 2 || job.points > most)
-            bad("points", "must be between 2 and " + std::to_string(most) + " (got " + points + ")");
+        job.points = points.empty() ? (job.kind == Kind::ida ? 100 : 200) : whole("points", points, 2, most);
     }
     if (job.kind == Kind::spectrum) {
         const std::string &lo = c.cell(row, "p_min"), &hi = c.cell(row, "p_max");
