@@ -82,4 +82,9 @@ check  "a spectrum row's alpha 0.72"     "manifest line 5: alpha: must be in (0,
 check  "an ida row's alpha 0.72"         "manifest line 6: alpha: must be in (0, 0.7) (got 0.72)" cat "$tmp/out.csv"
 check  "a cell '0.1 ' runs"              "7,simulate,rec.txt,g,0.01,0.1,2,,ok," cat "$tmp/out.csv"
 
+# ---- The searches' alpha range, one for every command.
+for cmd in "collapse $r --alpha 0.72" "spectrum $r --alpha 0.72" "fragility $r --alpha 0.72 --p 2" "eq27 $r --alpha 0.72"; do
+    # shellcheck disable=SC2086
+    check "${cmd%% *} alpha 0.72"        "must be in (0, 0.7) (got 0.72)" "$rocking" $cmd --unit g
+done
 exit $fail

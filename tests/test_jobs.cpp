@@ -333,3 +333,29 @@ TEST(Jobs, AResultRowHasTheHeadersColumnsAndQuotesWhatNeedsIt) {
     EXPECT_EQ(batch::split_csv_line(r)[2], "a, b.txt");
     EXPECT_EQ(batch::split_csv_line(r).back(), "line break, and \"quote\"");
 }
+
+// The searches' slenderness is one range, studies::kSearchAlphaMax: a batch
+// row of each search, and the library's spectrum and IDA (which took (0, 1)
+// where every command took (0, 0.7)), refuse alpha = 0.72 alike.
+TEST(Jobs, EverySearchTakesTheCommandsAlphaRange) {
+    const std::pair<std::string, std::string> rec{"record", "r.txt"}, alpha{"alpha", "0.72"};
+    EXPECT_EQ(refusal({rec, alpha, {"kind", "collapse"}}), "alpha: must be in (0, 0.7) (got 0.72)");
+    EXPECT_EQ(refusal({rec, alpha, {"kind", "spectrum"}}), "alpha: must be in (0, 0.7) (got 0.72)");
+    EXPECT_EQ(refusal({rec, alpha, {"kind", "ida"}, {"p", "2"}}), "alpha: must be in (0, 0.7) (got 0.72)");
+    EXPECT_EQ(refusal({rec, alpha, {"p", "2"}}), "accepted");  // simulate: the dynamics' own (0, pi/4)
+    const dynamics::PulseInput pulse(PulseTrain({{1.0, 1.0}}), 0.15, 1.0);
+    for (double a : {0.7, 0.72, 0.9}) {
+        try {
+            studies::rocking_spectrum(pulse, a, studies::SpectrumOptions{});
+            ADD_FAILURE() << "spectrum took alpha = " << a;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_STREQ(e.what(), "spectrum: alpha must be in (0, 0.7)");
+        }
+        try {
+            studies::incremental_dynamic_analysis(pulse, a, 2.0, studies::IdaOptions{});
+            ADD_FAILURE() << "ida took alpha = " << a;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_STREQ(e.what(), "ida: alpha must be in (0, 0.7)");
+        }
+    }
+}

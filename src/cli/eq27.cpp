@@ -17,6 +17,7 @@
 #include "cli/options.hpp"
 #include "harness/table.hpp"
 #include "studies/eq27_at_scale.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
 
@@ -54,7 +55,8 @@ studies::Eq27Grid grid_from(const Args& a) {
         g.alphas = number_list("--alpha", a.values.at("--alpha"));
         if (g.alphas.empty() || g.alphas.size() > 50) throw UsageError("--alpha: from 1 to 50 values");
         for (double v : g.alphas)
-            if (!(v > 0 && v < 0.7)) throw UsageError("--alpha: each must be in (0, 0.7) (got " + g7(v) + ")");
+            if (!studies::in_search_alpha_range(v))
+                throw UsageError("--alpha: each must be in " + std::string(studies::kSearchAlphaRange) + " (got " + g7(v) + ")");
     }
     g.p_min = bounded(a, "--p-min", g.p_min, 0.01, 1000, "(0.01, 1000] rad/s");
     g.p_max = bounded(a, "--p-max", g.p_max, 0.01, 1000, "(0.01, 1000] rad/s");

@@ -21,6 +21,7 @@
 #include "harness/table.hpp"
 #include "jobs/fragility_plan.hpp"
 #include "studies/ida.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
 
@@ -216,7 +217,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     c.args = parse(count, args.data(), first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
                                                "--dt", "--jobs", "--output", "--rows"});
     const Args& a = c.args;
-    const std::vector<double> alphas = list_in(a, "--alpha", 0, 0.7, "(0, 0.7)");
+    const std::vector<double> alphas = list_in(a, "--alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange);
     const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
     c.study = options_from(a);
     for (const char* flag : {"--output", "--rows"})

@@ -26,6 +26,7 @@
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
 #include "studies/spectrum.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
 
@@ -50,7 +51,8 @@ std::vector<double> alphas_from(const std::string& text) {
     std::string item;
     while (std::getline(in, item, ',')) {
         const double alpha = number("--alpha", item);
-        if (!(alpha > 0 && alpha < 0.7)) throw UsageError("--alpha: each must be in (0, 0.7) (got " + item + ")");
+        if (!studies::in_search_alpha_range(alpha))
+            throw UsageError("--alpha: each must be in " + std::string(studies::kSearchAlphaRange) + " (got " + item + ")");
         out.push_back(alpha);
     }
     if (out.empty() || text.back() == ',') throw UsageError("--alpha: a list of numbers, A or A,A,... (got '" + text + "')");

@@ -6,6 +6,7 @@
 
 #include "dynamics/stepper.hpp"
 #include "numerics/number_text.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::jobs {
 
@@ -243,10 +244,10 @@ Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::
     const std::string& alpha = c.cell(row, "alpha");
     if (alpha.empty()) bad("alpha", "empty: every job needs the block's slenderness");
     job.alpha = number("alpha", alpha);
-    // simulate: the dynamics' own range; the searches: the commands' (0, 0.7).
-    const double top = job.kind == Kind::simulate ? M_PI / 4 : 0.7;
-    if (!(job.alpha > 0 && job.alpha < top))
-        bad("alpha", std::string("must be in (0, ") + (job.kind == Kind::simulate ? "pi/4" : "0.7") + ") (got " + alpha + ")");
+    // simulate: the dynamics' own range; the searches: the commands' own.
+    const bool simulate = job.kind == Kind::simulate;
+    if (!(simulate ? job.alpha > 0 && job.alpha < M_PI / 4 : studies::in_search_alpha_range(job.alpha)))
+        bad("alpha", "must be in " + std::string(simulate ? "(0, pi/4)" : studies::kSearchAlphaRange) + " (got " + alpha + ")");
     if (job.kind == Kind::simulate || job.kind == Kind::ida) job.block = block_from(c, row, job.kind, job.alpha);
     job.scaling = scaling_from(c.cell(row, "scaling"));
     model_from(c, row, job);
