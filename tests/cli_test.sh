@@ -35,7 +35,7 @@ check "passing alpha is a json flag"      '"passes_alpha_before_t_fin": true' "$
 check "small x: alpha not passed"         '"passes_alpha_before_t_fin": false' "$rocking" q --case 2 --x 1e-8 --json
 check "bad x is named"               "--x: 'abc' is not a number" "$rocking" q --case 2 --x abc
 check "negative x is refused"        "--x: must be > 0"  "$rocking" q --case 2 --x -1
-check "bad case is named"            "--case: must be 1, 2, 3, 4 or 5" "$rocking" q --case 7 --x 1
+check "bad case is named"            "--case: must be a whole number from 1 to 5 (got 7)" "$rocking" q --case 7 --x 1
 check "impossible train explained"   "cannot bring theta(t_fin) to alpha" "$rocking" q --train 1:1,-5:1 --x 1
 check "a pulse too short is refused"  "below 1e-150" "$rocking" q --train 1:1e-160 --x 1
 check_not "a pulse too short: no inf" "q = inf" "$rocking" q --train 1:1e-160 --x 1

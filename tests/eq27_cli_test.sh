@@ -35,7 +35,7 @@ check "alpha range"       "--alpha: each must be in (0, 0.7) (got 0.8)"  "$rocki
 check "p-min range"       "--p-min: must be in (0.01, 1000] rad/s"       "$rocking" eq27 x --p-min 0
 check "p-max below p-min" "--p-max: must not be below --p-min (2)"       "$rocking" eq27 x --p-min 2 --p-max 1
 status "p-max below p-min" 2                                             "$rocking" eq27 x --p-min 2 --p-max 1
-check "p-points range"    "--p-points: must be between 1 and 1000"       "$rocking" eq27 x --p-points 0
+check "p-points range"    "--p-points: must be a whole number from 1 to 1000 (got 0)" "$rocking" eq27 x --p-points 0
 check "q-max range"       "--q-max: must be in (1, 10000]"               "$rocking" eq27 x --q-max 1
 check "unknown option"    "unknown option '--p'"                         "$rocking" eq27 x --p 1
 check "seed alone"        "--seed goes with --bootstrap"                 "$rocking" eq27 x --seed 3

@@ -137,7 +137,22 @@ TEST(Jobs, EachBadCellIsRefusedNamingItsColumn) {
     EXPECT_EQ(refusal({rec, {"alpha", "-0.1"}, p, {"kind", "collapse"}}).substr(0, 7), "p: does");
     EXPECT_EQ(refusal({rec, {"alpha", "-0.1"}, {"kind", "collapse"}}), "alpha: must be in (0, 0.7) (got -0.1)");
     EXPECT_EQ(refusal({rec, {"alpha", "abc"}, p}), "alpha: 'abc' is not a number");
-    EXPECT_EQ(refusal({rec, {"alpha", "0.1x"}, p}), "alpha: '0.1x' is not a finite number");
+    EXPECT_EQ(refusal({rec, {"alpha", "0.1x"}, p}), "alpha: '0.1x' is not a number");
+    // The command line's number reader and messages (numerics/number_text.hpp), in every numeric column.
+    EXPECT_EQ(refusal({rec, {"alpha", "1e400"}, p}),
+              "alpha: '1e400' is too large for a double (magnitude beyond 1.7976931348623157e+308)");
+    EXPECT_EQ(refusal({rec, a, {"p", "-1e400"}}),
+              "p: '-1e400' is too large for a double (magnitude beyond 1.7976931348623157e+308)");
+    EXPECT_EQ(refusal({rec, {"alpha", "1e-320"}, p}), "alpha: '1e-320' is below the smallest normal double, 2.2250738585072014e-308");
+    EXPECT_EQ(refusal({rec, a, p, {"rtol", "nan"}}), "rtol: 'nan' is not a finite number");
+    EXPECT_EQ(refusal({rec, a, p, {"scaling", "q=0x10"}}), "scaling: '0x10' is not a number (hexadecimal is not read)");
+    EXPECT_EQ(refusal({rec, a, {"kind", "spectrum"}, {"p_max", "1,5"}}), "p_max: '1,5' is not a number (decimal commas are not read)");
+    EXPECT_EQ(refusal({rec, a, {"kind", "ida"}, p, {"points", "1e400"}}),
+              "points: must be a whole number from 2 to 10000 (got '1e400')");
+    EXPECT_EQ(refusal({rec, a, {"kind", "ida"}, p, {"points", "2.5"}}), "points: must be a whole number from 2 to 10000 (got 2.5)");
+    // Blanks around a cell's number, at either end alike.
+    EXPECT_EQ(refusal({rec, {"alpha", "0.1 "}, p}), "accepted");
+    EXPECT_EQ(refusal({rec, {"alpha", " 0.1"}, p}), "accepted");
     EXPECT_EQ(refusal({rec, a}), "p: give exactly one of p (rad/s), height and half_height (m) for a simulate job");
     EXPECT_EQ(refusal({rec, a, p, {"height", "2"}}).substr(0, 24), "p, height, half_height: ");
     EXPECT_EQ(refusal({rec, a, p, {"solver", "rk45"}}),
@@ -158,7 +173,7 @@ TEST(Jobs, EachBadCellIsRefusedNamingItsColumn) {
     EXPECT_EQ(refusal({rec, a, p, {"q_max", "10"}}), "q_max: does not apply to a simulate job (not one of its columns)");
     EXPECT_EQ(refusal({rec, a, {"kind", "ida"}, p, {"q_max", "1"}}), "q_max: must be in (1, 10000] (got 1)");
     EXPECT_EQ(refusal({rec, a, {"kind", "ida"}, {"p", "0.001"}}).substr(0, 42), "p: the block's p must be in (0.01, 1000) r");
-    EXPECT_EQ(refusal({rec, a, {"kind", "spectrum"}, {"points", "1"}}), "points: must be between 2 and 100000 (got 1)");
+    EXPECT_EQ(refusal({rec, a, {"kind", "spectrum"}, {"points", "1"}}), "points: must be a whole number from 2 to 100000 (got 1)");
     EXPECT_EQ(refusal({rec, a, {"kind", "spectrum"}, {"p_min", "5"}, {"p_max", "4"}}), "p_max: must be above p_min (5 rad/s)");
     EXPECT_EQ(refusal({{"record", ""}, a, p}), "record: empty: every job needs a record file");
     EXPECT_EQ(refusal({rec, a, p, {"unit", "gal"}}), "unit: 'gal' is not a unit it knows (g, m/s2, cm/s2)");
@@ -317,4 +332,30 @@ TEST(Jobs, AResultRowHasTheHeadersColumnsAndQuotesWhatNeedsIt) {
     EXPECT_EQ(r.find('\n'), std::string::npos);
     EXPECT_EQ(batch::split_csv_line(r)[2], "a, b.txt");
     EXPECT_EQ(batch::split_csv_line(r).back(), "line break, and \"quote\"");
+}
+
+// The searches' slenderness is one range, studies::kSearchAlphaMax: a batch
+// row of each search, and the library's spectrum and IDA (which took (0, 1)
+// where every command took (0, 0.7)), refuse alpha = 0.72 alike.
+TEST(Jobs, EverySearchTakesTheCommandsAlphaRange) {
+    const std::pair<std::string, std::string> rec{"record", "r.txt"}, alpha{"alpha", "0.72"};
+    EXPECT_EQ(refusal({rec, alpha, {"kind", "collapse"}}), "alpha: must be in (0, 0.7) (got 0.72)");
+    EXPECT_EQ(refusal({rec, alpha, {"kind", "spectrum"}}), "alpha: must be in (0, 0.7) (got 0.72)");
+    EXPECT_EQ(refusal({rec, alpha, {"kind", "ida"}, {"p", "2"}}), "alpha: must be in (0, 0.7) (got 0.72)");
+    EXPECT_EQ(refusal({rec, alpha, {"p", "2"}}), "accepted");  // simulate: the dynamics' own (0, pi/4)
+    const dynamics::PulseInput pulse(PulseTrain({{1.0, 1.0}}), 0.15, 1.0);
+    for (double a : {0.7, 0.72, 0.9}) {
+        try {
+            studies::rocking_spectrum(pulse, a, studies::SpectrumOptions{});
+            ADD_FAILURE() << "spectrum took alpha = " << a;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_STREQ(e.what(), "spectrum: alpha must be in (0, 0.7)");
+        }
+        try {
+            studies::incremental_dynamic_analysis(pulse, a, 2.0, studies::IdaOptions{});
+            ADD_FAILURE() << "ida took alpha = " << a;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_STREQ(e.what(), "ida: alpha must be in (0, 0.7)");
+        }
+    }
 }

@@ -136,7 +136,7 @@ TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
         {"peer_count.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 3, DT= .01 SEC\n0.1 0.2\n", ":4: NPTS says 3 samples, the file has 2"},
         {"peer_sample.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 x\n", ":5: sample 'x' is not a number"},
         {"peer_range.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 1e400\n",
-         ":5: sample '1e400' is out of range for a double"},
+         ":5: sample '1e400' is too large for a double (magnitude beyond 1.7976931348623157e+308)"},
         // A double in g, out of range once in m/s^2 (it was read as inf).
         {"peer_overflow.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 -1e308\n",
          ":5: sample '-1e308' g is out of range for a double in m/s^2"},
@@ -167,10 +167,46 @@ TEST(Readers, BrokenFilesAreRefusedWithFileLineAndProblem) {
     const std::string bad = write_file("bad.txt", "0.1\nzz\n");
     EXPECT_NE(error_of([&] { read_plain(bad, "g", 0.01); }).find(":2: 'zz' is not a number"), std::string::npos);
     const std::string huge = write_file("huge.txt", "0.1\n-1e400\n");
-    EXPECT_NE(error_of([&] { read_plain(huge, "g", 0.01); }).find(":2: '-1e400' is out of range"), std::string::npos);
+    EXPECT_NE(error_of([&] { read_plain(huge, "g", 0.01); }).find(":2: '-1e400' is too large for a double (magnitude beyond"),
+              std::string::npos);
     const std::string overflow = write_file("overflow.txt", "0 0.1\n0.01 1e308\n");
     EXPECT_NE(error_of([&] { read_plain(overflow, "g", 0); }).find(":2: '1e308' g is out of range for a double in m/s^2"),
               std::string::npos);
+}
+
+// A sample below the smallest normal double (1.9e-308, as numpy or record
+// synth may write one) was refused as out of range; it is read as itself in
+// every reader, and one beyond the largest double is refused as too large,
+// naming the file and line (numerics/number_text.hpp).
+TEST(Readers, ASubnormalSampleIsItselfAndAnOverflowingOneTooLarge) {
+    const Record esm_r = read_esm(write_file("tiny.asc", esm("3", "2.0", "cm/s^2", "2.0\n1.9e-308\n-1e-320\n")));
+    ASSERT_EQ(esm_r.accel.size(), 3u);
+    EXPECT_EQ(esm_r.accel[1], 1.9e-308 * 0.01);
+    EXPECT_EQ(esm_r.accel[2], -1e-320 * 0.01);
+    const Record peer_r =
+        read_peer(write_file("tiny.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 3, DT= .01 SEC\n0.1 1.9e-308 1e-400\n"));
+    ASSERT_EQ(peer_r.accel.size(), 3u);
+    EXPECT_EQ(peer_r.accel[1], 1.9e-308 * 9.81);
+    EXPECT_EQ(peer_r.accel[2], 0.0);  // nearer 0 than any double: rounds to it
+    const Record one = read_plain(write_file("tiny1.txt", "0.1\n1.9e-308\n 0.2 \n"), "m/s2", 0.01);
+    ASSERT_EQ(one.accel.size(), 3u);
+    EXPECT_EQ(one.accel[1], 1.9e-308);
+    EXPECT_EQ(one.accel[2], 0.2);
+    const Record two = read_plain(write_file("tiny2.txt", "0,1e-310\n0.01,1.9e-308\n0.02,0.5\n"), "m/s2", 0);
+    EXPECT_EQ(two.accel[0], 1e-310);
+    const std::string too_large = "is too large for a double (magnitude beyond 1.7976931348623157e+308)";
+    struct Case { std::string name, text, want; };
+    for (const Case& c : std::vector<Case>{
+             {"big.asc", esm("3", "2.0", "cm/s^2", "2.0\n1e400\n0.5\n"), ":8: sample '1e400' " + too_large},
+             {"big.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= .01 SEC\n0.1 -1e400\n", ":5: sample '-1e400' " + too_large},
+             {"big.txt", "0 0.1\n0.01 0.2\n0.02 1e400\n", ":3: '1e400' " + too_large}}) {
+        const std::string path = write_file(c.name, c.text);
+        const std::string message = error_of([&] { c.name == "big.txt" ? read_plain(path, "g", 0) : read_any(path); });
+        EXPECT_NE(message.find(path + c.want), std::string::npos) << c.name << ": " << message;
+    }
+    // A header's value is a parameter of the record, held to the options' rule.
+    const std::string tiny_dt = write_file("tiny_dt.at2", "H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 2, DT= 1e-320 SEC\n0.1 0.2\n");
+    EXPECT_NE(error_of([&] { read_peer(tiny_dt); }).find(":4: DT '1E-320' must be > 0"), std::string::npos);
 }
 
 // A one-column file with decimal commas ("0,0123") was read as two columns,

@@ -42,10 +42,11 @@ struct Flag {
     py::object value;
 };
 
-// A finite double, normal or 0 (as the command line's numbers: std::stod refuses
-// a subnormal): Python's and numpy's real numbers and 0-d arrays, anything with
-// __float__ or __index__; not bool, str, bytes, complex or an array of more
-// than 0 dimensions (TypeError); nan, inf and subnormals are a ValueError,
+// A finite double, normal or 0 (the command line's rule for a parameter,
+// numerics/number_text.hpp, in its words): Python's and numpy's real numbers
+// and 0-d arrays, anything with __float__ or __index__; not bool, str, bytes,
+// complex or an array of more than 0 dimensions (TypeError); nan, inf and
+// subnormals are a ValueError,
 // "x: inf is not a finite number" as the command line's "--x: 'inf' is not a
 // finite number".
 double number(const Real& a, const std::string& name);

@@ -10,6 +10,7 @@
 #include "qfactor/superposition.hpp"
 #include "records/collapse.hpp"
 #include "records/synthetic.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::python {
 
@@ -266,7 +267,8 @@ records::CollapseOptions collapse_options(const Real& alpha_given, const Text& m
     const std::optional<std::string> solver = string_argument(solver_given, "solver"),
                                      criterion = string_argument(criterion_given, "criterion");
     const std::optional<double> rtol = number(rtol_given, "rtol"), atol = number(atol_given, "atol");
-    if (!(alpha > 0 && alpha < 0.7)) refuse("alpha: must be in (0, 0.7) (got " + significant(alpha, 17) + ")");
+    if (!studies::in_search_alpha_range(alpha))
+        refuse("alpha: must be in " + std::string(studies::kSearchAlphaRange) + " (got " + significant(alpha, 17) + ")");
     records::CollapseOptions o;
     if (model == "full") o.equation = dynamics::Equation::full, o.solver.kind = dynamics::SolverKind::dopri5;
     else if (model != "linearised") refuse("model: linearised or full (got '" + model + "')");

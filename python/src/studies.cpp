@@ -12,6 +12,7 @@
 #include "studies/eq27_at_scale.hpp"
 #include "studies/ida.hpp"
 #include "studies/spectrum.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::python {
 
@@ -66,7 +67,7 @@ py::object boundary(const studies::Interval& in, bool lower) {
 py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min, const Real& p_max, const Whole& points,
                   const std::optional<Whole>& jobs, const py::kwargs& extra) {
     no_other_keywords(extra, "spectrum", "spectrum");
-    const std::vector<double> alphas = values_in(alpha, "alpha", 0, 0.7, "(0, 0.7)", 20);
+    const std::vector<double> alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 20);
     studies::SpectrumOptions o;
     o.p_min = number(p_min, "p_min"), o.p_max = number(p_max, "p_max");
     const long long points_given = whole(points, "points");
@@ -215,7 +216,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
                    const Whole& points, const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed,
                    const std::optional<Whole>& jobs, const py::kwargs& extra) {
     no_other_keywords(extra, "fragility", "fragility");
-    const std::vector<double> alphas = values_in(alpha, "alpha", 0, 0.7, "(0, 0.7)", 50);
+    const std::vector<double> alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 50);
     const std::vector<double> ps = values_in(p, "p", 0.01, 1000, "(0.01, 1000) rad/s", 50);
     studies::FragilityStudyOptions o;
     o.ida.q_max = number(q_max, "q_max");
@@ -324,7 +325,7 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const Re
     const long long p_points_long = whole(p_points_given, "p_points");
     const double q_max = number(q_max_given, "q_max");
     studies::Eq27Options o;
-    if (!alpha.is_none()) o.grid.alphas = values_in(alpha, "alpha", 0, 0.7, "(0, 0.7)", 50);
+    if (!alpha.is_none()) o.grid.alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 50);
     auto bounded = [](double v, const std::string& what, double lo, double hi, const std::string& range) {
         if (!(v > lo && v <= hi)) refuse(what + ": must be in " + range + " (got " + g7(v) + ")");
         return v;

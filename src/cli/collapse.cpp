@@ -11,6 +11,7 @@
 #include "cli/options.hpp"
 #include "records/collapse.hpp"
 #include "harness/table.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
 
@@ -21,7 +22,8 @@ int cmd_collapse(int argc, char** argv) {
                          {"--alpha", "--model", "--solver", "--criterion", "--restitution", "--rtol", "--atol", "--unit", "--dt"});
     if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
     const double alpha = number("--alpha", a.values.at("--alpha"));
-    if (!(alpha > 0 && alpha < 0.7)) throw UsageError("--alpha: must be in (0, 0.7)");
+    if (!studies::in_search_alpha_range(alpha))
+        throw UsageError("--alpha: must be in " + std::string(studies::kSearchAlphaRange) + " (got " + a.values.at("--alpha") + ")");
     records::CollapseOptions o;
     if (a.values.count("--model")) {
         const std::string m = a.values.at("--model");

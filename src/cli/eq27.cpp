@@ -17,6 +17,7 @@
 #include "cli/options.hpp"
 #include "harness/table.hpp"
 #include "studies/eq27_at_scale.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
 
@@ -54,13 +55,13 @@ studies::Eq27Grid grid_from(const Args& a) {
         g.alphas = number_list("--alpha", a.values.at("--alpha"));
         if (g.alphas.empty() || g.alphas.size() > 50) throw UsageError("--alpha: from 1 to 50 values");
         for (double v : g.alphas)
-            if (!(v > 0 && v < 0.7)) throw UsageError("--alpha: each must be in (0, 0.7) (got " + g7(v) + ")");
+            if (!studies::in_search_alpha_range(v))
+                throw UsageError("--alpha: each must be in " + std::string(studies::kSearchAlphaRange) + " (got " + g7(v) + ")");
     }
     g.p_min = bounded(a, "--p-min", g.p_min, 0.01, 1000, "(0.01, 1000] rad/s");
     g.p_max = bounded(a, "--p-max", g.p_max, 0.01, 1000, "(0.01, 1000] rad/s");
     if (g.p_max < g.p_min) throw UsageError("--p-max: must not be below --p-min (" + g7(g.p_min) + ")");
-    if (a.values.count("--p-points")) g.p_points = integer("--p-points", a.values.at("--p-points"));
-    if (g.p_points < 1 || g.p_points > 1000) throw UsageError("--p-points: must be between 1 and 1000");
+    if (a.values.count("--p-points")) g.p_points = integer("--p-points", a.values.at("--p-points"), 1, 1000);
     if (g.p_points > 1 && g.p_max == g.p_min) throw UsageError("--p-points: more than 1 needs --p-max above --p-min");
     return g;
 }

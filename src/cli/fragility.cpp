@@ -22,6 +22,7 @@
 #include "harness/table.hpp"
 #include "jobs/fragility_plan.hpp"
 #include "studies/ida.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
 
@@ -53,8 +54,7 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     if (a.values.count("--q-max")) o.ida.q_max = number("--q-max", a.values.at("--q-max"));
     // Beyond 1e4 the scaled record reaches thousands of g: no physical input.
     if (!(o.ida.q_max > o.ida.q_min && o.ida.q_max <= 1e4)) throw UsageError("--q-max: must be in (1, 10000]");
-    if (a.values.count("--points")) o.ida.points = integer("--points", a.values.at("--points"));
-    if (o.ida.points < 2 || o.ida.points > 10000) throw UsageError("--points: must be between 2 and 10000");
+    if (a.values.count("--points")) o.ida.points = integer("--points", a.values.at("--points"), 2, 10000);
     const Bootstrap b = bootstrap_options(a);
     o.resamples = b.resamples;
     o.seed = b.seed;
@@ -215,7 +215,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     c.args = parse(count, args.data(), first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
                                                "--dt", "--jobs", "--output", "--rows"});
     const Args& a = c.args;
-    const std::vector<double> alphas = list_in(a, "--alpha", 0, 0.7, "(0, 0.7)");
+    const std::vector<double> alphas = list_in(a, "--alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange);
     const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
     c.study = options_from(a);
     for (const char* flag : {"--output", "--rows"})

@@ -12,19 +12,17 @@
 #include "cli/options.hpp"
 #include "harness/output_paths.hpp"
 #include "harness/table.hpp"
+#include "numerics/number_text.hpp"
 
 namespace rocking::cli {
 
+// The one number reader's rules and messages (numerics/number_text.hpp), under the option's name.
 double number(const std::string& flag, const std::string& text) {
-    std::size_t used = 0;
-    double v;
     try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        throw UsageError(flag + ": '" + text + "' is not a number");
+        return numerics::parameter_number(text);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(flag + ": " + e.what());
     }
-    if (used != text.size() || !std::isfinite(v)) throw UsageError(flag + ": '" + text + "' is not a finite number");
-    return v;
 }
 
 // --restitution: "housner" (1 - 1.5 sin^2 alpha) or a factor in [0, 1];
@@ -70,10 +68,12 @@ void tolerance_options(const std::map<std::string, std::string>& values, double 
     solver.atol_alpha = in_alpha;
 }
 
-int integer(const std::string& flag, const std::string& text) {
-    const double v = number(flag, text);
-    if (v != std::floor(v) || std::fabs(v) > 1e6) throw UsageError(flag + ": '" + text + "' is not a whole number");
-    return static_cast<int>(v);
+int integer(const std::string& flag, const std::string& text, int lo, int hi) {
+    try {
+        return static_cast<int>(numerics::whole_number(text, lo, hi));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(flag + ": " + e.what());
+    }
 }
 
 namespace {
@@ -122,10 +122,16 @@ std::uint64_t seed_option(const std::string& flag, const std::string& text) {
 
 Bootstrap bootstrap_options(const Args& a) {
     Bootstrap b;
-    if (a.values.count("--bootstrap")) b.resamples = integer("--bootstrap", a.values.at("--bootstrap"));
-    if (b.resamples != 0 && (b.resamples < 2 || b.resamples > 100000))
-        throw UsageError("--bootstrap: must be 0 (none) or from 2 to 100000 resamples (got " + a.values.at("--bootstrap") +
-                         ")");
+    if (a.values.count("--bootstrap")) {
+        const std::string& text = a.values.at("--bootstrap");
+        try {
+            b.resamples = static_cast<int>(numerics::whole_number(text, 0, 100000));
+        } catch (const std::invalid_argument&) {
+            b.resamples = -1;
+        }
+        if (b.resamples < 0 || b.resamples == 1)
+            throw UsageError("--bootstrap: must be 0 (none) or from 2 to 100000 resamples (got " + text + ")");
+    }
     if (a.values.count("--seed") && !a.values.count("--bootstrap")) throw UsageError("--seed goes with --bootstrap");
     if (b.resamples > 0 && !a.values.count("--seed"))
         throw UsageError("--bootstrap needs --seed (the interval is reproducible only from a stated seed)");
@@ -235,10 +241,8 @@ PulseTrain train_from(const Args& a, std::string& equation) {
             throw UsageError(std::string("--train: ") + e.what());
         }
     }
-    const int which = integer("--case", a.values.at("--case"));
-    if (which < 1 || which > 5) throw UsageError("--case: must be 1, 2, 3, 4 or 5 (got " + a.values.at("--case") + ")");
-    const int n = a.values.count("--pulses") ? integer("--pulses", a.values.at("--pulses")) : 2;
-    if (n < 1 || n > 1000) throw UsageError("--pulses: must be between 1 and 1000");
+    const int which = integer("--case", a.values.at("--case"), 1, 5);
+    const int n = a.values.count("--pulses") ? integer("--pulses", a.values.at("--pulses"), 1, 1000) : 2;
     static const char* eq[] = {"", "eq. 12", "eq. 15", "eq. 19", "eq. 22", "eq. 24"};
     equation = n == 2 ? eq[which] : (n == 6 && which == 2) ? "eq. 27" : (n == 6 && which == 4) ? "eq. 28 (corrected)"
                                                                                              : "superposition (S2)";

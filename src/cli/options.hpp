@@ -28,13 +28,17 @@ struct Args {
     bool json = false;
 };
 
+// A parameter's number by numerics::parameter_number's rules (blanks around
+// it ignored; finite, normal or 0), its problem a UsageError naming the flag.
 double number(const std::string& flag, const std::string& text);
 double restitution_option(const std::string& text);
 std::string smallest_tolerance();
 double rtol_option(const std::string& text);
 void tolerance_options(const std::map<std::string, std::string>& values, double alpha,
                        dynamics::SolverOptions& solver);
-int integer(const std::string& flag, const std::string& text);
+// A whole number in [lo, hi]; anything else is "FLAG: must be a whole number
+// from lo to hi (got TEXT)".
+int integer(const std::string& flag, const std::string& text, int lo, int hi);
 // "1,2.5,-3": every comma-separated piece a finite number.
 std::vector<double> number_list(const std::string& flag, const std::string& text);
 // "key=value,key=value": each key among `keys`, at most once, each value a finite number.

@@ -24,8 +24,7 @@ int cmd_response(int argc, char** argv) {
     const bool at_collapse = !a.values.count("--q");
     const double q = at_collapse ? q_factor(train, x).q : number("--q", a.values.at("--q"));
     if (!(q > 0)) throw UsageError("--q: must be > 0");
-    const int steps = a.values.count("--steps") ? integer("--steps", a.values.at("--steps")) : 20;
-    if (steps < 1 || steps > 1000000) throw UsageError("--steps: must be between 1 and 1000000");
+    const int steps = a.values.count("--steps") ? integer("--steps", a.values.at("--steps"), 1, 1000000) : 20;
     const Excursion e = at_collapse ? collapse_excursion(train, x) : excursion(train, x, q);
     auto state = [&](double tau) { return at_collapse ? collapse_response(train, x, tau) : response(train, x, q, tau); };
     // A q off the collapse q makes theta grow like e^{x t/to}: past the double

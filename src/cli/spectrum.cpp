@@ -26,6 +26,7 @@
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
 #include "studies/spectrum.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
 
@@ -50,7 +51,8 @@ std::vector<double> alphas_from(const std::string& text) {
     std::string item;
     while (std::getline(in, item, ',')) {
         const double alpha = number("--alpha", item);
-        if (!(alpha > 0 && alpha < 0.7)) throw UsageError("--alpha: each must be in (0, 0.7) (got " + item + ")");
+        if (!studies::in_search_alpha_range(alpha))
+            throw UsageError("--alpha: each must be in " + std::string(studies::kSearchAlphaRange) + " (got " + item + ")");
         out.push_back(alpha);
     }
     if (out.empty() || text.back() == ',') throw UsageError("--alpha: a list of numbers, A or A,A,... (got '" + text + "')");
@@ -69,8 +71,7 @@ SpectrumOptions grid_from(const Args& a) {
     if (!(o.p_max >= 0.01 && o.p_max <= 1000)) throw UsageError("--p-max: must be in [0.01, 1000] rad/s");
     if (!(o.p_max > o.p_min))
         throw UsageError("--p-max: must be above --p-min (" + g7(o.p_min) + " rad/s)");
-    if (a.values.count("--points")) o.points = integer("--points", a.values.at("--points"));
-    if (o.points < 2 || o.points > 100000) throw UsageError("--points: must be between 2 and 100000");
+    if (a.values.count("--points")) o.points = integer("--points", a.values.at("--points"), 2, 100000);
     return o;
 }
 

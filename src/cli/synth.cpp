@@ -13,6 +13,7 @@
 #include "cli/options.hpp"
 #include "harness/atomic_file.hpp"
 #include "harness/table.hpp"
+#include "numerics/number_text.hpp"
 #include "records/synthetic.hpp"
 
 namespace rocking::cli {
@@ -53,15 +54,11 @@ std::string sampling_option(const records::SamplingError& e, bool pulse, const s
     return given ? "--params" : "--dt";
 }
 
-// The header's values are %.17g text or words: numbers stay numbers in JSON.
+// The header's values are %.17g text or words: numbers stay numbers in JSON,
+// written as JSON writes them (".5" or "+1" would not be JSON).
 std::string json_value(const std::string& text) {
-    std::size_t used = 0;
-    try {
-        const double v = std::stod(text, &used);
-        if (used == text.size() && std::isfinite(v)) return text;
-    } catch (const std::exception&) {
-    }
-    return json_string(text);
+    double v;
+    return numerics::sample_number(text, v) ? json_number(v) : json_string(text);
 }
 
 // '#' lines naming the generator and every parameter, then t,a rows: the plain

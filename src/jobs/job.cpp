@@ -5,6 +5,8 @@
 #include <set>
 
 #include "dynamics/stepper.hpp"
+#include "numerics/number_text.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::jobs {
 
@@ -67,22 +69,21 @@ namespace {
     throw std::invalid_argument(column + ": " + problem);
 }
 
+// The one number reader's rules and messages (numerics/number_text.hpp), under the column's name.
 double number(const std::string& column, const std::string& text) {
-    std::size_t used = 0;
-    double v = 0;
     try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        bad(column, "'" + text + "' is not a number");
+        return numerics::parameter_number(text);
+    } catch (const std::invalid_argument& e) {
+        bad(column, e.what());
     }
-    if (used != text.size() || !std::isfinite(v)) bad(column, "'" + text + "' is not a finite number");
-    return v;
 }
 
-int whole(const std::string& column, const std::string& text) {
-    const double v = number(column, text);
-    if (v != std::floor(v) || std::fabs(v) > 1e6) bad(column, "'" + text + "' is not a whole number");
-    return static_cast<int>(v);
+int whole(const std::string& column, const std::string& text, int lo, int hi) {
+    try {
+        return static_cast<int>(numerics::whole_number(text, lo, hi));
+    } catch (const std::invalid_argument& e) {
+        bad(column, e.what());
+    }
 }
 
 std::string g(double v) {
@@ -243,10 +244,10 @@ Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::
     const std::string& alpha = c.cell(row, "alpha");
     if (alpha.empty()) bad("alpha", "empty: every job needs the block's slenderness");
     job.alpha = number("alpha", alpha);
-    // simulate: the dynamics' own range; the searches: the commands' (0, 0.7).
-    const double top = job.kind == Kind::simulate ? M_PI / 4 : 0.7;
-    if (!(job.alpha > 0 && job.alpha < top))
-        bad("alpha", std::string("must be in (0, ") + (job.kind == Kind::simulate ? "pi/4" : "0.7") + ") (got " + alpha + ")");
+    // simulate: the dynamics' own range; the searches: the commands' own.
+    const bool simulate = job.kind == Kind::simulate;
+    if (!(simulate ? job.alpha > 0 && job.alpha < M_PI / 4 : studies::in_search_alpha_range(job.alpha)))
+        bad("alpha", "must be in " + std::string(simulate ? "(0, pi/4)" : studies::kSearchAlphaRange) + " (got " + alpha + ")");
     if (job.kind == Kind::simulate || job.kind == Kind::ida) job.block = block_from(c, row, job.kind, job.alpha);
     job.scaling = scaling_from(c.cell(row, "scaling"));
     model_from(c, row, job);
@@ -258,9 +259,7 @@ Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::
     if (job.kind == Kind::ida || job.kind == Kind::spectrum) {
         const std::string& points = c.cell(row, "points");
         const int most = job.kind == Kind::ida ? 10000 : 100000;
-        job.points = points.empty() ? (job.kind == Kind::ida ? 100 : 200) : whole("points", points);
-        if (job.points < 2 || job.points > most)
-            bad("points", "must be between 2 and " + std::to_string(most) + " (got " + points + ")");
+        job.points = points.empty() ? (job.kind == Kind::ida ? 100 : 200) : whole("points", points, 2, most);
     }
     if (job.kind == Kind::spectrum) {
         const std::string &lo = c.cell(row, "p_min"), &hi = c.cell(row, "p_max");

@@ -1,7 +1,10 @@
 #include "jobs/row_cells.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
+
+#include "numerics/number_text.hpp"
 
 namespace rocking::jobs {
 
@@ -12,9 +15,12 @@ std::string one_line(std::string text) {
 }
 
 double number_of(const std::string& cell, const std::string& where) {
-    char* end = nullptr;
-    const double v = std::strtod(cell.c_str(), &end);
-    if (cell.empty() || *end != '\0') throw std::runtime_error("not a number in " + where + ": '" + cell + "'");
+    // format_number's words for the doubles that are not numbers.
+    if (cell == "nan") return NAN;
+    if (cell == "inf" || cell == "-inf") return cell == "inf" ? HUGE_VAL : -HUGE_VAL;
+    double v;
+    if (!numerics::sample_number(cell, v))
+        throw std::runtime_error(where + ": " + numerics::number_problem(cell, numerics::read_number(cell).problem));
     return v;
 }
 

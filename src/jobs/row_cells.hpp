@@ -14,8 +14,9 @@ namespace rocking::jobs {
 // One line a row: a message's newlines would split it.
 std::string one_line(std::string text);
 
-// A number written with harness::format_number ("nan" included) back to the
-// same double.
+// A number written with harness::format_number ("nan", "inf" and "-inf"
+// included) back to the same double, by the samples' rule of
+// numerics/number_text.hpp (a subnormal is itself).
 double number_of(const std::string& cell, const std::string& where);
 long whole_of(const std::string& cell, const std::string& where);
 

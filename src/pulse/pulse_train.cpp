@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "numerics/number_text.hpp"
+
 namespace rocking {
 
 PulseTrain::PulseTrain(std::vector<Pulse> pulses, std::string name)
@@ -90,19 +92,16 @@ PulseTrain parse_train(const std::string& text) {
         if (colon == std::string::npos)
             throw std::invalid_argument("train item " + std::to_string(index) + " '" + item +
                                         "': expected amplitude:duration");
-        Pulse p{};
-        try {
-            std::size_t used = 0;
-            const std::string a = item.substr(0, colon), d = item.substr(colon + 1);
-            p.amplitude = std::stod(a, &used);
-            if (used != a.size()) throw std::invalid_argument(a);
-            p.duration = std::stod(d, &used);
-            if (used != d.size()) throw std::invalid_argument(d);
-        } catch (const std::exception&) {
-            throw std::invalid_argument("train item " + std::to_string(index) + " '" + item +
-                                        "': amplitude and duration must be numbers");
-        }
-        pulses.push_back(p);
+        const auto part = [&](const std::string& text, const char* what) {
+            try {
+                return numerics::parameter_number(text);
+            } catch (const std::invalid_argument& e) {
+                throw std::invalid_argument("train item " + std::to_string(index) + " '" + item + "': " + what + " " +
+                                            e.what());
+            }
+        };
+        const double amplitude = part(item.substr(0, colon), "amplitude");
+        pulses.push_back({amplitude, part(item.substr(colon + 1), "duration")});
     }
     return PulseTrain(pulses, text);
 }

@@ -15,6 +15,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "numerics/number_text.hpp"
+
 namespace rocking::records {
 
 double Record::pga() const {
@@ -36,18 +38,18 @@ std::string trim(const std::string& s) {
     return a == std::string::npos ? "" : s.substr(a, b - a + 1);
 }
 
-// A whole token as a finite double, or false.
-bool parse_number(const std::string& token, double& value) {
-    if (token.empty()) return false;
-    char* end = nullptr;
-    errno = 0;
-    value = std::strtod(token.c_str(), &end);
-    return end == token.c_str() + token.size() && errno != ERANGE && std::isfinite(value);
+// A whole token as a sample, or false: numerics' rule for samples (a
+// subnormal reads as itself, as numpy and record synth write it).
+bool parse_number(const std::string& token, double& value) { return numerics::sample_number(token, value); }
+
+// A header's value (a step, a count, a peak): a parameter of the record, held
+// to the options' rule (no subnormal).
+bool header_number(const std::string& token, double& value) {
+    const numerics::NumberRead r = numerics::read_number(token);
+    value = r.value;
+    return r.problem == numerics::NumberProblem::none;
 }
 
-// What is wrong with a token parse_number() refused: a number a double
-// cannot hold (1e400, or "inf" spelled out) is out of range, anything else
-// is not a number.
 // A comma between two digits, as a decimal comma writes "0,0123".
 bool digit_comma_digit(const std::string& t) {
     for (std::size_t k = 1; k + 1 < t.size(); ++k)
@@ -57,12 +59,9 @@ bool digit_comma_digit(const std::string& t) {
     return false;
 }
 
+// What is wrong with a token parse_number() refused, in the number reader's words.
 std::string refused(const std::string& token) {
-    char* end = nullptr;
-    const double v = std::strtod(token.c_str(), &end);
-    const bool whole = !token.empty() && end == token.c_str() + token.size();
-    if (whole && !std::isnan(v)) return "'" + token + "' is out of range for a double";
-    return "'" + token + "' is not a number" + (digit_comma_digit(token) ? " (decimal commas are not read)" : "");
+    return numerics::number_problem(token, numerics::read_number(token).problem);
 }
 
 // PEER AT2's third header line names its unit: "... UNITS OF G".
@@ -244,13 +243,13 @@ Record parse_esm(const std::string& text, const std::string& path) {
     for (const char* key : {"SAMPLING_INTERVAL_S", "NDATA", "UNITS", "PGA_CM/S^2"})
         if (!r.header.count(key)) throw RecordError(path, 0, std::string("missing header key ") + key);
     double dt, ndata, pga;
-    if (!parse_number(r.header["SAMPLING_INTERVAL_S"], dt) || !(dt > 0))
+    if (!header_number(r.header["SAMPLING_INTERVAL_S"], dt) || !(dt > 0))
         throw RecordError(path, line_of["SAMPLING_INTERVAL_S"], "SAMPLING_INTERVAL_S must be a number > 0");
-    if (!parse_number(r.header["NDATA"], ndata) || ndata != std::floor(ndata) || ndata < 2)
+    if (!header_number(r.header["NDATA"], ndata) || ndata != std::floor(ndata) || ndata < 2)
         throw RecordError(path, line_of["NDATA"], "NDATA must be a whole number >= 2");
     if (r.header["UNITS"] != "cm/s^2")
         throw RecordError(path, line_of["UNITS"], "UNITS is '" + r.header["UNITS"] + "', expected cm/s^2");
-    if (!parse_number(r.header["PGA_CM/S^2"], pga))
+    if (!header_number(r.header["PGA_CM/S^2"], pga))
         throw RecordError(path, line_of["PGA_CM/S^2"], "PGA_CM/S^2 is not a number");
     if (r.accel.size() != static_cast<std::size_t>(ndata))
         throw RecordError(path, line_of["NDATA"], "NDATA says " + r.header["NDATA"] + " samples, the file has " +
@@ -300,10 +299,10 @@ Record parse_peer(const std::string& text, const std::string& path) {
             std::string dt_text = trim(upper.substr(d + 3));
             dt_text = trim(dt_text.substr(0, dt_text.find_first_of(" ,S")));
             double v;
-            if (!parse_number(npts_text, v) || v != std::floor(v) || v < 2)
+            if (!header_number(npts_text, v) || v != std::floor(v) || v < 2)
                 throw RecordError(path, 4, "NPTS '" + npts_text + "' is not a whole number >= 2");
             npts = static_cast<long>(v);
-            if (!parse_number(dt_text, r.dt) || !(r.dt > 0)) throw RecordError(path, 4, "DT '" + dt_text + "' must be > 0");
+            if (!header_number(dt_text, r.dt) || !(r.dt > 0)) throw RecordError(path, 4, "DT '" + dt_text + "' must be > 0");
             r.header["NPTS"] = npts_text;
             r.header["DT"] = dt_text;
             continue;

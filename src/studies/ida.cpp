@@ -8,6 +8,7 @@
 #include "batch/pool.hpp"
 #include "studies/scaled_input.hpp"
 #include "studies/spectrum.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::studies {
 
@@ -54,7 +55,7 @@ std::string IdaOptions::describe_model() const {
 namespace {
 
 void check_options(const GroundInput& input, double alpha, double p, const IdaOptions& o) {
-    if (!(alpha > 0 && alpha < 1)) throw std::invalid_argument("ida: alpha must be in (0, 1)");
+    if (!in_search_alpha_range(alpha)) throw std::invalid_argument(std::string("ida: alpha must be in ") + kSearchAlphaRange);
     if (!(std::isfinite(p) && p > 0)) throw std::invalid_argument("ida: p must be finite and > 0");
     if (!(input.peak() > 0)) throw std::invalid_argument("ida: the input never moves (peak 0): it cannot be scaled to a q");
     if (o.points < 2) throw std::invalid_argument("ida: the grid needs at least 2 points");

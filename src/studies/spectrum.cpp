@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "studies/scaled_input.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::studies {
 
@@ -71,7 +72,7 @@ std::string SpectrumOptions::describe_refinement() const {
 namespace {
 
 void check_options(double alpha, const SpectrumOptions& o) {
-    if (!(alpha > 0 && alpha < 1)) throw std::invalid_argument("spectrum: alpha must be in (0, 1)");
+    if (!in_search_alpha_range(alpha)) throw std::invalid_argument(std::string("spectrum: alpha must be in ") + kSearchAlphaRange);
     if (o.points < 2) throw std::invalid_argument("spectrum: the grid needs at least 2 points");
     if (!(o.p_min > 0 && std::isfinite(o.p_max) && o.p_max > o.p_min))
         throw std::invalid_argument("spectrum: the grid needs 0 < p_min < p_max, finite");

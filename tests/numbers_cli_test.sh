@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# The one number reader (src/numerics/number_text.hpp) on the command line:
+# every option, a manifest's cells and a record's samples read a number by the
+# same rules and say its problem in the same words; a whole number's message
+# states its range; the searches' alpha range is one.  No real records needed.
+#
+#   tests/numbers_cli_test.sh ROCKING
+set -u
+rocking="$1"
+source "$(dirname "$0")/check_lib.sh"
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+
+# A record that overturns any block at once: 2 g for 2 s.
+{ echo "0 0"; for i in $(seq 1 200); do echo "$i 2"; done; } | awk '{ printf "%.2f %s\n", $1 / 100, $2 }' > "$tmp/strong.txt"
+r="$tmp/strong.txt"
+large="is too large for a double (magnitude beyond 1.7976931348623157e+308)"
+small="is below the smallest normal double, 2.2250738585072014e-308"
+
+# ---- Options: subnormal, overflowing, blanks; each command, exit 2.
+check  "alpha 1e-320 is below the smallest normal" "--alpha: '1e-320' $small" "$rocking" collapse "$r" --alpha 1e-320 --unit g
+status "and exits 2"                     2 "$rocking" collapse "$r" --alpha 1e-320 --unit g
+check  "alpha 1e400 is too large"        "--alpha: '1e400' $large" "$rocking" collapse "$r" --alpha 1e400 --unit g
+check  "alpha -1e400 is too large"       "--alpha: '-1e400' $large" "$rocking" spectrum "$r" --alpha -1e400 --unit g
+check  "a spectrum alpha list item"      "--alpha: '1e400' $large" "$rocking" spectrum "$r" --alpha 0.1,1e400 --unit g
+check  "a fragility alpha list item"     "--alpha: '1e-320' $small" "$rocking" fragility "$r" --alpha 1e-320 --p 2 --unit g
+check  "an eq27 alpha list item"         "--alpha: '1e400' $large" "$rocking" eq27 "$r" --alpha 1e400 --unit g
+check  "simulate --p 1e400"              "--p: '1e400' $large" "$rocking" simulate --case 2 --x 1 --alpha 0.1 --p 1e400
+check  "q --x 1e-320"                    "--x: '1e-320' $small" "$rocking" q --case 2 --x 1e-320
+check  "a --train duration 1e400"        "--train: train item 2 '1:1e400': duration '1e400' $large" "$rocking" q --train 1:1,1:1e400 --x 1
+check  "a synth --params value"          "--params fc: '1e400' $large" "$rocking" record synth --stochastic 1 --dt 0.01 --duration 5 --params fc=1e400
+check  "the record's --dt"               "--dt: '1e-320' $small" "$rocking" record info "$r" --unit g --dt 1e-320
+check  "nan is not finite"               "--alpha: 'nan' is not a finite number" "$rocking" collapse "$r" --alpha nan --unit g
+check  "hexadecimal is not read"         "--alpha: '0x0.1p1' is not a number (hexadecimal is not read)" "$rocking" collapse "$r" --alpha 0x0.1p1 --unit g
+check  "a decimal comma is named"        "--x: '0,5' is not a number (decimal commas are not read)" "$rocking" q --case 2 --x 0,5
+check  "trailing garbage is not a number" "--x: '0.5x' is not a number" "$rocking" q --case 2 --x 0.5x
+# Blanks around a number are read alike at either end ('0.1 ' was refused, ' 0.1' read).
+check  "alpha '0.1 ' is 0.1"             '"alpha": 0.10000000000000001' "$rocking" collapse "$r" --alpha '0.1 ' --unit g --json
+check  "alpha ' 0.1' is 0.1"             '"alpha": 0.10000000000000001' "$rocking" collapse "$r" --alpha ' 0.1' --unit g --json
+check  "a tab after x"                   "q = 4.388218723" "$rocking" q --case 2 --x $'0.5\t'
+check  "blanks after a list's commas"    '"alpha": 0.20000000000000001' "$rocking" spectrum "$r" --alpha '0.1, 0.2' --points 2 --unit g --json
+check  "a blank inside is not a number"  "--x: '0. 5' is not a number" "$rocking" q --case 2 --x '0. 5'
+
+# ---- Whole numbers: the range, whatever is wrong.
+check  "spectrum --points 10000000"      "--points: must be a whole number from 2 to 100000 (got 10000000)" "$rocking" spectrum "$r" --alpha 0.1 --points 10000000 --unit g
+status "and exits 2"                     2 "$rocking" spectrum "$r" --alpha 0.1 --points 10000000 --unit g
+check  "fragility --points 10000000"     "--points: must be a whole number from 2 to 10000 (got 10000000)" "$rocking" fragility "$r" --alpha 0.1 --p 2 --points 10000000 --unit g
+check  "fragility --bootstrap 10000000"  "--bootstrap: must be 0 (none) or from 2 to 100000 resamples (got 10000000)" "$rocking" fragility "$r" --alpha 0.1 --p 2 --bootstrap 10000000 --seed 1 --unit g
+check  "eq27 --bootstrap 10000000"       "--bootstrap: must be 0 (none) or from 2 to 100000 resamples (got 10000000)" "$rocking" eq27 "$r" --bootstrap 10000000 --seed 1 --unit g
+check  "eq27 --p-points 1e400"           "--p-points: must be a whole number from 1 to 1000 (got '1e400')" "$rocking" eq27 "$r" --p-points 1e400 --unit g
+check  "response --steps 2.5"            "--steps: must be a whole number from 1 to 1000000 (got 2.5)" "$rocking" response --case 2 --x 1 --steps 2.5
+check  "q --pulses abc"                  "--pulses: must be a whole number from 1 to 1000 (got 'abc')" "$rocking" q --case 2 --x 1 --pulses abc
+check  "q --case 7"                      "--case: must be a whole number from 1 to 5 (got 7)" "$rocking" q --case 7 --x 1
+
+# ---- Samples: a subnormal is itself, an overflowing one too large; file and line, exit 1.
+printf '0.1\n1.9e-308\n-0.2\n0.05\n-1e-320\n0.0\n' > "$tmp/tiny.txt"
+check  "a sample 1.9e-308 reads"         '"samples": 6' "$rocking" record info "$tmp/tiny.txt" --unit g --dt 0.01 --json
+printf '0.1\n1e400\n-0.2\n0.05\n' > "$tmp/big.txt"
+check  "a sample 1e400 is too large"     "big.txt:2: '1e400' $large" "$rocking" record info "$tmp/big.txt" --unit g --dt 0.01
+status "and exits 1"                     1 "$rocking" record info "$tmp/big.txt" --unit g --dt 0.01
+printf 'H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 4, DT= .01 SEC\n0.1 1.9e-308 -0.2\n0.05\n' > "$tmp/tiny.at2"
+check  "a PEER sample 1.9e-308 reads"    '"samples": 4' "$rocking" record info "$tmp/tiny.at2" --json
+printf 'H1\nH2\nACCELERATION IN UNITS OF G\nNPTS= 4, DT= .01 SEC\n0.1 0.2 -0.2\n-1e400\n' > "$tmp/big.at2"
+check  "a PEER sample -1e400"            "big.at2:6: sample '-1e400' $large" "$rocking" record info "$tmp/big.at2"
+
+# ---- A manifest's cells: the same reader and messages, in the row's error column.
+printf '0.1\n0.2\n-0.2\n0.05\n0.3\n-0.1\n0.0\n0.1\n' > "$tmp/rec.txt"
+cat > "$tmp/m.csv" <<CSV
+kind,record,unit,record_dt,alpha,p,points
+simulate,rec.txt,g,0.01,1e400,2,
+simulate,rec.txt,g,0.01,0.1,1e-320,
+spectrum,rec.txt,g,0.01,0.1,,10000000
+spectrum,rec.txt,g,0.01,0.72,,
+ida,rec.txt,g,0.01,0.72,2,
+simulate,rec.txt,g,0.01,0.1 ,2,
+CSV
+"$rocking" batch "$tmp/m.csv" --output "$tmp/out.csv" >/dev/null 2>&1
+check  "a cell 1e400"                    "manifest line 2: alpha: '1e400' $large" cat "$tmp/out.csv"
+check  "a cell 1e-320"                   "manifest line 3: p: '1e-320' $small" cat "$tmp/out.csv"
+check  "a points cell 10000000"          "manifest line 4: points: must be a whole number from 2 to 100000 (got 10000000)" cat "$tmp/out.csv"
+check  "a spectrum row's alpha 0.72"     "manifest line 5: alpha: must be in (0, 0.7) (got 0.72)" cat "$tmp/out.csv"
+check  "an ida row's alpha 0.72"         "manifest line 6: alpha: must be in (0, 0.7) (got 0.72)" cat "$tmp/out.csv"
+check  "a cell '0.1 ' runs"              "7,simulate,rec.txt,g,0.01,0.1,2,,ok," cat "$tmp/out.csv"
+
+# ---- The searches' alpha range, one for every command.
+for cmd in "collapse $r --alpha 0.72" "spectrum $r --alpha 0.72" "fragility $r --alpha 0.72 --p 2" "eq27 $r --alpha 0.72"; do
+    # shellcheck disable=SC2086
+    check "${cmd%% *} alpha 0.72"        "must be in (0, 0.7) (got 0.72)" "$rocking" $cmd --unit g
+done
+exit $fail
