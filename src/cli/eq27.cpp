@@ -160,7 +160,7 @@ Loaded load(const std::vector<std::string>& files, const Args& a) {
 
 // The first collapse q of every record on every block, points[record][block]:
 // each IDA a job of the engine (job j: block j / records, record j % records).
-// On rank 0, or without ranks; empty on the other ranks.  A failed IDA's
+// Filled on rank 0, or without ranks; not on the other ranks.  A failed IDA's
 // error waits for the batch's end, as fragility's does.
 std::vector<std::vector<studies::IdaPoint>> collapse_points(Command& c, const Loaded& l, batch::Ranks* ranks) {
     jobs::FragilityJobs jobs;
