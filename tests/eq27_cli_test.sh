@@ -127,4 +127,40 @@ for note in "# command: rocking eq27" "# model: linearised" "# solver: exact" "#
 done
 rows=$(grep -vc '^#' "$tmp/m.csv")
 if [[ $rows == 7 ]]; then echo "ok: csv rows"; else echo "FAIL: csv rows: $rows, wanted 7 (header and 6 blocks)"; fail=1; fi
+# Repeats: an alpha or a record given twice would count its cases twice (0/4 read as 0/12,
+# the Wilson interval narrowed): refused, exit 2, naming the repeat, whatever the spelling
+# or the path (the same file, ./ or a link to it, a hard link, a copy: the same samples).
+one=(--p-points 1 --p-min 2 --q-max 3)
+check "alpha twice"       "--alpha: 0.1 is given twice (values 1 and 3)"  "${run[@]}" --alpha 0.1,0.2,0.1 "${one[@]}"
+check "alpha twice, spelt otherwise" "--alpha: 0.1 is given twice"         "${run[@]}" --alpha 0.1,0.10 "${one[@]}"
+status "alpha twice"      2                                               "${run[@]}" --alpha 0.1,0.1 "${one[@]}"
+ln -s "$tmp/sine1.txt" "$tmp/link.txt"
+ln "$tmp/sine1.txt" "$tmp/hard.txt"
+cp "$tmp/sine1.txt" "$tmp/copy.txt"
+for again in "$tmp/sine1.txt" "$tmp/./sine1.txt" "$tmp/link.txt" "$tmp/hard.txt" "$tmp/copy.txt"; do
+    check "record twice: $(basename "$again")" "$again: the same record as $tmp/sine1.txt (records 2 and 4" \
+        "$rocking" eq27 "$tmp/sine0.7.txt" "$tmp/sine1.txt" "$tmp/sine1.5.txt" "$again" --unit g --dt 0.01 --alpha 0.1 "${one[@]}"
+    status "record twice: $(basename "$again")" 2 \
+        "$rocking" eq27 "$tmp/sine0.7.txt" "$tmp/sine1.txt" "$again" --unit g --dt 0.01 --alpha 0.1 "${one[@]}"
+done
+# The same samples at another step are another record (two-column files: time, acceleration).
+awk '{printf "%.2f %s\n", NR * 0.01, $1}' "$tmp/sine1.txt" >"$tmp/t1.txt"
+awk '{printf "%.2f %s\n", NR * 0.02, $1}' "$tmp/sine1.txt" >"$tmp/t2.txt"
+status "same samples, other step" 0 "$rocking" eq27 "$tmp/t1.txt" "$tmp/t2.txt" --unit g --alpha 0.1 "${one[@]}"
+# --p-points 1 is one p: --p-min alone; a range with it was silently cut to its start.
+check "one point, default range" "--p-points 1: one p, but the range runs from 0.5 to 10 rad/s" \
+    "${run[@]}" --alpha 0.1 --p-points 1
+check "one point, a range" "--p-points 1: one p, but the range runs from 1 to 4 rad/s" \
+    "${run[@]}" --alpha 0.1 --p-points 1 --p-min 1 --p-max 4
+status "one point, a range" 2 "${run[@]}" --alpha 0.1 --p-points 1 --p-min 1 --p-max 4
+check "one point at --p-min" "p: 1 log-spaced from 2 to 2 rad/s" "${run[@]}" --alpha 0.1 --p-points 1 --p-min 2 --q-max 3
+check "one point, --p-max the same" "p: 1 log-spaced from 2 to 2 rad/s" \
+    "${run[@]}" --alpha 0.1 --p-points 1 --p-min 2 --p-max 2 --q-max 3
+check "a range too narrow for its points" "--p-points: 1000 points from 1 to 1 rad/s repeat p = 1" \
+    "${run[@]}" --alpha 0.1 --p-points 1000 --p-min 1 --p-max 1.0000000000001
+status "a range too narrow for its points" 2 "${run[@]}" --alpha 0.1 --p-points 1000 --p-min 1 --p-max 1.0000000000001
+# The engine's switches: --quiet taken, --resume refused (no rows file).
+status "--quiet"          0 "${run[@]}" --alpha 0.1 "${one[@]}" --quiet
+check "--resume"          "--resume: eq27 keeps no rows file to resume from" "${run[@]}" --resume
+status "--resume"         2 "${run[@]}" --resume
 exit $fail

@@ -27,7 +27,9 @@ for study in fragility eq27; do
 done
 
 # One motion in three formats: plain text in m/s^2 (two columns), PEER AT2
-# (g = 9.81 m/s^2, as the reader takes it) and ESM ASCII (cm/s^2).
+# (g = 9.81 m/s^2, as the reader takes it) and ESM ASCII (cm/s^2), the last two
+# scaled by 1.1 and 0.9 (a record given twice is refused): q = PGA/(alpha g)
+# is the record's scale, so each overturns the block at the same q.
 "$rocking" record synth --pulse 1,1,0,2 --dt 0.005 --duration 6 --output "$tmp/plain.txt" >/dev/null || { echo "FAIL: record synth"; exit 1; }
 /usr/bin/python3 - "$tmp" <<'PY' || { echo "FAIL: writing the AT2 and ESM copies"; exit 1; }
 import sys
@@ -39,17 +41,18 @@ with open(d + "/motion.AT2", "w") as f:
     f.write("PEER NGA STRONG MOTION DATABASE RECORD\nsynthetic pulse\nACCELERATION TIME SERIES IN UNITS OF G\n")
     f.write("NPTS= %d, DT= %.4f SEC\n" % (len(a), dt))
     for k in range(0, len(a), 5):
-        f.write("".join(" %.17e" % (v / 9.81) for v in a[k:k + 5]) + "\n")
+        f.write("".join(" %.17e" % (1.1 * v / 9.81) for v in a[k:k + 5]) + "\n")
 with open(d + "/motion.ASC", "w") as f:
     f.write("EVENT_NAME: synthetic\nSTATION_CODE: SYN\nSTREAM: HNE\nUNITS: cm/s^2\nSAMPLING_INTERVAL_S: %.6f\n" % dt)
-    f.write("NDATA: %d\nPGA_CM/S^2: %.6f\nDATA_TYPE: ACCELERATION\n" % (len(a), max(abs(v) for v in a) * 100))
-    f.write("".join("%.17e\n" % (v * 100) for v in a))
+    f.write("NDATA: %d\nPGA_CM/S^2: %.6f\nDATA_TYPE: ACCELERATION\n" % (len(a), max(abs(v) for v in a) * 90))
+    f.write("".join("%.17e\n" % (v * 90) for v in a))
 PY
 q_of() {  # the first collapse q of each record, as fragility --json gives them
     "$rocking" fragility "$@" --alpha 0.2 --p 3 --points 20 --quiet --json |
         /usr/bin/python3 -c 'import json,sys; print(" ".join("%.6g" % r["q"] for r in json.load(sys.stdin)["blocks"][0]["records"]))'
 }
-alone=$(q_of "$tmp/plain.txt" "$tmp/plain.txt" --unit m/s2)
+"$rocking" record synth --pulse 0.5,1,0,2 --dt 0.005 --duration 6 --output "$tmp/other.txt" >/dev/null
+alone=$(q_of "$tmp/plain.txt" "$tmp/other.txt" --unit m/s2)
 mixed=$(q_of "$tmp/plain.txt" "$tmp/motion.AT2" "$tmp/motion.ASC" --unit m/s2)
 first=${alone%% *}
 if [[ -n "$first" && "$mixed" == "$first $first $first" ]]; then echo "ok: fragility mixes text, AT2 and ESM under --unit: q = $mixed"

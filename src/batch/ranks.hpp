@@ -5,6 +5,8 @@
 // implementation its build has.
 #pragma once
 
+#include <sys/stat.h>
+
 #include <cstddef>
 #include <cstdlib>
 #include <stdexcept>
@@ -18,6 +20,24 @@ namespace rocking::batch {
 // they set, OMPI_COMM_WORLD_SIZE (OpenMPI), PMI_SIZE (MPICH, Slurm) or PMIX_RANK.
 inline bool launched_by_mpirun() {
     return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
+}
+
+// Whether `path` is a pipe, FIFO, socket or device (/dev/stdin among them),
+// which the ranks of an MPI run cannot each read whole: mpirun hands standard
+// input to rank 0 alone (the others read /dev/null), and a pipe or FIFO is
+// drained by the first rank that reads it.  A missing file or a folder is
+// not one: its reader names it.
+inline bool unshareable_by_ranks(const std::string& path) {
+    struct stat st;
+    if (stat(path.c_str(), &st) != 0) return false;
+    return !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
+// What is said of such a file, before the remedy's last words.
+inline std::string unshareable_text(const std::string& path) {
+    return path + ": not a regular file (standard input, a pipe, a FIFO or a device), which the ranks of an MPI run "
+                  "cannot share (mpirun gives standard input to rank 0 alone, and each rank reads its inputs itself): "
+                  "save it to a file";
 }
 
 // A rank failed and said why on stderr; this one ends with `status`, silently.

@@ -61,6 +61,7 @@ int cmd_batch(int argc, char** argv) {
     // Every rank reads the manifest; a failure is held until all have said how they fared.
     std::optional<batch::Manifest> manifest;
     jobs::RecordStore records;
+    if (ranks) records.refuse_unshareable();
     batch::BatchPlan plan;
     std::exception_ptr failure;
     try {

@@ -25,6 +25,43 @@ std::unique_ptr<batch::Ranks> join_if_launched(const std::string& command) {
     return batch::join_cluster();
 }
 
+namespace {
+
+[[noreturn]] void refuse_on_every_rank(const std::string& why) {
+    if (!first_rank()) throw EndQuietly{2};
+    throw UsageError(why);
+}
+
+// The exit status of a failed setup, as main() gives it without ranks.
+int status_of(std::exception_ptr failure) {
+    if (!failure) return 0;
+    try {
+        std::rethrow_exception(failure);
+    } catch (const UsageError&) {
+        return 2;
+    } catch (...) {
+        return 1;
+    }
+}
+
+}  // namespace
+
+void refuse_unshared(const std::string& command, const std::string& sharing) {
+    if (!batch::launched_by_mpirun()) return;
+    refuse_on_every_rank("does not share its work across the ranks of an MPI run, and each copy would run it whole "
+                         "and print its own report: run 'rocking " + command + "' without mpirun (the commands that "
+                         "run under mpirun: " + sharing + ")");
+}
+
+void refuse_piped_inputs(int argc, char** argv, const std::string& command) {
+    if (!batch::launched_by_mpirun()) return;
+    // The inputs come before the first option, as file_arguments reads them.
+    for (int i = 2; i < argc && std::string(argv[i]).rfind("--", 0) != 0; ++i)
+        if (batch::unshareable_by_ranks(argv[i]))
+            refuse_on_every_rank(batch::unshareable_text(argv[i]) + " and give that file to mpirun -np K rocking " +
+                                 command);
+}
+
 void parse_on_every_rank(const std::function<void()>& parse) {
     try {
         parse();
@@ -39,7 +76,7 @@ int agree_on_setup(batch::Ranks* ranks, std::exception_ptr failure, const std::s
         if (failure) std::rethrow_exception(failure);
         return 0;
     }
-    const int status = failure ? 1 : 0;
+    const int status = status_of(failure);
     const bool first_failed = ranks->broadcast(std::to_string(status)) != "0";
     const int all = ranks->agree(status);
     if (all == 0) return 0;

@@ -1,7 +1,8 @@
-// What the commands that run on the batch engine (rocking batch, fragility)
-// share under mpirun: the same binary started K times, each copy parsing the
-// same command line, so that each finds the same errors; rank 0 alone says
-// them, and every rank ends with the same status (docs/batch.md).
+// What the commands that run on the batch engine (rocking batch, fragility,
+// spectrum, eq27) share under mpirun: the same binary started K times, each
+// copy parsing the same command line, so that each finds the same errors;
+// rank 0 alone says them, and every rank ends with the same status
+// (docs/batch.md).  The other commands refuse to start under mpirun.
 #pragma once
 
 #include <exception>
@@ -30,12 +31,24 @@ struct EndQuietly {
     int status;
 };
 
+// Under mpirun, a command that does not share its work across the ranks:
+// each copy would run it whole and print its own report.  Refused, said once:
+// rank 0 throws UsageError, the others EndQuietly{2}.  `sharing`: the
+// commands that do share, named in the message.
+void refuse_unshared(const std::string& command, const std::string& sharing);
+
+// Under mpirun, an input named before the first option (a record, batch's
+// manifest) that the ranks cannot share (batch::unshareable_by_ranks: a pipe,
+// /dev/stdin).  Refused as refuse_unshared does, the file named.
+void refuse_piped_inputs(int argc, char** argv, const std::string& command);
+
 // `parse` run on every copy: a UsageError is rank 0's to say; the others
 // throw EndQuietly{2}.
 void parse_on_every_rank(const std::function<void()>& parse);
 
 // After each rank's setup (reading its inputs), `failure` null where it went
-// well: 0 when every rank is ready.  Otherwise the status to end with, the
+// well: 0 when every rank is ready.  Otherwise the status to end with (2 for
+// a UsageError, 1 for any other failure), the
 // failure said once (by rank 0, or by a rank that failed where rank 0 did
 // not) before any rank ends.  Without ranks a failure is rethrown.
 int agree_on_setup(batch::Ranks* ranks, std::exception_ptr failure, const std::string& command);

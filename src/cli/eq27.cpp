@@ -3,10 +3,14 @@
 // the share of non-conservative cases per to_k with its bootstrap interval
 // over records (--bootstrap K --seed S) and its Wilson interval (the cases
 // taken as independent), the records non-conservative on any block, and the
-// map over (alpha, p) as CSV, as text or JSON.
+// map over (alpha, p) as CSV, as text or JSON.  Each (block, record) IDA is
+// a job of the batch engine, fragility's (jobs/fragility_plan.hpp), so that
+// the study runs on threads or on the ranks of an MPI run alike, and rank 0
+// counts the cases from the rows.
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -14,8 +18,13 @@
 #include <string>
 #include <vector>
 
+#include "batch/engine.hpp"
+#include "batch/ranks.hpp"
+#include "cli/cluster_front.hpp"
+#include "cli/distinct_inputs.hpp"
 #include "cli/options.hpp"
 #include "harness/table.hpp"
+#include "jobs/fragility_plan.hpp"
 #include "studies/eq27_at_scale.hpp"
 #include "studies/search_alpha.hpp"
 
@@ -28,7 +37,7 @@ using studies::kHalfPeriods;
 
 const char* kUsage =
     "usage: rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q] "
-    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]";
+    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json] [--quiet]";
 
 using studies::kEq27NoBootstrap;
 using studies::kEq27Verdict;
@@ -49,6 +58,27 @@ double bounded(const Args& a, const std::string& flag, double fallback, double l
     return v;
 }
 
+// The p of the grid: --p-points log-spaced from --p-min to --p-max, both
+// ends included.  One point is one p: --p-min, and --p-max (when given) must
+// be that p, so that no range is given and silently cut to its start.
+void p_grid_from(const Args& a, studies::Eq27Grid& g) {
+    g.p_min = bounded(a, "--p-min", g.p_min, 0.01, 1000, "(0.01, 1000] rad/s");
+    g.p_max = bounded(a, "--p-max", g.p_max, 0.01, 1000, "(0.01, 1000] rad/s");
+    if (a.values.count("--p-points")) g.p_points = integer("--p-points", a.values.at("--p-points"), 1, 1000);
+    if (g.p_points == 1 && a.values.count("--p-min") && !a.values.count("--p-max")) g.p_max = g.p_min;
+    if (g.p_max < g.p_min) throw UsageError("--p-max: must not be below --p-min (" + g7(g.p_min) + ")");
+    if (g.p_points == 1 && g.p_max != g.p_min)
+        throw UsageError("--p-points 1: one p, but the range runs from " + g7(g.p_min) + " to " + g7(g.p_max) +
+                         " rad/s: give the p as --p-min P alone, or more points");
+    if (g.p_points > 1 && g.p_max == g.p_min) throw UsageError("--p-points: more than 1 needs --p-max above --p-min");
+    // A range too narrow for its points would repeat a p, and count its cases twice.
+    const std::vector<double> ps = g.ps();
+    for (std::size_t i = 1; i < ps.size(); ++i)
+        if (!(ps[i] > ps[i - 1]))
+            throw UsageError("--p-points: " + std::to_string(g.p_points) + " points from " + g7(g.p_min) + " to " +
+                             g7(g.p_max) + " rad/s repeat p = " + g7(ps[i]) + ": widen the range or take fewer points");
+}
+
 studies::Eq27Grid grid_from(const Args& a) {
     studies::Eq27Grid g;
     if (a.values.count("--alpha")) {
@@ -57,12 +87,9 @@ studies::Eq27Grid grid_from(const Args& a) {
         for (double v : g.alphas)
             if (!studies::in_search_alpha_range(v))
                 throw UsageError("--alpha: each must be in " + std::string(studies::kSearchAlphaRange) + " (got " + g7(v) + ")");
+        refuse_repeated_values("--alpha", g.alphas);
     }
-    g.p_min = bounded(a, "--p-min", g.p_min, 0.01, 1000, "(0.01, 1000] rad/s");
-    g.p_max = bounded(a, "--p-max", g.p_max, 0.01, 1000, "(0.01, 1000] rad/s");
-    if (g.p_max < g.p_min) throw UsageError("--p-max: must not be below --p-min (" + g7(g.p_min) + ")");
-    if (a.values.count("--p-points")) g.p_points = integer("--p-points", a.values.at("--p-points"), 1, 1000);
-    if (g.p_points > 1 && g.p_max == g.p_min) throw UsageError("--p-points: more than 1 needs --p-max above --p-min");
+    p_grid_from(a, g);
     return g;
 }
 
@@ -75,26 +102,86 @@ studies::Eq27Options options_from(const Args& a) {
     const Bootstrap b = bootstrap_options(a);
     o.bootstrap.resamples = b.resamples;
     if (b.resamples > 0) o.bootstrap.seed = b.seed;
-    o.threads = jobs_option(a);
     return o;
 }
 
+struct Command {
+    std::vector<std::string> files;
+    Args args;
+    studies::Eq27Options study;
+    std::vector<studies::BlockShape> blocks;
+    batch::EngineOptions engine;
+};
+
+Command command_from(int argc, char** argv, bool mpi) {
+    Command c;
+    bool resume = false;
+    std::vector<char*> args = without_engine_switches(argc, argv, resume, c.engine.quiet);
+    if (resume) throw UsageError("--resume: eq27 keeps no rows file to resume from");
+    const int count = static_cast<int>(args.size());
+    int first = 0;
+    c.files = file_arguments(count, args.data(), first, kUsage);
+    c.args = parse(count, args.data(), first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
+                                               "--seed", "--unit", "--dt", "--jobs", "--output"});
+    c.study = options_from(c.args);
+    c.blocks = c.study.grid.blocks();
+    if (c.args.values.count("--output") && c.args.values.at("--output").empty())
+        throw UsageError("--output: an empty file name");
+    if (c.files.size() > 1000) throw UsageError("at most 1000 files");
+    check_outputs(c.args, {"--output"}, c.files);
+    set_threads_and_flush(c.engine, c.args, mpi);
+    c.engine.command = "rocking eq27";
+    c.engine.jobs_from = "study";
+    return c;
+}
+
+// Every record, in g, with its half-periods; each record once (distinct_inputs.hpp).
 struct Loaded {
     std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
-    std::vector<studies::Eq27Record> records;
+    std::vector<std::array<double, kHalfPeriods>> to;
 };
 
 Loaded load(const std::vector<std::string>& files, const Args& a, double p_max) {
     Loaded l;
+    std::vector<const dynamics::SampledInput*> given;
     for (const std::string& path : files) {
         const records::Record r = load_record(path, a);
         l.inputs.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
         refuse_unresolvable_run(p_max, l.inputs.back()->t_end(), a, {"--dt", "--p-max"}, path);
-        const records::HalfPeriods h = half_periods_of(r, path);
+        l.to.push_back(half_periods_of(r, path).to);
         if (!(l.inputs.back()->peak() > 0)) throw std::runtime_error(path + ": the record never moves (PGA 0)");
-        l.records.push_back({l.inputs.back().get(), h.to});
+        given.push_back(l.inputs.back().get());
     }
+    refuse_repeated_records(files, given);
     return l;
+}
+
+// The first collapse q of every record on every block, points[record][block]:
+// each IDA a job of the engine (job j: block j / records, record j % records).
+// Filled on rank 0, or without ranks; not on the other ranks.  A failed IDA's
+// error waits for the batch's end, as fragility's does.
+std::vector<std::vector<studies::IdaPoint>> collapse_points(Command& c, const Loaded& l, batch::Ranks* ranks) {
+    jobs::FragilityJobs jobs;
+    for (const auto& input : l.inputs) jobs.inputs.push_back(input.get());
+    jobs.blocks = c.blocks;
+    jobs.ida = c.study.ida;
+    jobs.description = "# rocking eq27: the IDAs of " + std::to_string(c.files.size()) + " record(s) x " +
+                       std::to_string(c.blocks.size()) + " block(s)\n";
+    const batch::BatchPlan plan = jobs::fragility_plan(jobs);
+    const std::size_t n = c.files.size();
+    std::vector<std::vector<studies::IdaPoint>> points(n, std::vector<studies::IdaPoint>(c.blocks.size()));
+    std::exception_ptr first_error;
+    c.engine.collect = [&](std::size_t j, const std::string& row) {
+        if (first_error) return;
+        try {
+            points[j % n][j / n] = jobs::ida_from_row(row, j, jobs).point;
+        } catch (const std::exception&) {
+            first_error = std::current_exception();
+        }
+    };
+    batch::run_batch(plan, c.engine, ranks);
+    if (first_error) std::rethrow_exception(first_error);
+    return points;
 }
 
 // The definitions with no non-conservative case anywhere on the grid.
@@ -242,19 +329,29 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
 }  // namespace
 
 int cmd_eq27(int argc, char** argv) {
-    int first = 0;
-    const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
-    const Args a = parse(argc, argv, first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
-                                             "--seed", "--unit", "--dt", "--jobs", "--output"});
-    const studies::Eq27Options o = options_from(a);
-    if (a.values.count("--output") && a.values.at("--output").empty()) throw UsageError("--output: an empty file name");
-    if (files.size() > 1000) throw UsageError("at most 1000 files");
-    check_outputs(a, {"--output"}, files);
-    const Loaded l = load(files, a, o.grid.p_max);
-    const Eq27Study s = studies::eq27_at_scale(l.records, o);
-    if (a.values.count("--output")) write_csv(a.values.at("--output"), files, o, s);
-    if (a.json) print_json(files, o, s);
-    else print_text(files, o, s);
+    const bool mpi = batch::launched_by_mpirun();
+    Command c;
+    parse_on_every_rank([&] { c = command_from(argc, argv, mpi); });
+    std::unique_ptr<batch::Ranks> ranks = join_if_launched("eq27");
+
+    // Every rank reads every record (its jobs take any of them); a failure
+    // is held until all have said how they fared.
+    Loaded l;
+    std::exception_ptr failure;
+    try {
+        l = load(c.files, c.args, c.study.grid.p_max);
+    } catch (const std::exception&) {
+        failure = std::current_exception();
+    }
+    if (const int status = agree_on_setup(ranks.get(), failure, "rocking eq27")) return status;
+    const auto points = collapse_points(c, l, ranks.get());
+    if (ranks && ranks->rank() != 0) return 0;
+
+    const Eq27Study s = studies::eq27_from_points(points, l.to, c.blocks, c.study.level, c.study.bootstrap);
+    const Args& a = c.args;
+    if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, s);
+    if (a.json) print_json(c.files, c.study, s);
+    else print_text(c.files, c.study, s);
     return 0;
 }
 

@@ -35,7 +35,8 @@ const char* kUsage =
     "                        [--rows FILE [--resume]] [--quiet]\n"
     "       mpirun -np K rocking fragility FILE... --alpha ... --p ... [--rows FILE [--resume]]\n"
     "       rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q]\n"
-    "                        [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json]\n"
+    "                        [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json] [--quiet]\n"
+    "       mpirun -np K rocking eq27 FILE... [--alpha A,...] ...\n"
     "       rocking batch MANIFEST [--jobs N] [--output FILE] [--resume] [--quiet]\n"
     "       mpirun -np K rocking batch MANIFEST --output FILE [--resume]\n"
     "\n"
@@ -109,7 +110,9 @@ const char* kUsage =
     "  eq. 27 at x = p to_k: per to_k the share of non-conservative cases (collapse q below eq. 27's; a\n"
     "  record censored at --q-max counts as conservative) with its 95 % Wilson interval (cases taken as\n"
     "  independent) and, with --bootstrap K --seed S, a 90 % bootstrap over records. --output writes the\n"
-    "  map: per block, the records non-conservative for each to_k. --jobs N as for fragility.\n"
+    "  map: per block, the records non-conservative for each to_k. --p-points 1 is one p, --p-min (and\n"
+    "  --p-max, if given, equal to it). A repeated alpha or record (the same samples, whatever the path)\n"
+    "  is refused: its cases would count twice. --jobs N, mpirun and --quiet as for fragility.\n"
     "batch: a CSV manifest, one job a row (kind simulate|collapse|ida|spectrum, record, alpha, p|height|\n"
     "  half_height, scaling q=Q|pga=G, model, solver, rtol, atol, restitution, criterion, q_max, points,\n"
     "  p_min, p_max; relative record paths from the manifest's folder; an empty cell takes the default of\n"
@@ -118,7 +121,43 @@ const char* kUsage =
     "  that fails gets its error in its row and the rest run. --output FILE is written as FILE.partial\n"
     "  and renamed when complete; --resume completes an interrupted one (Ctrl-C, SIGTERM, a kill), refusing\n"
     "  a changed manifest. Progress on stderr when a terminal, unless --quiet. Exit 0, or 3 when some job\n"
-    "  failed (docs/batch.md).\n";
+    "  failed (docs/batch.md).\n"
+    "mpirun: spectrum, fragility, eq27 and batch share their work across the ranks; the other commands\n"
+    "  refuse to start under mpirun (exit 2), as does an input on standard input or a pipe, which the ranks\n"
+    "  cannot share (save it to a file).\n";
+
+// Every subcommand, and whether it shares its work across the ranks of an
+// MPI run (on the batch engine): under mpirun the others are refused here,
+// before they start, so that a new command cannot print K reports.
+struct Subcommand {
+    const char* name;
+    int (*run)(int, char**);
+    bool shares_ranks;
+};
+
+const Subcommand kSubcommands[] = {
+    {"q", cmd_q, false},           {"response", cmd_response, false},   {"simulate", cmd_simulate, false},
+    {"record", cmd_record, false}, {"collapse", cmd_collapse, false},   {"assess", cmd_assess, false},
+    {"spectrum", cmd_spectrum, true}, {"fragility", cmd_fragility, true}, {"eq27", cmd_eq27, true},
+    {"batch", cmd_batch, true},
+};
+
+std::string sharing_ranks() {
+    std::string names;
+    for (const Subcommand& s : kSubcommands)
+        if (s.shares_ranks) names += (names.empty() ? "" : ", ") + std::string(s.name);
+    return names;
+}
+
+int dispatch(const std::string& command, int argc, char** argv) {
+    for (const Subcommand& s : kSubcommands) {
+        if (command != s.name) continue;
+        if (!s.shares_ranks) refuse_unshared(command, sharing_ranks());
+        refuse_piped_inputs(argc, argv, command);
+        return s.run(argc, argv);
+    }
+    throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
+}
 
 int run(int argc, char** argv) {
     const std::string command = argc > 1 ? argv[1] : "";
@@ -127,26 +166,18 @@ int run(int argc, char** argv) {
     bool help = command == "help";
     for (int i = 1; i < argc; ++i) help = help || std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h";
     if (help) {
-        std::cout << kUsage;
+        if (first_rank()) std::cout << kUsage;  // once under mpirun
         return 0;
     }
     try {
-        if (command == "q") return cmd_q(argc, argv);
-        if (command == "response") return cmd_response(argc, argv);
-        if (command == "simulate") return cmd_simulate(argc, argv);
-        if (command == "record") return cmd_record(argc, argv);
-        if (command == "collapse") return cmd_collapse(argc, argv);
-        if (command == "assess") return cmd_assess(argc, argv);
-        if (command == "spectrum") return cmd_spectrum(argc, argv);
-        if (command == "fragility") return cmd_fragility(argc, argv);
-        if (command == "eq27") return cmd_eq27(argc, argv);
-        if (command == "batch") return cmd_batch(argc, argv);
-        throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
+        return dispatch(command, argc, argv);
     } catch (const EndQuietly& e) {
         return e.status;  // under mpirun, a rank other than the one that said why
     } catch (const rocking::batch::OtherRankFailed& e) {
         return e.status;
     } catch (const UsageError& e) {
+        // Under mpirun every copy finds the same bad argument: rank 0 says it.
+        if (rocking::batch::launched_by_mpirun() && !first_rank()) return 2;
         // The whole usage would bury the one line that says what is wrong.
         std::cerr << "rocking" << (command.empty() ? "" : " " + command) << ": " << e.what() << "\n";
         if (command.empty()) std::cerr << kUsage;

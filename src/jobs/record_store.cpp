@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "batch/ranks.hpp"
 #include "dynamics/model.hpp"
 #include "records/record.hpp"
 
@@ -37,6 +38,8 @@ std::string RecordStore::canonical(const std::string& path) {
 }
 
 std::shared_ptr<const dynamics::SampledInput> RecordStore::get(const RecordSource& source) {
+    if (refuse_unshareable_ && batch::unshareable_by_ranks(source.path))
+        throw std::runtime_error(batch::unshareable_text(source.cell) + " and name that file in the manifest");
     const std::string path = canonical(source.path);
     char step[40];
     std::snprintf(step, sizeof step, "%.17g", source.dt);

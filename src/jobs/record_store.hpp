@@ -28,9 +28,14 @@ public:
     // the file named as the manifest names it.
     std::shared_ptr<const dynamics::SampledInput> get(const RecordSource& source);
     std::size_t reads() const { return cache_.loads(); }
+    // Under mpirun: every rank refuses a record the ranks cannot share
+    // (batch::unshareable_by_ranks, /dev/stdin), so that its jobs' rows do not
+    // depend on the rank that ran them.
+    void refuse_unshareable() { refuse_unshareable_ = true; }
 
 private:
     std::string canonical(const std::string& path);
+    bool refuse_unshareable_ = false;
     batch::SharedCache<dynamics::SampledInput> cache_;
     // Each path's canonical form, found once: a search walks the path's
     // folders (a readlink each), a cost per job beside a 20 us simulation.
