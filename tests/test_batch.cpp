@@ -1,10 +1,18 @@
 // The batch engine's thread pool (src/batch/pool.hpp): results in the jobs'
 // order whatever the scheduling, jobs handed out on demand, at most `window`
-// results held, and a failing job reported as a loop in one thread would.
+// results held, a failing job reported as a loop in one thread would, no
+// more threads than jobs, and threads the system refuses said before any job.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -24,7 +32,64 @@ std::uint64_t busy(std::size_t i) {
     return h;
 }
 
+// This process's threads, as Linux lists them.
+std::size_t threads_now() {
+    std::size_t n = 0;
+    for ([[maybe_unused]] const auto& task : std::filesystem::directory_iterator("/proc/self/task")) ++n;
+    return n;
+}
+
+// This process's address space in bytes (/proc/self/statm's first field, in pages).
+std::size_t address_space() {
+    std::size_t pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    return pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+}
+
 }  // namespace
+
+// Issue 38: --jobs 1500 for 5 jobs started 1500 threads, each with its
+// stack; under a memory limit the batch failed for threads it never needed.
+TEST(Batch, NoMoreThreadsStartThanJobs) {
+    const std::size_t before = threads_now();
+    for (std::size_t n : {1, 3, 5}) {
+        std::mutex mutex;
+        std::size_t most = 0;
+        run_ordered<int>(
+            n, PoolOptions{64},
+            [&](std::size_t) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(30));  // every thread started by now
+                std::lock_guard<std::mutex> lock(mutex);
+                most = std::max(most, threads_now());
+                return 0;
+            },
+            [](std::size_t, int&) {});
+        EXPECT_LE(most, before + (n == 1 ? 0 : n)) << n << " jobs on --jobs 64";
+        EXPECT_GE(most, before + (n == 1 ? 0 : 2)) << n << " jobs: they did run on threads";
+    }
+}
+
+// Threads the system refuses: ThreadsUnavailable naming --jobs, and no job
+// run, so that nothing is half done (run in a child: the limit is the process's).
+TEST(Batch, ThreadsThatCannotStartAreSaidBeforeAnyJobRuns) {
+    // The child's work, out of the macro (whose arguments cannot hold commas).
+    const auto child = [&] {
+        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
+        setrlimit(RLIMIT_AS, &limit);  // room for about 25 stacks of 8 MiB
+        std::atomic<int> ran{0};
+        try {
+            run_ordered<int>(
+                2000, PoolOptions{1500}, [&](std::size_t) { return ++ran; }, [](std::size_t, int&) {});
+            std::_Exit(1);
+        } catch (const ThreadsUnavailable& e) {
+            const std::string what = e.what();
+            const bool named = what.find("--jobs: 1500 threads were needed") != std::string::npos &&
+                               what.find("no job was run") != std::string::npos;
+            std::_Exit(!named ? 2 : ran.load() != 0 ? 4 : 3);
+        }
+    };
+    EXPECT_EXIT(child(), ::testing::ExitedWithCode(3), "");
+}
 
 TEST(Batch, ResultsComeInTheJobsOrderAndEqualOneThreads) {
     const std::size_t n = 500;
