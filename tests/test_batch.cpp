@@ -1,10 +1,18 @@
 // The batch engine's thread pool (src/batch/pool.hpp): results in the jobs'
 // order whatever the scheduling, jobs handed out on demand, at most `window`
-// results held, and a failing job reported as a loop in one thread would.
+// results held, a failing job reported as a loop in one thread would, no
+// more threads than jobs, and threads the system refuses said before any job.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -24,7 +32,60 @@ std::uint64_t busy(std::size_t i) {
     return h;
 }
 
+// This process's address space in bytes (/proc/self/statm's first field, in pages).
+std::size_t address_space() {
+    std::size_t pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    return pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+}
+
 }  // namespace
+
+// Issue 38: --jobs 1500 for 5 jobs started 1500 threads, each with its
+// stack; under a memory limit the batch failed for threads it never needed.
+// Under room for about 25 stacks, 1500 threads asked for 1, 3 and 5 jobs run
+// them all (run in a child: the limit is the process's).
+TEST(Batch, NoMoreThreadsStartThanJobs) {
+    const auto child = [&] {
+        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
+        setrlimit(RLIMIT_AS, &limit);
+        for (std::size_t n : {1, 3, 5}) {
+            std::vector<std::size_t> delivered;
+            try {
+                run_ordered<std::size_t>(
+                    n, PoolOptions{1500}, [](std::size_t i) { return i * i; },
+                    [&](std::size_t i, std::size_t& r) { delivered.push_back(r == i * i ? i : n + 1); });
+            } catch (const std::exception&) {
+                std::_Exit(1);
+            }
+            if (delivered.size() != n || (n > 0 && delivered.back() != n - 1)) std::_Exit(2);
+        }
+        std::_Exit(3);
+    };
+    EXPECT_EXIT(child(), ::testing::ExitedWithCode(3), "");
+}
+
+// Threads the system refuses: ThreadsUnavailable naming --jobs, and no job
+// run, so that nothing is half done (run in a child: the limit is the process's).
+TEST(Batch, ThreadsThatCannotStartAreSaidBeforeAnyJobRuns) {
+    // The child's work, out of the macro (whose arguments cannot hold commas).
+    const auto child = [&] {
+        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
+        setrlimit(RLIMIT_AS, &limit);  // room for about 25 stacks of 8 MiB
+        std::atomic<int> ran{0};
+        try {
+            run_ordered<int>(
+                2000, PoolOptions{1500}, [&](std::size_t) { return ++ran; }, [](std::size_t, int&) {});
+            std::_Exit(1);
+        } catch (const ThreadsUnavailable& e) {
+            const std::string what = e.what();
+            const bool named = what.find("--jobs: 1500 threads were needed") != std::string::npos &&
+                               what.find("no job was run") != std::string::npos;
+            std::_Exit(!named ? 2 : ran.load() != 0 ? 4 : 3);
+        }
+    };
+    EXPECT_EXIT(child(), ::testing::ExitedWithCode(3), "");
+}
 
 TEST(Batch, ResultsComeInTheJobsOrderAndEqualOneThreads) {
     const std::size_t n = 500;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <stdlib.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -20,6 +22,7 @@
 #include "batch/cache.hpp"
 #include "batch/engine.hpp"
 #include "batch/manifest.hpp"
+#include "batch/pool.hpp"
 #include "batch/progress.hpp"
 #include "batch/results_file.hpp"
 #include "batch/sha256.hpp"
@@ -87,6 +90,75 @@ TEST(BatchEngine, CsvCellsAreReadAsRfc4180WithSpacesAroundDropped) {
     EXPECT_THROW(split_csv_line("\"b\"c,d"), std::invalid_argument);
     for (const std::string cell : {"plain", "with, comma", "with \"quote\"", " lead", "", "q=2"})
         EXPECT_EQ(split_csv_line(csv_cell(cell) + ",x"), (V{cell, "x"})) << cell;
+}
+
+// Issue 38, RFC 4180: a quoted cell's line break split its row into an error
+// row and a phantom job that ran.  Now the break is the cell's, the row is
+// known by the line it starts on, and a quote never closed refuses the file.
+TEST(BatchEngine, AQuotedLineBreakBelongsToItsCellAndTheRowToTheLineItStartsOn) {
+    using V = std::vector<std::string>;
+    const Manifest m = Manifest::parse(
+        "id,record\n\"two\nlines\",a.txt\nb,\"say \"\"hi\"\"\"\r\n \"x\r\ny\" ,\"c\n\n# not a comment.txt\"\r\nd,e.txt\n",
+        "m.csv");
+    ASSERT_EQ(m.size(), 4u);
+    EXPECT_EQ(m.line(0), 2);
+    EXPECT_EQ(split_csv_line(m.text(0)), (V{"two\nlines", "a.txt"}));
+    EXPECT_EQ(m.line(1), 4);
+    EXPECT_EQ(split_csv_line(m.text(1)), (V{"b", "say \"hi\""}));
+    EXPECT_EQ(m.line(2), 5);  // a blank line and a '#' inside a quoted cell are the cell's
+    EXPECT_EQ(split_csv_line(m.text(2)), (V{"x\r\ny", "c\n\n# not a comment.txt"}));
+    EXPECT_EQ(m.line(3), 9);
+    EXPECT_EQ(split_csv_line(m.text(3)), (V{"d", "e.txt"}));
+    auto refused = [](const std::string& text, const std::string& says) {
+        try {
+            Manifest::parse(text, "m.csv");
+            ADD_FAILURE() << "accepted: " << text;
+        } catch (const ManifestError& e) {
+            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+        }
+    };
+    // Never closed: every row after it would be one cell, so none runs.
+    refused("id,record\nok,r.txt\nx,\"r.txt\nnext,r.txt\n",
+            "m.csv:3: the row has an unterminated quote: the quoted cell opened on line 3 is never closed");
+    refused("id,record\n\"a\nb\",\"c\nd\n", "m.csv:2: the row has an unterminated quote: the quoted cell opened on line 3");
+    refused("\"id\n,record\n", "m.csv:1: the header row has an unterminated quote");
+    // A closing quote followed by text is the row's error, not the file's (split_csv_line says it).
+    EXPECT_EQ(Manifest::parse("id,record\n\"a\"b,r.txt\nc,r.txt\n", "m.csv").size(), 2u);
+    for (const std::string cell : {"two\nlines", "cr\rhere", "x\r\ny", "\n"}) {
+        EXPECT_EQ(csv_cell(cell).front(), '"') << cell;
+        EXPECT_EQ(split_csv_line(csv_cell(cell) + ",x"), (V{cell, "x"})) << cell;
+    }
+}
+
+TEST(BatchEngine, AByteOrderMarkAtTheHeadIsSkipped) {
+    const std::string text = "\xEF\xBB\xBFid,record\nx,r.txt\n";
+    const Manifest m = Manifest::parse(text, "m.csv");
+    EXPECT_EQ(m.header(), (std::vector<std::string>{"id", "record"}));
+    ASSERT_EQ(m.size(), 1u);
+    EXPECT_EQ(m.line(0), 2);
+    EXPECT_EQ(m.digest(), sha256_hex(text));  // the file's bytes, the mark included
+    EXPECT_EQ(Manifest::parse("\xEF\xBB\xBF# c\n\xEF\xBB\xBFid\n", "m.csv").header(),
+              (std::vector<std::string>{"\xEF\xBB\xBFid"}))
+        << "only a mark at the file's head is skipped";
+}
+
+// Relative records of a manifest read from a descriptor resolve from the
+// current folder (/dev holds no records), and the messages say which folder.
+TEST(BatchEngine, TheFolderOfRelativeRecordsIsSaid) {
+    const std::string dir = temp_dir();
+    std::ofstream(dir + "/m.csv") << "record\n";
+    std::filesystem::create_directory(dir + "/links");
+    std::filesystem::create_symlink(dir + "/m.csv", dir + "/links/m.csv");
+    EXPECT_EQ(Manifest::folder_of(dir + "/m.csv").path, dir);
+    EXPECT_EQ(Manifest::folder_of(dir + "/m.csv").said, dir + ", the manifest's folder");
+    EXPECT_EQ(Manifest::folder_of(dir + "/links/m.csv").path, dir + "/links");
+    EXPECT_EQ(Manifest::folder_of(dir + "/links/m.csv").said,
+              dir + "/links, the folder of the link " + dir + "/links/m.csv, not of the file it points to");
+    const std::string here = std::filesystem::current_path().string();
+    EXPECT_EQ(Manifest::folder_of("/dev/stdin").path, ".");
+    EXPECT_EQ(Manifest::folder_of("/dev/stdin").said,
+              here + ", the current folder, as the manifest is read from /dev/stdin, not from a file in a folder");
+    EXPECT_EQ(Manifest::read(dir + "/links/m.csv").folder_said(), Manifest::folder_of(dir + "/links/m.csv").said);
 }
 
 TEST(BatchEngine, TheManifestsJobsAreItsDataLinesWithTheirNumbers) {
@@ -228,7 +300,17 @@ TEST(BatchEngine, AResumeIsRefusedForAnotherManifestOrADamagedFile) {
     {
         // Two batches on one results file: the second is refused while the first runs.
         ResultsFile first({out, true}, kHeader, kDigest, 7);
-        refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7); }, "another run is writing");
+        refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7); }, "is being written by another run");
+        // Without --resume too: "add --resume" would lead to the lock (issue 38), so the lock is said first.
+        try {
+            ResultsFile({out, false}, kHeader, kDigest, 7);
+            ADD_FAILURE() << "a second run on a locked partial file";
+        } catch (const ResultsError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("is being written by another run, which holds its lock: wait for that run to end"),
+                      std::string::npos) << what;
+            EXPECT_EQ(what.find("Add --resume"), std::string::npos) << what;
+        }
     }
     // A byte of a counted row changed: its checksum no longer holds.
     std::string text = slurp(out + ".partial");
@@ -237,6 +319,79 @@ TEST(BatchEngine, AResumeIsRefusedForAnotherManifestOrADamagedFile) {
     refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7); }, "do not match the checksum");
     std::ofstream(out + ".partial.state", std::ios::trunc) << "nonsense\n";
     refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7); }, "not a state file of rocking batch");
+}
+
+// Issue 38, item 2: a record edited between a kill and --resume gave a file
+// of rows from both versions, exit 0.  The header keeps each record's
+// SHA-256; a resume, or a --resume finding the results complete, refuses
+// any that differs now, naming it.
+TEST(BatchEngine, AResumeIsRefusedWhenARecordTheJobsReadHasChanged) {
+    auto refused = [](const std::function<void()>& make, const std::string& says) {
+        try {
+            make();
+            ADD_FAILURE() << "not refused: wanted '" << says << "'";
+        } catch (const ResultsError& e) {
+            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+        }
+    };
+    const std::string a(64, '1'), b(64, '2'), c(64, '3');
+    const std::vector<InputDigest> inputs = {{"r1.txt", a}, {"dir/r 2.txt", b}};
+    const std::string dir = temp_dir(), out = dir + "/r.csv";
+    auto begin = [&](const std::vector<InputDigest>& begun_with) {
+        std::filesystem::remove(out + ".partial");
+        std::filesystem::remove(out + ".partial.state");
+        ResultsFile f({out, false, 1e9}, kHeader, kDigest, 7, begun_with);
+        for (std::size_t i = 0; i < 3; ++i) f.append(row(i), false);
+        f.flush();
+    };
+    begin(inputs);
+    EXPECT_EQ(slurp(out + ".partial").substr(0, 200),
+              ("# manifest sha256: " + kDigest + "\n# record sha256: " + a + " r1.txt\n# record sha256: " + b +
+               " dir/r 2.txt\n" + kHeader + row(0) + "\n")
+                  .substr(0, 200));
+    EXPECT_EQ(ResultsFile({out, true}, kHeader, kDigest, 7, inputs).done(), 3u);  // the same records: resumed
+    const std::string since = "dir/r 2.txt, a record the manifest names, has changed since " + out + ".partial was begun";
+    refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7, {{"r1.txt", a}, {"dir/r 2.txt", c}}); },
+            since + " (its sha256 was " + b + ", it is now " + c + "): the rows written were computed from the other file");
+    refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7, {{"r1.txt", a}, {"dir/r 2.txt", "unreadable"}}); },
+            "it is now none (the file could not be read)");
+    refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7, {{"r1.txt", a}, {"dir/r 2.txt", ""}}); },
+            "dir/r 2.txt, a record the manifest names, is not a regular file when resumed (a pipe or a device)");
+    refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7, {{"r1.txt", a}}); },
+            "more records' digests were kept when " + out + ".partial was begun than the manifest names now");
+    // A record read from a pipe when the batch began cannot be proved the same.
+    begin({{"/dev/stdin", ""}});
+    refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7, {{"/dev/stdin", a}}); },
+            "/dev/stdin, a record the manifest names, was not a regular file when " + out + ".partial was begun");
+    // A partial file that kept no digests cannot prove its rows.
+    begin({});
+    refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7, inputs); }, "no sha256 of r1.txt was kept");
+    // Complete results: --resume finds them only if their records are unchanged too.
+    begin(inputs);
+    {
+        ResultsFile f({out, true}, kHeader, kDigest, 7, inputs);
+        for (std::size_t i = 3; i < 7; ++i) f.append(row(i), false);
+        f.finish();
+    }
+    EXPECT_TRUE(ResultsFile({out, true}, kHeader, kDigest, 7, inputs).complete());
+    refused([&] { ResultsFile({out, true}, kHeader, kDigest, 7, {{"r1.txt", c}, {"dir/r 2.txt", b}}); },
+            "r1.txt, a record the manifest names, has changed since " + out + " was written (its sha256 was " + a);
+}
+
+TEST(BatchEngine, ARowWithAQuotedLineBreakIsReadBackWhole) {
+    const std::string dir = temp_dir(), out = dir + "/r.csv";
+    const std::vector<std::string> rows = {"0,plain", "1," + csv_cell("two\nlines") + ",x", "2," + csv_cell("\"\n\"")};
+    {
+        ResultsFile f({out, false}, kHeader, kDigest, rows.size());
+        for (const std::string& r : rows) f.append(r, false);
+        f.finish();
+    }
+    std::vector<std::string> read;
+    ResultsFile::read_rows(out, 2, [&](std::size_t i, const std::string& r) {
+        EXPECT_EQ(i, read.size());
+        read.push_back(r);
+    });
+    EXPECT_EQ(read, rows);
 }
 
 TEST(BatchEngine, AResumeOfCompleteResultsRunsNothingAndAPartialWithoutStateStartsOver) {
@@ -382,6 +537,78 @@ TEST(BatchEngine, CollectGivesEveryRowOnceInOrderInMemoryOrAfterAResume) {
     rows.clear();
     EXPECT_TRUE(run_batch(plan, o, nullptr).already_complete);
     EXPECT_EQ(rows, expected) << "a resume of the finished file";
+}
+
+namespace {
+
+std::size_t address_space() {
+    std::size_t pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    return pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+}
+
+}  // namespace
+
+// Issue 38, item 7: --jobs 1500 for 5 jobs started 1500 threads, and under a
+// memory limit failed for threads it never needed.  Here, under room for
+// about 25 stacks (in a child: the limit is the process's), it runs.
+TEST(BatchEngine, TheEngineStartsNoMoreThreadsThanJobsLeft) {
+    const std::string dir = temp_dir();
+    const BatchPlan plan = synthetic_plan(5);
+    const auto child = [&] {
+        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
+        setrlimit(RLIMIT_AS, &limit);
+        EngineOptions o;
+        o.quiet = true;
+        o.threads = 1500;
+        o.output = dir + "/r.csv";
+        try {
+            std::_Exit(run_batch(plan, o, nullptr).ran == 5 ? 3 : 2);
+        } catch (const std::exception&) {
+            std::_Exit(1);
+        }
+    };
+    EXPECT_EXIT(child(), ::testing::ExitedWithCode(3), "");
+    EXPECT_NE(slurp(dir + "/r.csv").find("# end: 5 jobs, 1 failed\n"), std::string::npos);
+}
+
+// Threads the system refuses: no job runs, and a results file begun by this
+// run goes, so that the next plain run is not asked for --resume; a partial
+// file with rows from before stays as it was, to be resumed.
+TEST(BatchEngine, ThreadsThatCannotStartLeaveNoResumeStateBehind) {
+    const std::string dir = temp_dir();
+    const BatchPlan plan = synthetic_plan(2000);
+    {
+        ResultsFile f({dir + "/resumed.csv", false, 1e9}, plan.header, plan.digest, plan.jobs);
+        for (std::size_t i = 0; i < 5; ++i) f.append(plan.run(i).text, plan.run(i).failed);
+        f.flush();
+    }
+    const std::string state_before = slurp(dir + "/resumed.csv.partial.state");
+    // The child's work, out of the macro (whose arguments cannot hold commas).
+    const auto child = [&] {
+        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
+        setrlimit(RLIMIT_AS, &limit);
+        EngineOptions o;
+        o.quiet = true;
+        o.threads = 1500;
+        int code = 0;
+        for (const char* name : {"/fresh.csv", "/resumed.csv"}) {
+            o.output = dir + name;
+            o.resume = std::string(name) == "/resumed.csv";
+            try {
+                run_batch(plan, o, nullptr);
+                std::_Exit(1);
+            } catch (const ThreadsUnavailable& e) {
+                code += std::string(e.what()).find("--jobs: 1500 threads were needed") == std::string::npos;
+            }
+        }
+        std::_Exit(code == 0 ? 3 : 2);
+    };
+    EXPECT_EXIT(child(), ::testing::ExitedWithCode(3), "");
+    EXPECT_FALSE(exists(dir + "/fresh.csv.partial"));
+    EXPECT_FALSE(exists(dir + "/fresh.csv.partial.state"));
+    EXPECT_FALSE(exists(dir + "/fresh.csv"));
+    EXPECT_EQ(slurp(dir + "/resumed.csv.partial.state"), state_before);
 }
 
 TEST(BatchEngine, TheProgressLineSaysDoneFailedRateAndTimeLeft) {

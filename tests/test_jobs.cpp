@@ -11,11 +11,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <string>
 #include <vector>
 
 #include "batch/manifest.hpp"
+#include "batch/sha256.hpp"
 #include "jobs/batch_plan.hpp"
 #include "jobs/job.hpp"
 #include "jobs/record_store.hpp"
@@ -321,6 +323,60 @@ TEST(Jobs, APlansRowsDoNotDependOnTheirOrderOrCompany) {
     EXPECT_NE(jobs::make_plan(m, store).run(0).text.find("manifest line 4: alpha:"), std::string::npos);
     const batch::Manifest unknown = batch::Manifest::parse("kind,record,alpha,mass\n", dir + "/m.csv");
     EXPECT_THROW(jobs::make_plan(unknown, store), std::invalid_argument);
+}
+
+// Issue 38, item 2: the plan keeps each record's SHA-256 for the results'
+// header (a resume then proves the records unchanged), and a record whose
+// bytes change while the batch runs fails its jobs rather than mixing them in.
+TEST(Jobs, APlanKeepsEachRecordsDigestAndRefusesARecordChangedSince) {
+    const std::string dir = temp_dir();
+    write_sine(dir, "a.txt");
+    write_sine(dir, "b.txt");
+    std::ifstream in(dir + "/a.txt", std::ios::binary);
+    const std::string a_bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const batch::Manifest m = batch::Manifest::parse(
+        "record,unit,record_dt,alpha,p\na.txt,g,0.01,0.1,2\n./b.txt,g,0.01,0.1,2\na.txt,g,0.01,0.12,2\n"
+        "none.txt,g,0.01,0.1,2\n" + dir + "/a.txt,g,0.01,0.1,2\nb.txt,g,0.01,0.1,2\n",
+        dir + "/m.csv");
+    jobs::RecordStore store;
+    const batch::BatchPlan plan = jobs::make_plan(m, store);
+    const std::string a = batch::sha256_hex(a_bytes);
+    ASSERT_EQ(plan.inputs.size(), 5u);  // each record cell once, in the order first named
+    const std::vector<std::pair<std::string, std::string>> want = {
+        {"a.txt", a}, {"./b.txt", a}, {"none.txt", "unreadable"}, {dir + "/a.txt", a}, {"b.txt", a}};
+    for (std::size_t k = 0; k < want.size(); ++k) {
+        EXPECT_EQ(plan.inputs[k].name, want[k].first);
+        EXPECT_EQ(plan.inputs[k].digest, want[k].second) << want[k].first;  // a.txt and b.txt hold the same bytes
+    }
+    const std::vector<jobs::NamedRecord> named = jobs::named_records(m);
+    ASSERT_EQ(named.size(), 5u);
+    EXPECT_EQ(named[2].path, dir + "/none.txt");
+    EXPECT_EQ(named[2].line, 5);
+    EXPECT_FALSE(plan.run(0).failed);
+    // b.txt edited (samples x 1.1) after the plan began: its jobs fail, naming it.
+    const records::Record b = records::read_plain(dir + "/b.txt", "g", 0.01);
+    std::FILE* f = std::fopen((dir + "/b.txt").c_str(), "w");
+    for (double v : b.in_g()) std::fprintf(f, "%.17g\n", 1.1 * v);
+    std::fclose(f);
+    const batch::JobRow row = plan.run(1);
+    EXPECT_TRUE(row.failed);
+    EXPECT_NE(row.text.find("manifest line 3: ./b.txt: has changed since the batch began (its sha256 was " + a),
+              std::string::npos) << row.text;
+}
+
+// A relative record that is not there: the message says the folder it was
+// looked for in (issue 38: a manifest read from /dev/stdin or through a link).
+TEST(Jobs, AMissingRelativeRecordNamesTheFolderItWasResolvedFrom) {
+    const std::string dir = temp_dir();
+    const batch::Manifest m =
+        batch::Manifest::parse("record,unit,record_dt,alpha,p\nnone.txt,g,0.01,0.1,2\n/no/such.txt,g,0.01,0.1,2\n",
+                               "m.csv", {dir, dir + ", the folder of the link"});
+    jobs::RecordStore store;
+    const batch::BatchPlan plan = jobs::make_plan(m, store);
+    EXPECT_NE(plan.run(0).text.find("none.txt:0: cannot open the file (No such file or directory); none.txt is resolved "
+                                    "from " + dir + ", the folder of the link\""),
+              std::string::npos) << plan.run(0).text;
+    EXPECT_EQ(plan.run(1).text.find("resolved from"), std::string::npos) << "an absolute path needs no folder";
 }
 
 TEST(Jobs, AResultRowHasTheHeadersColumnsAndQuotesWhatNeedsIt) {

@@ -186,7 +186,7 @@ private:
                 for (std::thread& t : pool) t.join();
             }
         } joiner{pool, mutex, stop, room};
-        for (int k = 0; k < threads; ++k) pool.emplace_back(work);
+        start_threads(pool, static_cast<std::size_t>(threads), work);
 
         std::deque<int> waiting;  // ranks that asked for work
         std::size_t stopped = 0;

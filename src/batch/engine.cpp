@@ -15,6 +15,7 @@
 #include "batch/pool.hpp"
 #include "batch/progress.hpp"
 #include "batch/results_file.hpp"
+#include "batch/sha256.hpp"
 
 namespace rocking::batch {
 
@@ -80,14 +81,17 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
         try {
             file = std::make_unique<ResultsFile>(ResultsOptions{options.output, options.resume, options.flush_seconds,
                                                                  ResultsOptions{}.flush_bytes, options.jobs_from},
-                                                 plan.header, plan.digest, plan.jobs);
+                                                 plan.header, plan.digest, plan.jobs, plan.inputs);
         } catch (...) {
             failure = std::current_exception();
         }
     }
     if (ranks) {
-        // Every rank must run the same jobs: the manifest each read is rank 0's.
-        const bool same = ranks->broadcast(plan.digest) == plan.digest;
+        // Every rank must run the same jobs: the manifest and records each read are rank 0's.
+        Sha256 identity;
+        identity.update(plan.digest);
+        for (const InputDigest& input : plan.inputs) identity.update("\n" + input.name + " " + input.digest);
+        const bool same = ranks->broadcast(identity.hex()) == identity.hex();
         const int status = ranks->agree(failure || !same ? 1 : 0);
         if (status != 0) {
             std::string message;
@@ -98,8 +102,8 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
                     message = e.what();
                 }
             } else if (!same)
-                message = "rank " + std::to_string(ranks->rank()) + " read a manifest other than rank 0's (its sha256 is " +
-                          plan.digest + "): every rank must read the same file";
+                message = "rank " + std::to_string(ranks->rank()) + " read a manifest or records other than rank 0's (the "
+                          "manifest's sha256 is " + plan.digest + "): every rank must read the same files";
             if (!message.empty()) std::fprintf(stderr, "rocking batch: %s\n", message.c_str());
             // Said before any rank ends: mpirun stops the job at the first rank that ends with a
             // non-zero status, and a message not yet written would go with it.
@@ -109,8 +113,11 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
     } else if (failure)
         std::rethrow_exception(failure);
 
-    const std::size_t threads = options.threads < 1 ? 1 : static_cast<std::size_t>(options.threads);
     const std::size_t first = file ? file->done() : 0;
+    // A thread without a job would only take its stack (--jobs 1500 for 5 jobs).
+    const std::size_t threads =
+        std::min(options.threads < 1 ? std::size_t{1} : static_cast<std::size_t>(options.threads),
+                 std::max<std::size_t>(1, plan.jobs - std::min(first, plan.jobs)));
     Progress progress(plan.jobs, first, lead && !options.quiet && stderr_is_terminal());
     // On every rank: the others end by the signal too (on_signal does nothing there).
     const InterruptWatch watch([&](int sig) {
@@ -150,17 +157,22 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
         const std::vector<std::size_t> starts = chunk_starts(first, plan.jobs, threads);
         // The window in chunks: at most `window` rows held, or the pool's 64 chunks a thread.
         const std::size_t window = options.window ? std::max<std::size_t>(1, options.window / kMaxChunk) : 0;
-        run_ordered<std::vector<JobRow>>(
-            starts.size() - 1, PoolOptions{static_cast<int>(threads), window},
-            [&](std::size_t c) {
-                std::vector<JobRow> rows;
-                rows.reserve(starts[c + 1] - starts[c]);
-                for (std::size_t i = starts[c]; i < starts[c + 1]; ++i) rows.push_back(plan.run(i));
-                return rows;
-            },
-            [&](std::size_t c, std::vector<JobRow>& rows) {
-                for (std::size_t k = 0; k < rows.size(); ++k) deliver(starts[c] + k, rows[k]);
-            });
+        try {
+            run_ordered<std::vector<JobRow>>(
+                starts.size() - 1, PoolOptions{static_cast<int>(threads), window},
+                [&](std::size_t c) {
+                    std::vector<JobRow> rows;
+                    rows.reserve(starts[c + 1] - starts[c]);
+                    for (std::size_t i = starts[c]; i < starts[c + 1]; ++i) rows.push_back(plan.run(i));
+                    return rows;
+                },
+                [&](std::size_t c, std::vector<JobRow>& rows) {
+                    for (std::size_t k = 0; k < rows.size(); ++k) deliver(starts[c] + k, rows[k]);
+                });
+        } catch (const ThreadsUnavailable&) {
+            if (file) file->discard_if_empty();
+            throw;
+        }
     }
     if (file) {
         file->finish();

@@ -14,8 +14,10 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "batch/job_row.hpp"
+#include "batch/results_file.hpp"
 #include "batch/ranks.hpp"
 
 namespace rocking::batch {
@@ -24,6 +26,9 @@ struct BatchPlan {
     std::size_t jobs = 0;
     std::string header;  // the results' lines after the digest's, each ending '\n'
     std::string digest;  // the manifest's SHA-256: the results' identity on resume
+    // What the jobs read besides (a batch's records), each with its SHA-256:
+    // kept in the results' header, and checked by a resume (results_file.hpp).
+    std::vector<InputDigest> inputs;
     JobFunction run;     // job i's row; never throws
 };
 
@@ -59,7 +64,10 @@ struct BatchOutcome {
 // the rank that knows why says so on stderr and every rank throws
 // OtherRankFailed once it is said.
 // SIGINT and SIGTERM flush the rows delivered so far and end the process by
-// the signal, after a line on stderr saying how to resume.
+// the signal, after a line on stderr saying how to resume.  No more threads
+// start than there are jobs to run; when they cannot start, ThreadsUnavailable
+// is thrown, and a results file this run began without writing a row is
+// removed, so that the next run is not asked for a --resume.
 BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Ranks* ranks);
 
 }  // namespace rocking::batch

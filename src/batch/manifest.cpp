@@ -1,7 +1,10 @@
 #include "batch/manifest.hpp"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -19,7 +22,45 @@ std::string_view trimmed(std::string_view s) {
     return s.substr(from, s.find_last_not_of(" \t") - from + 1);
 }
 
+std::string absolute(const std::string& folder) {
+    std::error_code error;
+    std::string p = std::filesystem::absolute(folder, error).lexically_normal().string();
+    if (error) return folder;
+    if (p.size() > 1 && p.back() == '/') p.pop_back();  // "/tmp/x/." is "/tmp/x/" once normal
+    return p;
+}
+
 }  // namespace
+
+CsvRecordEnd csv_record_end(std::string_view text, std::size_t at) {
+    CsvRecordEnd r;
+    for (;;) {  // one cell a turn
+        while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
+        if (at < text.size() && text[at] == '"') {
+            const int opened = r.newlines;
+            for (++at;; ++at) {
+                if (at >= text.size()) {
+                    r.closed = false;
+                    r.quote_line = opened;
+                    r.end = text.size();
+                    return r;
+                }
+                if (text[at] == '\n') ++r.newlines;
+                if (text[at] == '"') {
+                    if (at + 1 < text.size() && text[at + 1] == '"') ++at;
+                    else break;
+                }
+            }
+            ++at;  // the closing quote; what follows up to the comma is split_csv_line's to refuse
+        }
+        while (at < text.size() && text[at] != ',' && text[at] != '\n') ++at;
+        if (at >= text.size() || text[at] == '\n') {
+            r.end = at;
+            return r;
+        }
+        ++at;  // the comma
+    }
+}
 
 std::vector<std::string> split_csv_line(std::string_view line) {
     std::vector<std::string> cells;
@@ -51,13 +92,29 @@ std::vector<std::string> split_csv_line(std::string_view line) {
 }
 
 std::string csv_cell(const std::string& cell) {
-    const bool quote = cell.find_first_of(",\"") != std::string::npos ||
+    const bool quote = cell.find_first_of(",\"\n\r") != std::string::npos ||
                        (!cell.empty() && (cell.front() == ' ' || cell.back() == ' ' || cell.front() == '\t' ||
                                           cell.back() == '\t'));
     if (!quote) return cell;
     std::string out = "\"";
     for (char c : cell) out += c == '"' ? std::string("\"\"") : std::string(1, c);
     return out + "\"";
+}
+
+Manifest::Folder Manifest::folder_of(const std::string& path) {
+    struct stat s {};
+    // A descriptor's folder (/dev for /dev/stdin, /dev/fd for <(...)) holds no records of the study,
+    // even when the descriptor is a regular file (rocking batch /dev/stdin < study.csv).
+    const bool descriptor = path.rfind("/dev/", 0) == 0 || path.rfind("/proc/", 0) == 0;
+    if (descriptor || (::stat(path.c_str(), &s) == 0 && !S_ISREG(s.st_mode)))
+        return {".", absolute(".") + ", the current folder, as the manifest is read from " +
+                         (descriptor ? path : "a pipe or a device") + ", not from a file in a folder"};
+    const auto slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    struct stat link {};
+    const bool symlink = ::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode);
+    return {folder, absolute(folder) + (symlink ? ", the folder of the link " + path + ", not of the file it points to"
+                                                : ", the manifest's folder")};
 }
 
 Manifest Manifest::read(const std::string& path) {
@@ -70,46 +127,63 @@ Manifest Manifest::read(const std::string& path) {
         if (text.size() > kMaxBytes) throw ManifestError(path + ": the manifest is larger than 4 GiB");
     }
     if (in.bad()) throw ManifestError(path + ": cannot read the manifest");
-    return parse(std::move(text), path);
+    return parse(std::move(text), path, folder_of(path));
 }
 
 Manifest Manifest::parse(std::string text, const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    return parse(std::move(text), path, {folder, absolute(folder) + ", the manifest's folder"});
+}
+
+Manifest Manifest::parse(std::string text, const std::string& path, const Folder& folder) {
     Manifest m;
     m.path_ = path;
-    const auto slash = path.find_last_of('/');
-    m.folder_ = slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+    m.folder_ = folder.path;
+    m.folder_said_ = folder.said;
     m.text_ = std::move(text);
     m.digest_ = sha256_hex(m.text_);
     bool have_header = false;
-    int line = 0;
-    for (std::size_t at = 0; at < m.text_.size();) {
-        std::size_t end = m.text_.find('\n', at);
-        if (end == std::string::npos) end = m.text_.size();
-        ++line;
-        std::size_t length = end - at;
+    int line = 1;
+    // A byte-order mark is no part of the first column's name (the digest still covers it).
+    std::size_t at = m.text_.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+    while (at < m.text_.size()) {
+        const std::size_t eol = std::min(m.text_.find('\n', at), m.text_.size());
+        const std::string_view physical(m.text_.data() + at, eol - at);
+        if (blank(physical) || trimmed(physical).front() == '#') {  // a comment or a blank line, never inside a row
+            at = eol + 1;
+            ++line;
+            continue;
+        }
+        const CsvRecordEnd end = csv_record_end(m.text_, at);
+        if (!end.closed)
+            throw ManifestError(path + ":" + std::to_string(line) + ": the " + (have_header ? "row" : "header row") +
+                                " has an unterminated quote: the quoted cell opened on line " +
+                                std::to_string(line + end.quote_line) +
+                                " is never closed (a quote inside a quoted cell is written twice)");
+        std::size_t length = end.end - at;
         if (length > 0 && m.text_[at + length - 1] == '\r') --length;
         const std::string_view row(m.text_.data() + at, length);
-        if (!blank(row) && trimmed(row).front() != '#') {
-            if (!have_header) {
-                try {
-                    m.header_ = split_csv_line(row);
-                } catch (const std::invalid_argument& e) {
-                    throw ManifestError(path + ":" + std::to_string(line) + ": the header row has " + e.what());
-                }
-                for (std::size_t c = 0; c < m.header_.size(); ++c) {
-                    if (m.header_[c].empty())
-                        throw ManifestError(path + ":" + std::to_string(line) + ": the header's column " +
-                                            std::to_string(c + 1) + " has no name");
-                    for (std::size_t d = 0; d < c; ++d)
-                        if (m.header_[d] == m.header_[c])
-                            throw ManifestError(path + ":" + std::to_string(line) + ": the header names column '" +
-                                                m.header_[c] + "' twice");
-                }
-                have_header = true;
-            } else
-                m.rows_.push_back({at, length, line});
-        }
-        at = end + 1;
+        if (!have_header) {
+            try {
+                m.header_ = split_csv_line(row);
+            } catch (const std::invalid_argument& e) {
+                throw ManifestError(path + ":" + std::to_string(line) + ": the header row has " + e.what());
+            }
+            for (std::size_t c = 0; c < m.header_.size(); ++c) {
+                if (m.header_[c].empty())
+                    throw ManifestError(path + ":" + std::to_string(line) + ": the header's column " +
+                                        std::to_string(c + 1) + " has no name");
+                for (std::size_t d = 0; d < c; ++d)
+                    if (m.header_[d] == m.header_[c])
+                        throw ManifestError(path + ":" + std::to_string(line) + ": the header names column '" +
+                                            m.header_[c] + "' twice");
+            }
+            have_header = true;
+        } else
+            m.rows_.push_back({at, length, line});
+        line += 1 + end.newlines;
+        at = end.end + 1;
     }
     if (!have_header) throw ManifestError(path + ": the manifest has no header row (the first line that is not blank or a '#' comment)");
     return m;

@@ -4,9 +4,13 @@
 // line number for messages, and the file's SHA-256 identifies it on resume.
 //
 // Lines starting with '#' and blank lines are skipped (comments); the first
-// other line is the header.  Cells follow RFC 4180 (a cell with a comma or a
-// quote is quoted, "" inside for a quote), one row a line; spaces around a
-// cell are dropped.  The whole file is held (about 100 bytes a job, plus 16
+// other line is the header.  Rows follow RFC 4180: a cell holding a comma, a
+// quote or a line break is quoted, "" inside for a quote, and a quoted line
+// break belongs to the cell, so that a row may span lines (it is known by the
+// line it starts on).  Spaces around a cell are dropped; a UTF-8 byte-order
+// mark at the head is skipped; CRLF ends a row as LF does.  A quote never
+// closed is refused with the whole manifest: every row after it would be
+// read into one cell.  The whole file is held (about 100 bytes a job, plus 16
 // for its index): a manifest of 10^6 jobs takes about 120 MB.
 #pragma once
 
@@ -26,19 +30,32 @@ struct ManifestError : std::runtime_error {
 
 class Manifest {
 public:
+    // The folder relative record paths are resolved against, and how the
+    // messages say it (absolute, and why that folder).
+    struct Folder {
+        std::string path, said;
+    };
+    // The manifest's own folder, as its path names it (a link's, not its
+    // target's); the current folder for a manifest that is not a regular
+    // file (/dev/stdin, a pipe), whose folder holds no records.
+    static Folder folder_of(const std::string& path);
     // Reads the file (up to kMaxBytes); throws ManifestError naming it.
     static Manifest read(const std::string& path);
-    // The same from text already read (tests); `path` names it.
+    // The same from text already read (tests); `path` names it, and gives
+    // the folder unless one is given.
     static Manifest parse(std::string text, const std::string& path);
+    static Manifest parse(std::string text, const std::string& path, const Folder& folder);
     static constexpr std::size_t kMaxBytes = std::size_t{4} << 30;
 
     const std::string& path() const { return path_; }
     // The folder relative paths in the manifest are resolved against: the
     // manifest's own ("." for a bare file name).
     const std::string& folder() const { return folder_; }
+    // That folder for the messages: "/abs/dir, the manifest's folder".
+    const std::string& folder_said() const { return folder_said_; }
     const std::vector<std::string>& header() const { return header_; }
     std::size_t size() const { return rows_.size(); }
-    int line(std::size_t job) const { return rows_[job].line; }
+    int line(std::size_t job) const { return rows_[job].line; }  // where its row starts
     std::string_view text(std::size_t job) const;
     // The file's SHA-256, 64 hex digits.
     const std::string& digest() const { return digest_; }
@@ -49,16 +66,29 @@ private:
         std::size_t length;
         int line;
     };
-    std::string path_, folder_, text_, digest_;
+    std::string path_, folder_, folder_said_, text_, digest_;
     std::vector<std::string> header_;
     std::vector<Row> rows_;
 };
 
-// The cells of one CSV line, spaces around each dropped; throws
-// std::invalid_argument on an unterminated quote or text after a closing one.
+// Where the CSV row starting at `at` ends: the line break outside quotes, or
+// the text's end; `newlines` counts the line breaks inside its quoted cells.
+// Not closed: a quoted cell runs to the end, opened `quote_line` lines below
+// the row's first.
+struct CsvRecordEnd {
+    std::size_t end = 0;
+    int newlines = 0;
+    bool closed = true;
+    int quote_line = 0;
+};
+CsvRecordEnd csv_record_end(std::string_view text, std::size_t at);
+
+// The cells of one CSV row (its quoted cells may hold line breaks), spaces
+// around each dropped; throws std::invalid_argument on an unterminated quote
+// or text after a closing one.
 std::vector<std::string> split_csv_line(std::string_view line);
-// A cell as CSV writes it: quoted when it holds a comma, a quote or spaces at
-// either end (which reading would drop).
+// A cell as CSV writes it: quoted when it holds a comma, a quote, a line
+// break or spaces at either end (which reading would drop).
 std::string csv_cell(const std::string& cell);
 
 }  // namespace rocking::batch

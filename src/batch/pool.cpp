@@ -23,6 +23,20 @@ int default_threads() {
     return n > 0 ? static_cast<int>(n) : 1;
 }
 
+void start_threads(std::vector<std::thread>& pool, std::size_t count, const std::function<void()>& work) {
+    pool.reserve(count);
+    for (std::size_t k = 0; k < count; ++k) {
+        try {
+            pool.emplace_back(work);
+        } catch (const std::system_error& e) {
+            throw ThreadsUnavailable("--jobs: " + std::to_string(count) + " threads were needed and the system " +
+                                     "refused one after " + std::to_string(k) + " had started (" + e.code().message() +
+                                     ": a limit on processes, ulimit -u, or on memory, ulimit -v, of which each "
+                                     "thread's stack takes 8 MiB); no job was run: give a smaller --jobs");
+        }
+    }
+}
+
 int parse_threads(const std::string& text) {
     errno = 0;
     char* end = nullptr;

@@ -11,13 +11,16 @@
 // holds 10^6 results.
 #pragma once
 
+#include <algorithm>
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
 #include <functional>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -31,22 +34,36 @@ int default_threads();
 // naming the value otherwise.
 int parse_threads(const std::string& text);
 
+// The threads asked for could not all be started (a limit on processes or
+// memory): what() names --jobs, how many started and why, and the remedy.
+// No job has run.
+struct ThreadsUnavailable : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Starts `count` threads running `work` into `pool`, or throws
+// ThreadsUnavailable once the system refuses one; the threads already
+// started stay in `pool`, for the caller to stop and join.
+void start_threads(std::vector<std::thread>& pool, std::size_t count, const std::function<void()>& work);
+
 struct PoolOptions {
     int threads = 1;          // 1: every job in the calling thread, no thread started
     std::size_t window = 0;   // results held at most; 0: 64 per thread
 };
 
-// Calls job(i) for i = 0 .. n - 1 on options.threads threads, each idle
+// Calls job(i) for i = 0 .. n - 1 on options.threads threads (never more
+// than n: a thread without a job would only cost its stack), each idle
 // thread taking the next index, and deliver(i, result) in the calling thread
 // for i = 0, 1, 2, ... in order.  A job that throws stops the handing out of
 // new jobs; the results before it are delivered, the running jobs finish, and
 // its exception is rethrown: the same results and the same exception as a
-// loop over i in one thread.
+// loop over i in one thread.  No job starts before every thread has: when
+// one cannot, ThreadsUnavailable is thrown and no job has run.
 template <class Result>
 void run_ordered(std::size_t n, const PoolOptions& options, const std::function<Result(std::size_t)>& job,
                  const std::function<void(std::size_t, Result&)>& deliver) {
-    const int threads = options.threads < 1 ? 1 : options.threads;
-    if (threads == 1 || n <= 1) {
+    const std::size_t threads = std::min<std::size_t>(options.threads < 1 ? 1 : options.threads, n);
+    if (threads <= 1) {
         for (std::size_t i = 0; i < n; ++i) {
             Result r = job(i);
             deliver(i, r);
@@ -63,14 +80,14 @@ void run_ordered(std::size_t n, const PoolOptions& options, const std::function<
     std::mutex mutex;
     std::condition_variable job_done, slot_freed;
     std::size_t next = 0, delivered = 0;
-    bool stop = false;
+    bool stop = false, go = false;
 
     auto work = [&] {
         for (;;) {
             std::size_t i;
             {
                 std::unique_lock<std::mutex> lock(mutex);
-                slot_freed.wait(lock, [&] { return stop || next >= n || next < delivered + window; });
+                slot_freed.wait(lock, [&] { return stop || (go && (next >= n || next < delivered + window)); });
                 if (stop || next >= n) return;
                 i = next++;
             }
@@ -108,7 +125,12 @@ void run_ordered(std::size_t n, const PoolOptions& options, const std::function<
                 if (t.joinable()) t.join();
         }
     } joiner{pool, mutex, stop, slot_freed};
-    for (int k = 0; k < threads; ++k) pool.emplace_back(work);
+    start_threads(pool, threads, work);
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        go = true;
+    }
+    slot_freed.notify_all();
 
     for (std::size_t i = 0; i < n; ++i) {
         std::optional<Result> result;

@@ -12,11 +12,14 @@
 #include <sstream>
 #include <vector>
 
+#include "batch/manifest.hpp"
+
 namespace rocking::batch {
 
 namespace {
 
 const char kDigestLine[] = "# manifest sha256: ";
+const char kInputLine[] = "# record sha256: ";
 const char kStateLine[] = "rocking batch state:";
 
 bool exists(const std::string& path) {
@@ -41,12 +44,36 @@ std::string slurp(const std::string& path) {
     return text.str();
 }
 
+std::string input_line(const InputDigest& input) {
+    std::string name = input.name;  // one line, whatever the file's name
+    for (std::size_t at = 0; (at = name.find_first_of("\r\n", at)) != std::string::npos; at += 2)
+        name.replace(at, 1, name[at] == '\n' ? "\\n" : "\\r");
+    return kInputLine + (input.digest.empty() ? std::string(kUnverifiable) : input.digest) + " " + name;
+}
+
+// Whether another process holds the partial file's lock: a run still writing it.
+bool locked_by_another(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool locked = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+    ::close(fd);  // and the lock taken, if it was
+    return locked;
+}
+
+// A resume's first word on a partial file another run holds.
+std::string held_by_another(const std::string& partial) {
+    return partial + " is being written by another run, which holds its lock: wait for that run to end (a --resume "
+                     "then completes whatever it leaves), or give another --output";
+}
+
 }  // namespace
 
 ResultsFile::ResultsFile(const ResultsOptions& options, const std::string& header, const std::string& digest,
-                         std::size_t jobs)
-    : options_(options), jobs_(jobs), last_flush_(std::chrono::steady_clock::now()) {
-    const std::string preamble = kDigestLine + digest + "\n" + header;
+                         std::size_t jobs, const std::vector<InputDigest>& inputs)
+    : options_(options), jobs_(jobs), inputs_(inputs), last_flush_(std::chrono::steady_clock::now()) {
+    std::string preamble = kDigestLine + digest + "\n";
+    for (const InputDigest& input : inputs_) preamble += input_line(input) + "\n";
+    preamble += header;
     try {
         open(preamble, digest);
     } catch (...) {
@@ -67,6 +94,7 @@ void ResultsFile::open(const std::string& preamble, const std::string& digest) {
         throw ResultsError(options_.path + ": not a regular file (the results are written beside it as " + partial_path() +
                            ", then renamed)");
     if (!options_.resume) {
+        if (exists(partial_path()) && locked_by_another(partial_path())) throw ResultsError(held_by_another(partial_path()));
         if (exists(partial_path()))
             throw ResultsError(partial_path() + " exists: an interrupted batch's results. Add --resume to complete it, or "
                                "remove " + partial_path() + " and " + state_path() + " to start over");
@@ -99,8 +127,7 @@ void ResultsFile::start_fresh(const std::string& preamble) {
     if (fd_ < 0) {
         fd_ = ::open(partial_path().c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
         if (fd_ < 0) throw ResultsError(partial_path() + ": cannot create: " + why(errno));
-        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0)
-            throw ResultsError(partial_path() + ": another run is writing these results (the file is locked)");
+        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) throw ResultsError(held_by_another(partial_path()));
     }
     if (::ftruncate(fd_, 0) != 0 || ::lseek(fd_, 0, SEEK_SET) != 0)
         throw ResultsError(partial_path() + ": cannot write: " + why(errno));
@@ -116,8 +143,7 @@ void ResultsFile::start_fresh(const std::string& preamble) {
 bool ResultsFile::resume_partial(const std::string& digest) {
     fd_ = ::open(partial_path().c_str(), O_RDWR | O_CLOEXEC);
     if (fd_ < 0) throw ResultsError(partial_path() + ": cannot open: " + why(errno));
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0)
-        throw ResultsError(partial_path() + ": another run is writing these results (the file is locked)");
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) throw ResultsError(held_by_another(partial_path()));
     if (!exists(state_path())) return false;
     const std::string state = slurp(state_path());
     unsigned long long jobs = 0, failed = 0, bytes = 0;
@@ -142,6 +168,8 @@ bool ResultsFile::resume_partial(const std::string& digest) {
                            "): the rows written are another " + options_.jobs_from + "'s jobs. Run the " + options_.jobs_from +
                            " it was begun with, or "
                            "remove " + partial_path() + " and " + state_path() + " to start over");
+    check_inputs(std::string(kept.begin(), kept.end()), partial_path() + " was begun",
+                 "remove " + partial_path() + " and " + state_path() + " to start over");
     if (jobs > jobs_ || failed > jobs)
         throw ResultsError(state_path() + ": counts " + std::to_string(jobs) + " jobs, more than the " + options_.jobs_from + "'s " +
                            std::to_string(jobs_));
@@ -169,10 +197,51 @@ void ResultsFile::check_complete(const std::string& digest) {
         throw ResultsError(options_.path + ": no '# end: " + std::to_string(jobs_) +
                            " jobs' line closes it: not a complete results file, and no " + partial_path() +
                            " to resume; run without --resume to replace it");
+    check_inputs(text, options_.path + " was written", "run without --resume to replace it");
     ::unlink(state_path().c_str());  // a kill between the last rename and this removal left it
     done_ = written_done_ = jobs;
     failed_ = written_failed_ = failed;
     complete_ = true;
+}
+
+void ResultsFile::check_inputs(const std::string& text, const std::string& since, const std::string& remedy) const {
+    // A digest as the messages say it: the hex digits, or why there are none.
+    auto said = [](const std::string& digest) {
+        return digest.size() == 64 ? digest : digest == "unreadable" ? "none (the file could not be read)" : digest;
+    };
+    std::istringstream in(text);
+    std::string line;
+    std::getline(in, line);  // the manifest's digest, checked before
+    for (const InputDigest& input : inputs_) {
+        if (!std::getline(in, line) || line.rfind(kInputLine, 0) != 0)
+            throw ResultsError("no sha256 of " + input.name + " was kept when " + since + " (by a rocking before " +
+                               "records' digests were kept): a resume cannot prove that the rows written were computed " +
+                               "from the records as they are now; " + remedy);
+        std::string was = line.substr(sizeof kInputLine - 1);
+        was = was.substr(0, was.find(' '));
+        if (input.digest.empty() || was == kUnverifiable)
+            throw ResultsError(input.name + ", a record the " + options_.jobs_from + " names, " +
+                               (input.digest.empty() ? "is" : "was") + " not a regular file when " +
+                               (input.digest.empty() ? "resumed" : since) +
+                               " (a pipe or a device): what the rows written were computed from cannot be read again " +
+                               "to prove it unchanged, so they cannot be resumed; " + remedy);
+        if (line != input_line(input))
+            throw ResultsError(input.name + ", a record the " + options_.jobs_from + " names, has changed since " + since +
+                               " (its sha256 was " + said(was) + ", it is now " + said(input.digest) +
+                               "): the rows written were computed from the other file. Put that file back, or " + remedy);
+    }
+    if (std::getline(in, line) && line.rfind(kInputLine, 0) == 0)
+        throw ResultsError("more records' digests were kept when " + since + " than the " + options_.jobs_from +
+                           " names now; " + remedy);
+}
+
+void ResultsFile::discard_if_empty() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (options_.path.empty() || fd_ < 0 || done_ > 0 || written_done_ > 0) return;
+    ::unlink(state_path().c_str());
+    ::unlink(partial_path().c_str());
+    ::close(fd_);  // the lock last: no other run finds the files half gone
+    fd_ = -1;
 }
 
 void ResultsFile::append(const std::string& row, bool failed) {
@@ -261,6 +330,8 @@ void ResultsFile::read_rows(const std::string& path, std::size_t header_lines,
     std::size_t rows = 0;
     while (std::getline(in, line)) {
         if (line.rfind("# end: ", 0) == 0) return;
+        // A quoted cell's line break belongs to the row (RFC 4180).
+        for (std::string more; !csv_record_end(line, 0).closed && std::getline(in, more);) line += "\n" + more;
         row(rows++, line);
     }
     throw ResultsError(path + ": has no end line: not a finished results file");

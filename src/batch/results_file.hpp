@@ -17,6 +17,11 @@
 //
 // The file's first line is '# manifest sha256: HEX': a resume on a manifest
 // whose digest differs is refused, since its jobs are not the ones counted.
+// Then one line '# record sha256: HEX NAME' for each input the jobs read
+// besides (a batch's records): a resume, or a --resume that finds the file
+// complete, is refused naming the first whose digest differs now, and any
+// that is not a regular file (its digest is "unverifiable": a pipe cannot
+// be read again to prove what the first part read).
 // Resuming keeps the header already written and appends the rows after it,
 // so that a resumed batch ends with the same bytes as one never interrupted.
 // Without a path the rows go to standard output, and nothing can be resumed.
@@ -28,6 +33,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "batch/sha256.hpp"
 
@@ -38,6 +44,16 @@ namespace rocking::batch {
 struct ResultsError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+
+// An input of the jobs besides the manifest, as the results' header keeps it:
+// its name as the manifest gives it, and the SHA-256 of its bytes (64 hex
+// digits, or a word and a reason for a file that could not be read, whose
+// absence is then what a resume checks); "" when it is not a regular file.
+struct InputDigest {
+    std::string name;
+    std::string digest;
+};
+constexpr char kUnverifiable[] = "unverifiable";
 
 struct ResultsOptions {
     std::string path;       // "" for standard output
@@ -56,7 +72,8 @@ public:
     // `header`: the lines after the digest's, each ending with '\n'.
     // Throws ResultsError when the files cannot be made, when a partial file
     // exists and resume is off, and when a resume is refused.
-    ResultsFile(const ResultsOptions& options, const std::string& header, const std::string& digest, std::size_t jobs);
+    ResultsFile(const ResultsOptions& options, const std::string& header, const std::string& digest, std::size_t jobs,
+                const std::vector<InputDigest>& inputs = {});
     ~ResultsFile();
     ResultsFile(const ResultsFile&) = delete;
     ResultsFile& operator=(const ResultsFile&) = delete;
@@ -71,6 +88,9 @@ public:
     void flush();
     // Every job written: the end line, and the file moves to its path.
     void finish();
+    // A run that wrote no row (its threads could not start): OUT.partial and
+    // its state go, so that they do not ask the next run for a --resume.
+    void discard_if_empty();
     // A finished results file's rows, in order, to `row`: the lines after
     // the digest's and `header_lines` more, up to the end line.  Throws
     // ResultsError when it cannot be read or does not end as a finished one.
@@ -87,9 +107,14 @@ private:
     void start_fresh(const std::string& preamble);
     bool resume_partial(const std::string& digest);
     void check_complete(const std::string& digest);
+    // The inputs' lines of a results file begun (`text` from its first line)
+    // against this run's; throws naming the first that differs, when and
+    // since what ("r.csv.partial was begun"), and the remedy.
+    void check_inputs(const std::string& text, const std::string& since, const std::string& remedy) const;
 
     ResultsOptions options_;
     std::size_t jobs_ = 0;
+    std::vector<InputDigest> inputs_;
     mutable std::mutex mutex_;
     int fd_ = -1;
     std::string held_;

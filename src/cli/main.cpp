@@ -5,6 +5,7 @@
 #include <iostream>
 #include <string>
 
+#include "batch/pool.hpp"
 #include "batch/ranks.hpp"
 #include "cli/cluster_front.hpp"
 #include "cli/options.hpp"
@@ -175,6 +176,10 @@ int run(int argc, char** argv) {
         return e.status;  // under mpirun, a rank other than the one that said why
     } catch (const rocking::batch::OtherRankFailed& e) {
         return e.status;
+    } catch (const rocking::batch::ThreadsUnavailable& e) {
+        // --jobs asked for more threads than this system gives: the command line's to change.
+        std::cerr << "rocking " << command << ": " << e.what() << "\n";
+        return 2;
     } catch (const UsageError& e) {
         // Under mpirun every copy finds the same bad argument: rank 0 says it.
         if (rocking::batch::launched_by_mpirun() && !first_rank()) return 2;

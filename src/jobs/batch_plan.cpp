@@ -1,7 +1,10 @@
 #include "jobs/batch_plan.hpp"
 
+#include <unistd.h>
+
 #include <memory>
 #include <stdexcept>
+#include <unordered_set>
 
 #include "jobs/job.hpp"
 #include "jobs/result_row.hpp"
@@ -9,7 +12,43 @@
 
 namespace rocking::jobs {
 
+namespace {
+
+// A relative record that is not there: where it was looked for, since the
+// folder is not always the one the user thinks of (a manifest read from
+// /dev/stdin or through a link).
+std::string where_looked(const Job* job, const batch::Manifest& manifest) {
+    if (!job || job->record.cell.front() == '/' || ::access(job->record.path.c_str(), F_OK) == 0) return "";
+    return "; " + job->record.cell + " is resolved from " + manifest.folder_said();
+}
+
+}  // namespace
+
+std::vector<NamedRecord> named_records(const batch::Manifest& manifest) {
+    std::size_t column = manifest.header().size();
+    for (std::size_t c = 0; c < manifest.header().size(); ++c)
+        if (manifest.header()[c] == "record") column = c;
+    std::vector<NamedRecord> named;
+    if (column == manifest.header().size()) return named;
+    std::unordered_set<std::string> seen;
+    for (std::size_t i = 0; i < manifest.size(); ++i) {
+        std::vector<std::string> cells;
+        try {
+            cells = batch::split_csv_line(manifest.text(i));
+        } catch (const std::invalid_argument&) {
+            continue;
+        }
+        if (column >= cells.size() || cells[column].empty() || !seen.insert(cells[column]).second) continue;
+        named.push_back({cells[column], record_path(cells[column], manifest.folder()), manifest.line(i)});
+    }
+    return named;
+}
+
 batch::BatchPlan make_plan(const batch::Manifest& manifest, RecordStore& records) {
+    return make_plan(manifest, records, named_records(manifest));
+}
+
+batch::BatchPlan make_plan(const batch::Manifest& manifest, RecordStore& records, const std::vector<NamedRecord>& named) {
     std::shared_ptr<const Columns> columns;
     try {
         columns = std::make_shared<const Columns>(manifest.header());
@@ -19,6 +58,7 @@ batch::BatchPlan make_plan(const batch::Manifest& manifest, RecordStore& records
     batch::BatchPlan plan;
     plan.jobs = manifest.size();
     plan.digest = manifest.digest();
+    for (const NamedRecord& r : named) plan.inputs.push_back({r.cell, records.pin(r.path)});
     plan.header = results_header(manifest.path(), manifest.size(), manifest.header());
     plan.run = [&manifest, &records, columns](std::size_t i) {
         const int line = manifest.line(i);
@@ -31,7 +71,7 @@ batch::BatchPlan make_plan(const batch::Manifest& manifest, RecordStore& records
             const Figures figures = run_job(*job, records);
             return batch::JobRow{result_row(line, echo, job.get(), &figures, ""), false};
         } catch (const std::exception& e) {
-            const std::string error = "manifest line " + std::to_string(line) + ": " + e.what();
+            const std::string error = "manifest line " + std::to_string(line) + ": " + e.what() + where_looked(job.get(), manifest);
             return batch::JobRow{result_row(line, echo, job.get(), nullptr, error), true};
         }
     };

@@ -5,15 +5,32 @@
 // and the problem, and the batch goes on.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "batch/engine.hpp"
 #include "batch/manifest.hpp"
 #include "jobs/record_store.hpp"
 
 namespace rocking::jobs {
 
+// A record file the manifest names: its cell as written, its path (resolved
+// against the manifest's folder) and the line of the first row naming it.
+struct NamedRecord {
+    std::string cell, path;
+    int line = 0;
+};
+
+// Every record cell of the manifest's rows once, in the order first named
+// (rows that cannot be read, or name none, are skipped: their jobs fail).
+std::vector<NamedRecord> named_records(const batch::Manifest& manifest);
+
 // Throws std::invalid_argument (naming the manifest and the column) for a
-// header the jobs cannot be read under.  The plan refers to `manifest` and
+// header the jobs cannot be read under.  Each named record is read once
+// here for its SHA-256 (plan.inputs, in the results' header; the store then
+// refuses a job on bytes that differ).  The plan refers to `manifest` and
 // `records`, which must outlive it.
 batch::BatchPlan make_plan(const batch::Manifest& manifest, RecordStore& records);
+batch::BatchPlan make_plan(const batch::Manifest& manifest, RecordStore& records, const std::vector<NamedRecord>& named);
 
 }  // namespace rocking::jobs

@@ -63,6 +63,10 @@ std::string Job::solver_text() const {
     return text;
 }
 
+std::string record_path(const std::string& cell, const std::string& folder) {
+    return cell.front() == '/' ? cell : folder + "/" + cell;
+}
+
 namespace {
 
 [[noreturn]] void bad(const std::string& column, const std::string& problem) {
@@ -128,7 +132,7 @@ RecordSource record_from(const Columns& c, const std::vector<std::string>& row, 
     RecordSource r;
     r.cell = c.cell(row, "record");
     if (r.cell.empty()) bad("record", "empty: every job needs a record file");
-    r.path = r.cell.front() == '/' ? r.cell : folder + "/" + r.cell;
+    r.path = record_path(r.cell, folder);
     r.unit = c.cell(row, "unit");
     if (!r.unit.empty() && r.unit != "g" && r.unit != "m/s2" && r.unit != "cm/s2")
         bad("unit", "'" + r.unit + "' is not a unit it knows (g, m/s2, cm/s2)");

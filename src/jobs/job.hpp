@@ -43,6 +43,10 @@ struct RecordSource {
     double dt = 0;     // a one-column plain-text record's step, s
 };
 
+// A record cell (not empty) as a path: an absolute one as it is, a relative
+// one from `folder` (the manifest's; batch::Manifest::folder()).
+std::string record_path(const std::string& cell, const std::string& folder);
+
 struct Scaling {
     enum class By { as_recorded, q, pga } by = By::as_recorded;
     double value = 0;  // q = PGA/(alpha g), or the PGA in g

@@ -1,10 +1,13 @@
 #include "jobs/record_store.hpp"
 
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
 #include "batch/ranks.hpp"
+#include "batch/sha256.hpp"
 #include "dynamics/model.hpp"
 #include "records/record.hpp"
 
@@ -37,6 +40,26 @@ std::string RecordStore::canonical(const std::string& path) {
     return found;
 }
 
+std::string RecordStore::pin(const std::string& path) {
+    const std::string file = canonical(path);
+    {
+        std::lock_guard<std::mutex> lock(pinned_mutex_);
+        const auto it = pinned_.find(file);
+        if (it != pinned_.end()) return it->second;
+    }
+    struct stat s {};
+    if (::stat(file.c_str(), &s) == 0 && !S_ISREG(s.st_mode) && !S_ISDIR(s.st_mode)) return "";
+    std::string digest;
+    try {
+        digest = batch::sha256_hex(records::read_text(file));
+    } catch (const std::exception&) {
+        digest = "unreadable";  // its jobs say why
+    }
+    std::lock_guard<std::mutex> lock(pinned_mutex_);
+    pinned_.emplace(file, digest);
+    return digest;
+}
+
 std::shared_ptr<const dynamics::SampledInput> RecordStore::get(const RecordSource& source) {
     if (refuse_unshareable_ && batch::unshareable_by_ranks(source.path))
         throw std::runtime_error(batch::unshareable_text(source.cell) + " and name that file in the manifest");
@@ -44,10 +67,23 @@ std::shared_ptr<const dynamics::SampledInput> RecordStore::get(const RecordSourc
     char step[40];
     std::snprintf(step, sizeof step, "%.17g", source.dt);
     const std::string key = path + "\n" + source.unit + "\n" + step;
+    std::string pinned;
+    {
+        std::lock_guard<std::mutex> lock(pinned_mutex_);
+        const auto it = pinned_.find(path);
+        if (it != pinned_.end()) pinned = it->second;
+    }
     try {
         return cache_.get(key, [&] {
-            const records::Record r = source.unit.empty() ? records::read_any(path)
-                                                          : records::read_plain(path, source.unit, source.dt);
+            const std::string text = records::read_text(path);
+            if (!pinned.empty() && batch::sha256_hex(text) != pinned)
+                throw std::runtime_error(path + ": has changed since the batch began (its sha256 was " + pinned +
+                                         ", it is now " + batch::sha256_hex(text) +
+                                         "): the results' header names the file as it was");
+            // A unit reads a plain-text record only, as the commands' --unit does.
+            const records::Record r = source.unit.empty() || records::states_its_units(text)
+                                          ? records::parse_any(text, path)
+                                          : records::parse_plain(text, path, source.unit, source.dt);
             return dynamics::SampledInput(r.in_g(dynamics::kGravity), r.dt, r.name);
         });
     } catch (const std::exception& e) {

@@ -25,8 +25,15 @@ public:
     static constexpr std::size_t kDefaultBudget = std::size_t{512} << 20;
     explicit RecordStore(std::size_t budget_bytes = kDefaultBudget);
     // The record, in g.  Throws std::runtime_error with the reader's message,
-    // the file named as the manifest names it.
+    // the file named as the manifest names it, and when its bytes are not
+    // those pin() found.
     std::shared_ptr<const dynamics::SampledInput> get(const RecordSource& source);
+    // The SHA-256 of the file's bytes (64 hex digits), which every read of it
+    // for a job must then find: the rows are computed from the bytes the
+    // results' header names.  "unreadable" for a file that cannot be read
+    // (its jobs fail; its absence is its identity), "" for one that is not a
+    // regular file (a pipe: reading it now would leave nothing for its jobs).
+    std::string pin(const std::string& path);
     std::size_t reads() const { return cache_.loads(); }
     // Under mpirun: every rank refuses a record the ranks cannot share
     // (batch::unshareable_by_ranks, /dev/stdin), so that its jobs' rows do not
@@ -41,6 +48,8 @@ private:
     // folders (a readlink each), a cost per job beside a 20 us simulation.
     std::mutex canonical_mutex_;
     std::unordered_map<std::string, std::string> canonical_;
+    std::mutex pinned_mutex_;
+    std::unordered_map<std::string, std::string> pinned_;  // canonical path: its SHA-256
 };
 
 }  // namespace rocking::jobs
