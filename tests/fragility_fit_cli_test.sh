@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # rocking fragility's fit on equal and censored collapse values (issue 38),
-# on the shared Kocaeli DZC180 record: 1-5 copies of it get one refusal that
+# on the shared Kocaeli DZC180 record and its copies scaled by powers of two
+# (a record given twice is refused; q = PGA/(alpha g) is the record's scale,
+# and 2^k scales every sample and the IDA's factor exactly, so each copy
+# overturns the block at the very same double q): 1-5 of them get one refusal that
 # says why (every collapse at one q, nothing censored above), never a beta
 # from rounding; a bootstrap whose resamples often draw one q only keeps no
 # rounding beta; two copies and a record that never overturns the block (a
@@ -39,16 +42,34 @@ with open(sys.argv[1], "w") as f:
         f.write("".join("%15.7E" % v for v in a[i:i + 5]) + "\n")
 PY
 
+# The copies: DZC180 times 2^k, k = 1, -1, 2, -2, 3, -3, 4, each sample exactly.
+copies=("$k180")
+for k in 1 -1 2 -2 3 -3 4; do
+    $py - "$k180" "$tmp/k180_$k.AT2" "$k" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+scale = 2.0 ** int(sys.argv[3])
+values = [float(v) * scale for line in lines[4:] for v in line.split()]
+with open(sys.argv[2], "w") as f:
+    f.write("\n".join(lines[:4]) + "\n")
+    for i in range(0, len(values), 5):
+        f.write(" ".join(repr(v) for v in values[i:i + 5]) + "\n")
+PY
+    copies+=("$tmp/k180_$k.AT2")
+done
+
 # 1-5 copies: one refusal, the same words each time, exit 0 (an answer about the records).
 why="no fit: every record that overturned did so at the same q = 2.18965822 and no censored record lies above it: ln L grows without bound as beta -> 0 (no spread to fit)"
 files=()
 for n in 1 2 3 4 5; do
-    files+=("$k180")
+    files+=("${copies[$((n - 1))]}")
     check "copies: $n, refused" "$why" "$rocking" fragility "${files[@]}" "${block[@]}"
     status "copies: $n, exit" 0 "$rocking" fragility "${files[@]}" "${block[@]}"
     check_not "copies: $n, no beta" "beta =" "$rocking" fragility "${files[@]}" "${block[@]}"
 done
-check "3 copies bootstrap refused" "$why" "$rocking" fragility "$k180" "$k180" "$k180" "${block[@]}" --bootstrap 100 --seed 1
+check "the refusal in --json, as no_fit" '"fit": null, "no_fit": "every record that overturned did so at the same q = 2.18965822' \
+    "$rocking" fragility "${copies[@]:0:2}" "${block[@]}" --json
+check "3 copies bootstrap refused" "$why" "$rocking" fragility "${copies[@]:0:3}" "${block[@]}" --bootstrap 100 --seed 1
 
 # A censored point above the one q: a fit, checked against an independent maximisation.
 fit_check() {  # description, rocking fragility arguments...
@@ -71,16 +92,24 @@ PY
 check "burst censored" "censored at q_max = 20" "$rocking" fragility "$tmp/burst.AT2" "${block[@]}"
 # Issue 38's case: scipy's censored lognormal MLE gave median 6.09, beta 1.50.
 check "issue's example" "lognormal median q = 6.089949, beta = 1.504204 (2 overturned, 1 censored)" \
-    "$rocking" fragility "$k180" "$k180" "$tmp/burst.AT2" "${block[@]}"
-fit_check "two copies below a censored record" "$k180" "$k180" "$tmp/burst.AT2" "${block[@]}"
-fit_check "one collapse below two censored" "$k180" "$tmp/burst.AT2" "$tmp/burst.AT2" "${block[@]}"
+    "$rocking" fragility "${copies[@]:0:2}" "$tmp/burst.AT2" "${block[@]}"
+fit_check "two copies below a censored record" "${copies[@]:0:2}" "$tmp/burst.AT2" "${block[@]}"
+$py - "$tmp/burst.AT2" "$tmp/burst2.AT2" <<'PY'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+with open(sys.argv[2], "w") as f:
+    f.write("\n".join(lines[:4]) + "\n")
+    for line in lines[4:]:
+        f.write(" ".join(repr(float(v) * 2) for v in line.split()) + "\n")
+PY
+fit_check "one collapse below two censored" "$k180" "$tmp/burst.AT2" "$tmp/burst2.AT2" "${block[@]}"
 # Real records only: IT.NRC HGN (2016-10-26 17:10) first overturns the block at q = 17.8, so at --q-max 15 it is censored.
-fit_check "real record censored at q_max 15" "$k180" "$k180" "$k180" "$n171" "${block[@]}" --q-max 15
+fit_check "real record censored at q_max 15" "${copies[@]:0:3}" "$n171" "${block[@]}" --q-max 15
 
 # The bootstrap.  Eight copies and DZC270: a third of the resamples draw only the copies (no
 # maximum) and are redrawn, so no beta is below the least spread of a resample with DZC270 in
 # it, one draw among nine: ln(q270/q180) sqrt(8)/9.
-"$rocking" fragility "$k180" "$k180" "$k180" "$k180" "$k180" "$k180" "$k180" "$k180" "$k270" "${block[@]}" \
+"$rocking" fragility "${copies[@]:0:8}" "$k270" "${block[@]}" \
     --bootstrap 200 --seed 1 --json >"$tmp/b.json"
 if $py - "$tmp/b.json" <<'PY'
 import json, math, sys
@@ -95,7 +124,7 @@ then echo "ok: bootstrap redraws resamples of one q"; else echo "FAIL: bootstrap
 # Two copies and the burst: a resample holds one or two copies (the others have no maximum),
 # so its beta and median are those of 1 collapse and 2 censored, or of the fit: the interval's
 # ends are exactly those two (each is a third or more of the resamples).
-"$rocking" fragility "$k180" "$k180" "$tmp/burst.AT2" "${block[@]}" --bootstrap 200 --seed 1 --json >"$tmp/c.json"
+"$rocking" fragility "${copies[@]:0:2}" "$tmp/burst.AT2" "${block[@]}" --bootstrap 200 --seed 1 --json >"$tmp/c.json"
 if $py - "$tmp/c.json" "$mle" <<'PY'
 import json, subprocess, sys
 b = json.load(open(sys.argv[1]))["blocks"][0]

@@ -77,4 +77,16 @@ for study in spectrum fragility eq27 collapse; do
         status "$study --dt $dt: exit 2" 2 "$rocking" $study "$tmp/one-column.txt" --unit m/s2 --dt $dt "${more[@]}"
     done
 done
+# A value or a record given twice counts its cases twice (issue 38 item 4, as
+# eq27 refuses it): fragility and spectrum refuse it too, exit 2, before any run.
+cp "$tmp/plain.txt" "$tmp/copy.txt"
+check "fragility: a record given twice by a copy" "the same record as $tmp/plain.txt" \
+    "$rocking" fragility "$tmp/plain.txt" "$tmp/copy.txt" --unit m/s2 --alpha 0.2 --p 3
+status "fragility: a record given twice, exit 2" 2 "$rocking" fragility "$tmp/plain.txt" "$tmp/copy.txt" --unit m/s2 --alpha 0.2 --p 3
+check "fragility: an alpha given twice" "--alpha: 0.2 is given twice" \
+    "$rocking" fragility "$tmp/plain.txt" "$tmp/other.txt" --unit m/s2 --alpha 0.2,0.20 --p 3
+check "fragility: a p given twice" "--p: 3 is given twice" \
+    "$rocking" fragility "$tmp/plain.txt" "$tmp/other.txt" --unit m/s2 --alpha 0.2 --p 3,2,3.0
+check "spectrum: an alpha given twice" "--alpha: 0.1 is given twice" "$rocking" spectrum "$tmp/plain.txt" --unit m/s2 --alpha 0.1,0.1
+status "spectrum: an alpha given twice, exit 2" 2 "$rocking" spectrum "$tmp/plain.txt" --unit m/s2 --alpha 0.1,0.1
 exit $fail

@@ -18,6 +18,7 @@
 #include "batch/pool.hpp"
 #include "batch/ranks.hpp"
 #include "cli/cluster_front.hpp"
+#include "cli/distinct_inputs.hpp"
 #include "cli/options.hpp"
 #include "harness/table.hpp"
 #include "jobs/fragility_plan.hpp"
@@ -164,7 +165,8 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
             }
             js << "]}";
         }
-        js << "], \"fit\": " << fit_json(f) << ", \"empirical\": [";
+        js << "], \"fit\": " << fit_json(f) << ", \"no_fit\": " << (f.fitted ? "null" : json_string(f.no_fit))
+           << ", \"empirical\": [";
         for (std::size_t i = 0; i < f.empirical.size(); ++i)
             js << (i ? ", " : "") << "{\"q\": " << json_number(f.empirical[i].q)
                << ", \"share\": " << json_number(f.empirical[i].share) << "}";
@@ -217,6 +219,8 @@ Command command_from(int argc, char** argv, bool mpi) {
     const Args& a = c.args;
     const std::vector<double> alphas = list_in(a, "--alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange);
     const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
+    refuse_repeated_values("--alpha", alphas);
+    refuse_repeated_values("--p", ps);
     c.study = options_from(a);
     for (const char* flag : {"--output", "--rows"})
         if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
@@ -266,6 +270,7 @@ int cmd_fragility(int argc, char** argv) {
             refuse_unresolvable_run(p_max, records.back()->t_end(), c.args, {"--dt", "--p"}, path);
             jobs.inputs.push_back(records.back().get());
         }
+        refuse_repeated_records(c.files, jobs.inputs);
     } catch (const std::exception&) {
         failure = std::current_exception();
     }

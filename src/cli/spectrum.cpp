@@ -20,6 +20,7 @@
 #include "batch/engine.hpp"
 #include "batch/ranks.hpp"
 #include "cli/cluster_front.hpp"
+#include "cli/distinct_inputs.hpp"
 #include "cli/options.hpp"
 #include "harness/plot_file.hpp"
 #include "harness/table.hpp"
@@ -57,6 +58,7 @@ std::vector<double> alphas_from(const std::string& text) {
     }
     if (out.empty() || text.back() == ',') throw UsageError("--alpha: a list of numbers, A or A,A,... (got '" + text + "')");
     if (out.size() > 20) throw UsageError("--alpha: at most 20 values");
+    refuse_repeated_values("--alpha", out);
     return out;
 }
 
