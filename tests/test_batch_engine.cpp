@@ -278,15 +278,19 @@ TEST(BatchEngine, AResumeCutsOffWhatTheStateDoesNotCountAndEndsWithTheSameBytes)
     }
 }
 
+namespace {
+// make() throws a ResultsError whose message holds `says`.
+void refused(const std::function<void()>& make, const std::string& says) {
+    try {
+        make();
+        ADD_FAILURE() << "not refused: wanted '" << says << "'";
+    } catch (const ResultsError& e) {
+        EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+}
+}  // namespace
+
 TEST(BatchEngine, AResumeIsRefusedForAnotherManifestOrADamagedFile) {
-    auto refused = [](const std::function<void()>& make, const std::string& says) {
-        try {
-            make();
-            ADD_FAILURE() << "not refused: wanted '" << says << "'";
-        } catch (const ResultsError& e) {
-            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
-        }
-    };
     const std::string dir = temp_dir(), out = dir + "/r.csv";
     {
         ResultsFile f({out, false, 1e9}, kHeader, kDigest, 7);
@@ -326,14 +330,6 @@ TEST(BatchEngine, AResumeIsRefusedForAnotherManifestOrADamagedFile) {
 // SHA-256; a resume, or a --resume finding the results complete, refuses
 // any that differs now, naming it.
 TEST(BatchEngine, AResumeIsRefusedWhenARecordTheJobsReadHasChanged) {
-    auto refused = [](const std::function<void()>& make, const std::string& says) {
-        try {
-            make();
-            ADD_FAILURE() << "not refused: wanted '" << says << "'";
-        } catch (const ResultsError& e) {
-            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
-        }
-    };
     const std::string a(64, '1'), b(64, '2'), c(64, '3');
     const std::vector<InputDigest> inputs = {{"r1.txt", a}, {"dir/r 2.txt", b}};
     const std::string dir = temp_dir(), out = dir + "/r.csv";
