@@ -9,10 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "dynamics/ground_input.hpp"
 #include "qfactor/closed_forms.hpp"
+#include "studies/distinct_inputs.hpp"
 #include "studies/eq27_at_scale.hpp"
 #include "studies/resampling.hpp"
 
@@ -240,6 +242,63 @@ TEST(Eq27AtScale, TheDefaultGridIsTheIssues) {
     EXPECT_EQ(b[9].alpha, 0.05);
     EXPECT_EQ(b[10].alpha, 0.10);
     EXPECT_EQ(b[10].p, 0.5);
+}
+
+namespace {
+
+// The message of the std::invalid_argument f throws, or "" when it throws none.
+template <class F>
+std::string refusal(F f) {
+    try {
+        f();
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(Eq27AtScale, AGridThatSaysOtherThanItCountsIsRefusedInTheFrontEndsWords) {
+    // Issue 38: one p with a range was cut to p_min (ps() returned {p_min}),
+    // and an alpha given twice counted its cases twice; the command line and
+    // the Python module refuse both here, each in its own names.
+    const Eq27GridNames cli{"--alpha", "--p-min", "--p-max", "--p-points", " "};
+    Eq27Grid g;
+    g.p_points = 1;
+    g.p_min = 1, g.p_max = 4;
+    EXPECT_EQ(refusal([&] { g.check(cli); }),
+              "--p-points 1: one p, but the range runs from 1 to 4 rad/s: give the p as --p-min P alone, or more points");
+    EXPECT_EQ(refusal([&] { g.check(); }),
+              "p_points=1: one p, but the range runs from 1 to 4 rad/s: give the p as p_min=P alone, or more points");
+    EXPECT_NE(refusal([&] { g.ps(); }), "");
+    EXPECT_NE(refusal([&] { g.blocks(); }), "");
+    g.p_max = 1;
+    EXPECT_EQ(g.ps(), std::vector<double>{1.0});
+    EXPECT_EQ(g.blocks().size(), 5u);
+    g.alphas = {0.1, 0.2, 0.10};
+    EXPECT_EQ(refusal([&] { g.check(cli); }),
+              "--alpha: 0.1 is given twice (values 1 and 3); each would count its cases again: give each value once");
+    EXPECT_EQ(refusal([&] { g.blocks(); }),
+              "alpha: 0.1 is given twice (values 1 and 3); each would count its cases again: give each value once");
+    g.alphas = {0.1};
+    g.p_points = 1000, g.p_max = 1.0000000000001;
+    EXPECT_EQ(refusal([&] { g.check(); }),
+              "p_points: 1000 points from 1 to 1 rad/s repeat p = 1: widen the range or take fewer points");
+    g.p_points = 3, g.p_max = 1;
+    EXPECT_EQ(refusal([&] { g.check(cli); }), "--p-points: more than 1 needs --p-max above --p-min");
+}
+
+TEST(DistinctInputs, ARecordIsItsStepAndSamplesWhateverItsName) {
+    const dynamics::SampledInput a({0.1, -0.2, 0.3}, 0.01, "a"), b({0.1, -0.2, 0.3}, 0.01, "b"),
+        slower({0.1, -0.2, 0.3}, 0.02, "slower"), other({0.1, -0.2, 0.30000000000000004}, 0.01, "other");
+    EXPECT_EQ(refusal([&] { refuse_repeated_records({"a.txt", "slower.txt", "other.txt"}, {&a, &slower, &other}); }), "");
+    EXPECT_EQ(refusal([&] { refuse_repeated_records({"a.txt", "slower.txt", "b.txt"}, {&a, &slower, &b}); }),
+              "b.txt: the same record as a.txt (records 1 and 3: the same step and samples), whose cases would count "
+              "twice: give each record once");
+    EXPECT_EQ(refusal([] { refuse_repeated_values("p", {2, 3, 2.0}); }),
+              "p: 2 is given twice (values 1 and 3); each would count its cases again: give each value once");
+    EXPECT_EQ(refusal([] { refuse_repeated_values("p", {2, 3, 2.0000000000000004}); }), "");
 }
 
 TEST(Eq27Bootstrap, AllOrNothingRecordsGiveTheBinomialQuantiles) {

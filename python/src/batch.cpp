@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "batch/engine.hpp"
 #include "batch/manifest.hpp"
@@ -38,8 +39,12 @@ py::dict run(const Text& manifest_arg, const Text& output_arg, const std::option
         } catch (const batch::ManifestError& e) {
             throw std::invalid_argument(e.what());
         }
+        // Before any job, as rocking batch: an output that is an input (the manifest,
+        // a record) is a ValueError, one that cannot be written a RuntimeError.
+        const std::vector<jobs::NamedRecord> named = jobs::named_records(*manifest);
+        jobs::check_output("output", output, *manifest, named);
         jobs::RecordStore records;
-        const batch::BatchPlan plan = jobs::make_plan(*manifest, records);
+        const batch::BatchPlan plan = jobs::make_plan(*manifest, records, named);
         outcome = batch::run_batch(plan, o, nullptr);
     }
     py::dict r = result();
@@ -61,8 +66,9 @@ void init_batch(py::module_& m) {
           R"(`rocking batch MANIFEST --output FILE [--jobs N] [--resume]`: every job of the CSV manifest run
 on this process's threads, one results row per job in the manifest's order in `output` (CSV,
 docs/batch.md); a job that fails has its error in its row and the rest run.  Returns jobs,
-failed, ran and already_complete.  A manifest that cannot be read raises ValueError naming it;
-results that cannot be written or resumed, RuntimeError.  Releases the GIL.)");
+failed, ran and already_complete.  A manifest that cannot be read raises ValueError naming it, as
+does an output that is the manifest or one of its records (before any job); results that cannot
+be written or resumed, RuntimeError.  Releases the GIL.)");
 }
 
 }  // namespace rocking::python

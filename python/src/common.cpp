@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <stdexcept>
 
 #include "batch/pool.hpp"
 
@@ -392,6 +393,11 @@ std::vector<RecordPtr> record_list(py::handle obj, const std::string& what) {
     for (py::handle item : py::iter(obj)) out.push_back(record_argument(item, what + "[" + std::to_string(k++) + "]"));
     if (out.empty()) refuse(what + ": no record given");
     return out;
+}
+
+void refuse_unresolvable_run(double p, double duration, const std::string& given) {
+    const std::string why = dynamics::unresolvable_run(p, duration);
+    if (!why.empty()) throw std::invalid_argument(given + ": " + why);
 }
 
 records::HalfPeriods checked_half_periods(const records::Record& r) {

@@ -126,6 +126,14 @@ PulseTrain train_argument(const std::optional<Whole>& which_case, const std::opt
 // case: an integer 1..5 (bool and float refused with a TypeError).
 int case_argument(const py::object& which_case);
 
+// A run the solvers cannot follow (dynamics::unresolvable_run: p times the
+// input's duration above 1e9), refused before it starts with a ValueError
+// (std::invalid_argument, so that it may be thrown without the GIL) naming
+// `given`, the arguments that set p and the input ("p_max with record
+// wave.txt"), as the command line names its options; the solver's "no
+// progress" deep in the run named neither.
+void refuse_unresolvable_run(double p, double duration, const std::string& given);
+
 // --restitution: a factor in [0, 1] or "housner" (NaN).
 double restitution_argument(const py::object& value);
 // --rtol and --atol (rad) into the solver's options, as tolerance_options.

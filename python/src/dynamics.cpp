@@ -169,11 +169,19 @@ py::dict simulate_of(const Real& alpha_given, const std::optional<Real>& p_given
         refuse("free_time goes with dt");
     }
 
+    // The arguments that set p and the input's duration, as rocking simulate names its options.
+    std::string given = p ? "p" : half_height ? "half_height" : "height";
+    for (const auto& [name, has] : {std::pair<const char*, bool>{"to", to.has_value()}, {"x", x.has_value()},
+                                    {"wp", wp.has_value()}})
+        if (has) given += std::string(", ") + name;
+    if (kept) given += ", record " + label_of(*kept);
+
     SimulationResult r;
     std::string too_many_rows;
     {
         py::gil_scoped_release unlocked;
         if (kept) input = record_input(*kept, scaled_to);
+        refuse_unresolvable_run(model.block.p, input->t_end(), given);
         too_many_rows = options.record_dt > 0 ? rows_refusal(model, *input, options) : "";
         if (too_many_rows.empty()) {
             r = simulate(model, *input, options);

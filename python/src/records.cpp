@@ -302,6 +302,7 @@ py::dict collapse(py::handle record, const Real& alpha_given, const Text& model,
     {
         py::gil_scoped_release unlocked;
         const dynamics::SampledInput input(r->in_g(dynamics::kGravity), r->dt, r->name);
+        refuse_unresolvable_run(o.p_max, input.t_end(), "record " + label_of(*r));  // the search's p_max is its own
         c = records::smallest_collapse_p(input, alpha, o);
     }
     py::dict out = result();

@@ -1,6 +1,7 @@
 // The studies over many runs (rocking spectrum, fragility, eq27):
 // src/studies.  Each runs without the GIL, on `jobs` threads of the batch
 // engine; the results do not depend on them.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -9,6 +10,7 @@
 #include "dynamics/ground_input.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
+#include "studies/distinct_inputs.hpp"
 #include "studies/eq27_at_scale.hpp"
 #include "studies/ida.hpp"
 #include "studies/spectrum.hpp"
@@ -68,6 +70,7 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
                   const std::optional<Whole>& jobs, const py::kwargs& extra) {
     no_other_keywords(extra, "spectrum", "spectrum");
     const std::vector<double> alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 20);
+    studies::refuse_repeated_values("alpha", alphas);
     studies::SpectrumOptions o;
     o.p_min = number(p_min, "p_min"), o.p_max = number(p_max, "p_max");
     const long long points_given = whole(points, "points");
@@ -82,6 +85,7 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     {
         py::gil_scoped_release unlocked;
         const auto input = input_of(*r);
+        refuse_unresolvable_run(o.p_max, input->t_end(), "p_max with record " + label_of(*r));
         // As rocking spectrum: Table 1's bracket joins each alpha's grid.
         batch::run_ordered<Study>(
             alphas.size(), batch::PoolOptions{threads},
@@ -218,6 +222,8 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     no_other_keywords(extra, "fragility", "fragility");
     const std::vector<double> alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 50);
     const std::vector<double> ps = values_in(p, "p", 0.01, 1000, "(0.01, 1000) rad/s", 50);
+    studies::refuse_repeated_values("alpha", alphas);
+    studies::refuse_repeated_values("p", ps);
     studies::FragilityStudyOptions o;
     o.ida.q_max = number(q_max, "q_max");
     if (!(o.ida.q_max > o.ida.q_min && o.ida.q_max <= 1e4)) refuse("q_max: must be in (1, 10000]");
@@ -236,12 +242,19 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     {
         py::gil_scoped_release unlocked;
         std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
+        std::vector<std::string> labels;
+        const double p_max = *std::max_element(ps.begin(), ps.end());
         for (const RecordPtr& r : recs) {
             inputs.push_back(input_of(*r));
-            if (!(inputs.back()->peak() > 0)) throw std::runtime_error(label_of(*r) + ": the record never moves (PGA 0)");
+            labels.push_back(label_of(*r));
+            if (!(inputs.back()->peak() > 0)) throw std::runtime_error(labels.back() + ": the record never moves (PGA 0)");
+            refuse_unresolvable_run(p_max, inputs.back()->t_end(), "p with record " + labels.back());
         }
+        std::vector<const dynamics::SampledInput*> given;
         std::vector<const dynamics::GroundInput*> views;
-        for (const auto& in : inputs) views.push_back(in.get());
+        for (const auto& in : inputs) given.push_back(in.get()), views.push_back(in.get());
+        // As rocking fragility: a record given twice would count as two independent records in the fit.
+        studies::refuse_repeated_records(labels, given);
         study = studies::fragility_study(views, blocks, o);
     }
     py::dict out = result();
@@ -317,11 +330,12 @@ py::array_t<int> counts(const std::array<int, studies::kHalfPeriods>& c) {
     return a;
 }
 
-py::dict eq27(const py::object& records_given, const py::object& alpha, const Real& p_min_given, const Real& p_max_given,
+py::dict eq27(const py::object& records_given, const py::object& alpha, const std::optional<Real>& p_min_given,
+              const std::optional<Real>& p_max_given,
               const Whole& p_points_given, const Real& q_max_given, const std::optional<Whole>& bootstrap,
               const std::optional<Whole>& seed, const std::optional<Whole>& jobs, const py::kwargs& extra) {
     no_other_keywords(extra, "eq27", "eq27");
-    const double p_min = number(p_min_given, "p_min"), p_max = number(p_max_given, "p_max");
+    const std::optional<double> p_min = number(p_min_given, "p_min"), p_max = number(p_max_given, "p_max");
     const long long p_points_long = whole(p_points_given, "p_points");
     const double q_max = number(q_max_given, "q_max");
     studies::Eq27Options o;
@@ -330,13 +344,14 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const Re
         if (!(v > lo && v <= hi)) refuse(what + ": must be in " + range + " (got " + g7(v) + ")");
         return v;
     };
-    o.grid.p_min = bounded(p_min, "p_min", 0.01, 1000, "(0.01, 1000] rad/s");
-    o.grid.p_max = bounded(p_max, "p_max", 0.01, 1000, "(0.01, 1000] rad/s");
-    if (o.grid.p_max < o.grid.p_min) refuse("p_max: must not be below p_min (" + g7(o.grid.p_min) + ")");
+    // As rocking eq27's --p-min, --p-max: the grid's defaults when not given, and one
+    // p_points is p_min alone unless p_max is given too (then it must be p_min).
+    if (p_min) o.grid.p_min = bounded(*p_min, "p_min", 0.01, 1000, "(0.01, 1000] rad/s");
+    if (p_max) o.grid.p_max = bounded(*p_max, "p_max", 0.01, 1000, "(0.01, 1000] rad/s");
     if (p_points_long < 1 || p_points_long > 1000) refuse("p_points: must be between 1 and 1000");
-    const int p_points = static_cast<int>(p_points_long);
-    o.grid.p_points = p_points;
-    if (p_points > 1 && o.grid.p_max == o.grid.p_min) refuse("p_points: more than 1 needs p_max above p_min");
+    o.grid.p_points = static_cast<int>(p_points_long);
+    if (o.grid.p_points == 1 && p_min && !p_max) o.grid.p_max = o.grid.p_min;
+    o.grid.check();  // a repeated alpha or p, one p with a range: ValueError in the keywords' names
     o.ida.q_max = bounded(q_max, "q_max", o.ida.q_min, 1e4, "(1, 10000]");
     o.bootstrap.resamples = bootstrap_argument(bootstrap, seed, o.bootstrap.seed);
     if (o.bootstrap.resamples != 0 && (o.bootstrap.resamples < 2 || o.bootstrap.resamples > 100000))
@@ -349,12 +364,18 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const Re
     studies::Eq27Study s;
     {
         py::gil_scoped_release unlocked;  // the half-periods' CWT too
+        std::vector<std::string> labels;
+        std::vector<const dynamics::SampledInput*> given;
         for (const RecordPtr& r : recs) {
-            const records::HalfPeriods h = checked_half_periods(*r);
+            labels.push_back(label_of(*r));
             inputs.push_back(input_of(*r));
-            if (!(inputs.back()->peak() > 0)) throw std::runtime_error(label_of(*r) + ": the record never moves (PGA 0)");
+            refuse_unresolvable_run(o.grid.p_max, inputs.back()->t_end(), "p_max with record " + labels.back());
+            const records::HalfPeriods h = checked_half_periods(*r);
+            if (!(inputs.back()->peak() > 0)) throw std::runtime_error(labels.back() + ": the record never moves (PGA 0)");
             rows.push_back({inputs.back().get(), h.to});
+            given.push_back(inputs.back().get());
         }
+        studies::refuse_repeated_records(labels, given);  // as rocking eq27: its cases would count twice
         s = studies::eq27_at_scale(rows, o);
     }
     const bool boot = s.bootstrap.resamples > 0;
@@ -447,19 +468,23 @@ void init_studies(py::module_& m) {
           R"(`rocking spectrum --json`: for each alpha (a number or a list), the overturning intervals in p
 (rad/s), each end bisected to 1e-6 and checked, beside Table 1's first collapse, and the grid: each
 spectrum's points as arrays (p, grid, max_theta, final_rotation, peak_rotation, overturning,
-t_overturn with NaN for null).  jobs: threads (default: the cores this process may use).
-Releases the GIL.)");
+t_overturn with NaN for null).  jobs: threads (default: the cores this process may use).  An
+alpha given twice is refused.  Releases the GIL.)");
     m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a, "p"_a, "q_max"_a = 20.0, "points"_a = 100,
           "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
           R"(`rocking fragility --json`: for each block (every alpha with every p) and record, the IDA's
 overturning intervals in q = PGA/(alpha g), the first collapse q or a censored point, the lognormal
 fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).
-Releases the GIL.)");
-    m.def("eq27", gsl_checked(&eq27), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = 0.5, "p_max"_a = 10.0,
+An alpha, a p or a record (by its step and samples) given twice is refused.  Releases the GIL.)");
+    m.def("eq27", gsl_checked(&eq27), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = py::none(),
+          "p_max"_a = py::none(),
           "p_points"_a = 10, "q_max"_a = 20.0, "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
           R"(`rocking eq27 --json`: each record's first collapse q on every block of the grid against eq. 27
 at x = p to_k; per to_k the share of non-conservative cases with its Wilson and bootstrap
-intervals, by record and the map over blocks.  Releases the GIL.)");
+intervals, by record and the map over blocks.  p: p_points log-spaced from p_min (default 0.5) to
+p_max (default 10); p_points=1 is p_min alone (p_max, if given, must equal it).  An alpha or a
+record given twice is refused (its cases would count twice), as is a p_max times a record's
+duration the solvers cannot follow.  Releases the GIL.)");
 }
 
 }  // namespace rocking::python

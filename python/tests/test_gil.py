@@ -87,7 +87,8 @@ def test_fragility_releases_the_gil():
 def test_eq27_releases_the_gil():
     records = [noise(20, seed=s) for s in (3, 4)]
     assert_releases_the_gil(
-        lambda scale: lambda: rq.eq27(records, alpha=0.1, p_points=scale, p_min=1, p_max=5, jobs=1), "eq27")
+        # scale + 1 p: one p on a range is refused (issue 38).
+        lambda scale: lambda: rq.eq27(records, alpha=0.1, p_points=scale + 1, p_min=1, p_max=5, jobs=1), "eq27")
 
 
 def test_collapse_and_record_info_release_the_gil():

@@ -190,7 +190,8 @@ CALLS = [
     (rq.assess, dict(record=R, alpha=0.15, half_height=1), ["half_height"]),
     (rq.spectrum, dict(record=R, alpha=0.15, p_min=1, p_max=2, points=2), ["alpha", "p_min", "p_max"]),
     (rq.fragility, dict(records=[R], alpha=0.15, p=2, q_max=2, points=2), ["alpha", "p", "q_max"]),
-    (rq.eq27, dict(records=[R], alpha=0.15, p_min=1, p_max=2, p_points=1, q_max=2), ["alpha", "p_min", "p_max", "q_max"]),
+    # Two p: one p with a range (p_min 1, p_max 2) is refused since issue 38 (it was cut to p_min).
+    (rq.eq27, dict(records=[R], alpha=0.15, p_min=1, p_max=2, p_points=2, q_max=2), ["alpha", "p_min", "p_max", "q_max"]),
     (rq.record_synth, dict(pulse=(0.5, 1, 0.3, 2.5), dt=0.01, duration=5), ["dt", "duration"]),
     (rq.Record, dict(accel=[0.1, 0.2, 0.3], dt=0.01), ["dt"]),
 ]
@@ -275,8 +276,9 @@ def test_the_cli_refuses_the_same_numbers_in_the_same_words(tmp_path):
     (rq.spectrum, dict(record=R, alpha=0.15, p_min=1, p_max=2, points=2), "jobs"),
     (rq.fragility, dict(records=[R], alpha=0.15, p=2, q_max=2, points=2), "points"),
     (rq.fragility, dict(records=[R], alpha=0.15, p=2, q_max=2, points=2, bootstrap=2), "seed"),
-    (rq.eq27, dict(records=[R], alpha=0.15, p_points=1, q_max=2), "p_points"),
-    (rq.eq27, dict(records=[R], alpha=0.15, p_points=1, q_max=2, seed=3), "bootstrap"),
+    # p_min alone with p_points=1: one p (with the default range it is refused since issue 38).
+    (rq.eq27, dict(records=[R], alpha=0.15, p_min=1, p_points=1, q_max=2), "p_points"),
+    (rq.eq27, dict(records=[R], alpha=0.15, p_min=1, p_points=1, q_max=2, seed=3), "bootstrap"),
     (rq.record_synth, dict(dt=0.01, duration=5), "stochastic"),
 ])
 def test_a_whole_number_of_the_wrong_type_is_refused_naming_it(f, kwargs, name):

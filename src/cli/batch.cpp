@@ -16,7 +16,6 @@
 #include "batch/results_file.hpp"
 #include "cli/cluster_front.hpp"
 #include "cli/options.hpp"
-#include "harness/output_paths.hpp"
 #include "jobs/batch_plan.hpp"
 #include "jobs/record_store.hpp"
 
@@ -51,24 +50,16 @@ Options options_from(int argc, char** argv, bool mpi) {
     return o;
 }
 
-// Before any job (issue 38): the results, and the partial file and state
-// they are written through, are none of the inputs (batch study.csv --output
-// study.csv replaced the manifest at the end), and their folder is writable.
+// Before any job (issue 38): jobs::check_output, an output over an input
+// being a bad command line.
 void check_output(const std::string& output, const batch::Manifest& manifest,
                   const std::vector<jobs::NamedRecord>& records) {
     if (output.empty()) return;
-    std::vector<harness::NamedPath> inputs = {{"the manifest", manifest.path()}};
-    for (const jobs::NamedRecord& r : records)
-        inputs.push_back({"the record of manifest line " + std::to_string(r.line), r.path});
     try {
-        harness::refuse_outputs_over_inputs(
-            {{"--output", output}, {"--output's partial file", output + ".partial"},
-             {"--output's state file", output + ".partial.state"}},
-            inputs);
+        jobs::check_output("--output", output, manifest, records);
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
-    harness::check_writable({"--output", output});
 }
 
 }  // namespace

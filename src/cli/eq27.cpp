@@ -60,23 +60,13 @@ double bounded(const Args& a, const std::string& flag, double fallback, double l
 
 // The p of the grid: --p-points log-spaced from --p-min to --p-max, both
 // ends included.  One point is one p: --p-min, and --p-max (when given) must
-// be that p, so that no range is given and silently cut to its start.
+// be that p, so that no range is given and silently cut to its start
+// (Eq27Grid::check refuses it, as the Python module's eq27).
 void p_grid_from(const Args& a, studies::Eq27Grid& g) {
     g.p_min = bounded(a, "--p-min", g.p_min, 0.01, 1000, "(0.01, 1000] rad/s");
     g.p_max = bounded(a, "--p-max", g.p_max, 0.01, 1000, "(0.01, 1000] rad/s");
     if (a.values.count("--p-points")) g.p_points = integer("--p-points", a.values.at("--p-points"), 1, 1000);
     if (g.p_points == 1 && a.values.count("--p-min") && !a.values.count("--p-max")) g.p_max = g.p_min;
-    if (g.p_max < g.p_min) throw UsageError("--p-max: must not be below --p-min (" + g7(g.p_min) + ")");
-    if (g.p_points == 1 && g.p_max != g.p_min)
-        throw UsageError("--p-points 1: one p, but the range runs from " + g7(g.p_min) + " to " + g7(g.p_max) +
-                         " rad/s: give the p as --p-min P alone, or more points");
-    if (g.p_points > 1 && g.p_max == g.p_min) throw UsageError("--p-points: more than 1 needs --p-max above --p-min");
-    // A range too narrow for its points would repeat a p, and count its cases twice.
-    const std::vector<double> ps = g.ps();
-    for (std::size_t i = 1; i < ps.size(); ++i)
-        if (!(ps[i] > ps[i - 1]))
-            throw UsageError("--p-points: " + std::to_string(g.p_points) + " points from " + g7(g.p_min) + " to " +
-                             g7(g.p_max) + " rad/s repeat p = " + g7(ps[i]) + ": widen the range or take fewer points");
 }
 
 studies::Eq27Grid grid_from(const Args& a) {
@@ -87,9 +77,13 @@ studies::Eq27Grid grid_from(const Args& a) {
         for (double v : g.alphas)
             if (!studies::in_search_alpha_range(v))
                 throw UsageError("--alpha: each must be in " + std::string(studies::kSearchAlphaRange) + " (got " + g7(v) + ")");
-        refuse_repeated_values("--alpha", g.alphas);
     }
     p_grid_from(a, g);
+    try {
+        g.check({"--alpha", "--p-min", "--p-max", "--p-points", " "});
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
     return g;
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unordered_set>
 
+#include "harness/output_paths.hpp"
 #include "jobs/job.hpp"
 #include "jobs/result_row.hpp"
 #include "jobs/run_job.hpp"
@@ -42,6 +43,17 @@ std::vector<NamedRecord> named_records(const batch::Manifest& manifest) {
         named.push_back({cells[column], record_path(cells[column], manifest.folder()), manifest.line(i)});
     }
     return named;
+}
+
+void check_output(const std::string& role, const std::string& output, const batch::Manifest& manifest,
+                  const std::vector<NamedRecord>& records) {
+    std::vector<harness::NamedPath> inputs = {{"the manifest", manifest.path()}};
+    for (const NamedRecord& r : records)
+        inputs.push_back({"the record of manifest line " + std::to_string(r.line), r.path});
+    harness::refuse_outputs_over_inputs(
+        {{role, output}, {role + "'s partial file", output + ".partial"}, {role + "'s state file", output + ".partial.state"}},
+        inputs);
+    harness::check_writable({role, output});
 }
 
 batch::BatchPlan make_plan(const batch::Manifest& manifest, RecordStore& records) {

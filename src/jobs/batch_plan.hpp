@@ -25,6 +25,16 @@ struct NamedRecord {
 // (rows that cannot be read, or name none, are skipped: their jobs fail).
 std::vector<NamedRecord> named_records(const batch::Manifest& manifest);
 
+// Before any job (issue 38): the results at `output`, and the partial file
+// and state they are written through, are none of the inputs (the manifest,
+// the records it names: batch study.csv --output study.csv replaced the
+// manifest at the end), and their folder is writable.  `role` names the
+// output as the front end's user gave it ("--output", "output").  Throws
+// std::invalid_argument for an output that is an input (or a partial file
+// that is one), std::runtime_error for an output that cannot be written.
+void check_output(const std::string& role, const std::string& output, const batch::Manifest& manifest,
+                  const std::vector<NamedRecord>& records);
+
 // Throws std::invalid_argument (naming the manifest and the column) for a
 // header the jobs cannot be read under.  Each named record is read once
 // here for its SHA-256 (plan.inputs, in the results' header; the store then

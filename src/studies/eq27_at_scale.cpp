@@ -8,6 +8,7 @@
 
 #include "batch/pool.hpp"
 #include "qfactor/closed_forms.hpp"
+#include "studies/distinct_inputs.hpp"
 #include "studies/resampling.hpp"
 
 namespace rocking::studies {
@@ -36,6 +37,7 @@ WilsonInterval wilson_interval(int successes, int trials, double level) {
 std::vector<double> Eq27Grid::ps() const {
     if (!(p_min > 0 && std::isfinite(p_max) && p_max >= p_min)) throw std::invalid_argument("eq27: the grid needs 0 < p_min <= p_max");
     if (p_points < 1) throw std::invalid_argument("eq27: the grid needs at least 1 p");
+    if (p_points == 1 && p_max != p_min) throw std::invalid_argument("eq27: one p needs p_max equal to p_min");
     if (p_points == 1) return {p_min};
     std::vector<double> out;
     for (int i = 0; i < p_points; ++i) out.push_back(p_min * std::pow(p_max / p_min, double(i) / (p_points - 1)));
@@ -46,11 +48,36 @@ std::vector<double> Eq27Grid::ps() const {
 
 std::vector<BlockShape> Eq27Grid::blocks() const {
     if (alphas.empty()) throw std::invalid_argument("eq27: the grid needs at least 1 alpha");
+    check();
     std::vector<BlockShape> out;
     const std::vector<double> p = ps();
     for (double a : alphas)
         for (double pi : p) out.push_back({a, pi});
     return out;
+}
+
+void Eq27Grid::check(const Eq27GridNames& names) const {
+    auto g7 = [](double v) {
+        char t[40];
+        std::snprintf(t, sizeof t, "%.7g", v);
+        return std::string(t);
+    };
+    refuse_repeated_values(names.alpha, alphas);
+    if (p_max < p_min)
+        throw std::invalid_argument(names.p_max + ": must not be below " + names.p_min + " (" + g7(p_min) + ")");
+    if (p_points == 1 && p_max != p_min)
+        throw std::invalid_argument(names.p_points + names.equals + "1: one p, but the range runs from " + g7(p_min) +
+                                    " to " + g7(p_max) + " rad/s: give the p as " + names.p_min + names.equals +
+                                    "P alone, or more points");
+    if (p_points > 1 && p_max == p_min)
+        throw std::invalid_argument(names.p_points + ": more than 1 needs " + names.p_max + " above " + names.p_min);
+    // A range too narrow for its points would repeat a p, and count its cases twice.
+    const std::vector<double> p = ps();
+    for (std::size_t i = 1; i < p.size(); ++i)
+        if (!(p[i] > p[i - 1]))
+            throw std::invalid_argument(names.p_points + ": " + std::to_string(p_points) + " points from " + g7(p_min) +
+                                        " to " + g7(p_max) + " rad/s repeat p = " + g7(p[i]) +
+                                        ": widen the range or take fewer points");
 }
 
 std::string Eq27Grid::describe() const {

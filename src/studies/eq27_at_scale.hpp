@@ -48,14 +48,29 @@ struct WilsonInterval {
 // successes outside [0, trials], or level not in (0, 1).
 WilsonInterval wilson_interval(int successes, int trials, double level);
 
+// How a front end names the grid's parameters in its messages: the command
+// line's flags ("--p-points 1"), or the Python module's keywords
+// ("p_points=1", the default).
+struct Eq27GridNames {
+    std::string alpha = "alpha", p_min = "p_min", p_max = "p_max", p_points = "p_points";
+    std::string equals = "=";  // between a name and its value
+};
+
 struct Eq27Grid {
     std::vector<double> alphas{0.05, 0.10, 0.15, 0.20, 0.25};
     double p_min = 0.5, p_max = 10.0;  // rad/s
     int p_points = 10;                 // log-spaced, both ends included
     std::vector<double> ps() const;
-    // Every alpha with every p, alpha outermost.
+    // Every alpha with every p, alpha outermost; check() first.
     std::vector<BlockShape> blocks() const;
     std::string describe() const;
+    // Throws std::invalid_argument, in `names`, for a grid that says other
+    // than it counts: p_max below p_min; one p with a range (the p is p_min,
+    // the range unused); more than one p on no range; a range too narrow for
+    // its points (a p repeated); an alpha given twice (its cases counted
+    // twice, distinct_inputs.hpp).  The bounds of each value are the front
+    // ends' (their ranges differ in words only).
+    void check(const Eq27GridNames& names = {}) const;
 };
 
 struct Eq27Record {
