@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # rocking fragility's fit on equal and censored collapse values (issue 38),
-# on the shared Kocaeli DZC180 record and its copies scaled by powers of two
-# (a record given twice is refused; q = PGA/(alpha g) is the record's scale,
-# and 2^k scales every sample and the IDA's factor exactly, so each copy
-# overturns the block at the very same double q): 1-5 of them get one refusal that
+# on the shared Kocaeli DZC180 record and copies of it whose step differs by
+# parts in 10^10 (a record given twice, or scaled, is refused; these overturn
+# the block at the very same double q): 1-5 of them get one refusal that
 # says why (every collapse at one q, nothing censored above), never a beta
 # from rounding; a bootstrap whose resamples often draw one q only keeps no
 # rounding beta; two copies and a record that never overturns the block (a
@@ -42,18 +41,18 @@ with open(sys.argv[1], "w") as f:
         f.write("".join("%15.7E" % v for v in a[i:i + 5]) + "\n")
 PY
 
-# The copies: DZC180 times 2^k, k = 1, -1, 2, -2, 3, -3, 4, each sample exactly.
+# The copies: DZC180 with its step lengthened by k parts in 10^10, k = 1..7.  To the
+# check of repeated records each is another record (another step: a copy, even scaled,
+# is refused), but the motion moves by 1e-10 of its time, far inside the IDA's last
+# bracket (1e-6), so each overturns the block at the very same double q.
 copies=("$k180")
-for k in 1 -1 2 -2 3 -3 4; do
+for k in 1 2 3 4 5 6 7; do
     $py - "$k180" "$tmp/k180_$k.AT2" "$k" <<'PY'
-import sys
+import re, sys
 lines = open(sys.argv[1]).read().splitlines()
-scale = 2.0 ** int(sys.argv[3])
-values = [float(v) * scale for line in lines[4:] for v in line.split()]
-with open(sys.argv[2], "w") as f:
-    f.write("\n".join(lines[:4]) + "\n")
-    for i in range(0, len(values), 5):
-        f.write(" ".join(repr(v) for v in values[i:i + 5]) + "\n")
+dt = float(re.search(r"DT=\s*([0-9.Ee+-]+)", lines[3]).group(1)) * (1 + int(sys.argv[3]) * 1e-10)
+lines[3] = re.sub(r"DT=\s*[0-9.Ee+-]+", "DT= %.17g" % dt, lines[3])
+open(sys.argv[2], "w").write("\n".join(lines) + "\n")
 PY
     copies+=("$tmp/k180_$k.AT2")
 done
@@ -94,14 +93,8 @@ check "burst censored" "censored at q_max = 20" "$rocking" fragility "$tmp/burst
 check "issue's example" "lognormal median q = 6.089949, beta = 1.504204 (2 overturned, 1 censored)" \
     "$rocking" fragility "${copies[@]:0:2}" "$tmp/burst.AT2" "${block[@]}"
 fit_check "two copies below a censored record" "${copies[@]:0:2}" "$tmp/burst.AT2" "${block[@]}"
-$py - "$tmp/burst.AT2" "$tmp/burst2.AT2" <<'PY'
-import sys
-lines = open(sys.argv[1]).read().splitlines()
-with open(sys.argv[2], "w") as f:
-    f.write("\n".join(lines[:4]) + "\n")
-    for line in lines[4:]:
-        f.write(" ".join(repr(float(v) * 2) for v in line.split()) + "\n")
-PY
+# A second censored record: the burst's samples at half the step (50 Hz for 0.2 s).
+sed '4s/DT=   .0050/DT=   .0025/' "$tmp/burst.AT2" >"$tmp/burst2.AT2"
 fit_check "one collapse below two censored" "$k180" "$tmp/burst.AT2" "$tmp/burst2.AT2" "${block[@]}"
 # Real records only: IT.NRC HGN (2016-10-26 17:10) first overturns the block at q = 17.8, so at --q-max 15 it is censored.
 fit_check "real record censored at q_max 15" "${copies[@]:0:3}" "$n171" "${block[@]}" --q-max 15

@@ -26,37 +26,42 @@ for study in fragility eq27; do
     done
 done
 
-# One motion in three formats: plain text in m/s^2 (two columns), PEER AT2
-# (g = 9.81 m/s^2, as the reader takes it) and ESM ASCII (cm/s^2), the last two
-# scaled by 1.1 and 0.9 (a record given twice is refused): q = PGA/(alpha g)
-# is the record's scale, so each overturns the block at the same q.
-"$rocking" record synth --pulse 1,1,0,2 --dt 0.005 --duration 6 --output "$tmp/plain.txt" >/dev/null || { echo "FAIL: record synth"; exit 1; }
+# Three motions (near-fault pulses of 1, 1.3 and 0.8 Hz), each as plain text
+# in m/s^2; then the second as PEER AT2 (g = 9.81 m/s^2, as the reader takes
+# it) and the third as ESM ASCII (cm/s^2).  Under --unit the mixed study reads
+# each in its own format and finds the q the all-text study finds.
+for f in 1 1.3 0.8; do
+    "$rocking" record synth --pulse 1,$f,0,2 --dt 0.005 --duration 6 --output "$tmp/pulse$f.txt" >/dev/null ||
+        { echo "FAIL: record synth"; exit 1; }
+done
+cp "$tmp/pulse1.txt" "$tmp/plain.txt"
+cp "$tmp/pulse1.3.txt" "$tmp/other.txt"
 /usr/bin/python3 - "$tmp" <<'PY' || { echo "FAIL: writing the AT2 and ESM copies"; exit 1; }
 import sys
 d = sys.argv[1]
-rows = [l.split(",") for l in open(d + "/plain.txt") if not l.startswith("#")]
-a = [float(r[1]) for r in rows]
-dt = float(rows[1][0]) - float(rows[0][0])
+def motion(name):
+    rows = [l.split(",") for l in open(d + "/" + name) if not l.startswith("#")]
+    return [float(r[1]) for r in rows], float(rows[1][0]) - float(rows[0][0])
+a, dt = motion("pulse1.3.txt")
 with open(d + "/motion.AT2", "w") as f:
     f.write("PEER NGA STRONG MOTION DATABASE RECORD\nsynthetic pulse\nACCELERATION TIME SERIES IN UNITS OF G\n")
     f.write("NPTS= %d, DT= %.4f SEC\n" % (len(a), dt))
     for k in range(0, len(a), 5):
-        f.write("".join(" %.17e" % (1.1 * v / 9.81) for v in a[k:k + 5]) + "\n")
+        f.write("".join(" %.17e" % (v / 9.81) for v in a[k:k + 5]) + "\n")
+a, dt = motion("pulse0.8.txt")
 with open(d + "/motion.ASC", "w") as f:
     f.write("EVENT_NAME: synthetic\nSTATION_CODE: SYN\nSTREAM: HNE\nUNITS: cm/s^2\nSAMPLING_INTERVAL_S: %.6f\n" % dt)
-    f.write("NDATA: %d\nPGA_CM/S^2: %.6f\nDATA_TYPE: ACCELERATION\n" % (len(a), max(abs(v) for v in a) * 90))
-    f.write("".join("%.17e\n" % (v * 90) for v in a))
+    f.write("NDATA: %d\nPGA_CM/S^2: %.6f\nDATA_TYPE: ACCELERATION\n" % (len(a), max(abs(v) for v in a) * 100))
+    f.write("".join("%.17e\n" % (v * 100) for v in a))
 PY
 q_of() {  # the first collapse q of each record, as fragility --json gives them
     "$rocking" fragility "$@" --alpha 0.2 --p 3 --points 20 --quiet --json |
         /usr/bin/python3 -c 'import json,sys; print(" ".join("%.6g" % r["q"] for r in json.load(sys.stdin)["blocks"][0]["records"]))'
 }
-"$rocking" record synth --pulse 0.5,1,0,2 --dt 0.005 --duration 6 --output "$tmp/other.txt" >/dev/null
-alone=$(q_of "$tmp/plain.txt" "$tmp/other.txt" --unit m/s2)
-mixed=$(q_of "$tmp/plain.txt" "$tmp/motion.AT2" "$tmp/motion.ASC" --unit m/s2)
-first=${alone%% *}
-if [[ -n "$first" && "$mixed" == "$first $first $first" ]]; then echo "ok: fragility mixes text, AT2 and ESM under --unit: q = $mixed"
-else echo "FAIL: fragility with text, AT2 and ESM under --unit: q = '$mixed', the text record alone: '$first'"; fail=1; fi
+text=$(q_of "$tmp/pulse1.txt" "$tmp/pulse1.3.txt" "$tmp/pulse0.8.txt" --unit m/s2)
+mixed=$(q_of "$tmp/pulse1.txt" "$tmp/motion.AT2" "$tmp/motion.ASC" --unit m/s2)
+if [[ $(wc -w <<<"$text") == 3 && "$mixed" == "$text" ]]; then echo "ok: fragility mixes text, AT2 and ESM under --unit: q = $mixed"
+else echo "FAIL: fragility with text, AT2 and ESM under --unit: q = '$mixed', all as text: '$text'"; fail=1; fi
 check "eq27 mixes them too" "3 record(s)" "$rocking" eq27 "$tmp/plain.txt" "$tmp/motion.AT2" "$tmp/motion.ASC" --unit m/s2 \
     --alpha 0.2 --p-min 3 --p-max 3 --p-points 1
 check "a plain-text record still needs --unit" "is read with its unit (rocking: --unit)" "$rocking" fragility "$tmp/plain.txt" "$tmp/motion.AT2" \
@@ -87,6 +92,13 @@ check "fragility: an alpha given twice" "--alpha: 0.2 is given twice" \
     "$rocking" fragility "$tmp/plain.txt" "$tmp/other.txt" --unit m/s2 --alpha 0.2,0.20 --p 3
 check "fragility: a p given twice" "--p: 3 is given twice" \
     "$rocking" fragility "$tmp/plain.txt" "$tmp/other.txt" --unit m/s2 --alpha 0.2 --p 3,2,3.0
+# A copy scaled, or with its sign flipped, is the same case to a study that
+# scales each record to every q on a symmetric block.
+awk -F, '!/^#/ { printf "%s,%.17g\n", $1, -1.5 * $2 }' "$tmp/plain.txt" >"$tmp/scaled.txt"
+check "fragility: a record given twice, scaled by -1.5" "the same record as $tmp/plain.txt scaled" \
+    "$rocking" fragility "$tmp/plain.txt" "$tmp/other.txt" "$tmp/scaled.txt" --unit m/s2 --alpha 0.2 --p 3
+check "eq27: a record given twice, scaled by -1.5" "the same record as $tmp/plain.txt scaled" \
+    "$rocking" eq27 "$tmp/plain.txt" "$tmp/scaled.txt" --unit m/s2
 check "spectrum: an alpha given twice" "--alpha: 0.1 is given twice" "$rocking" spectrum "$tmp/plain.txt" --unit m/s2 --alpha 0.1,0.1
 status "spectrum: an alpha given twice, exit 2" 2 "$rocking" spectrum "$tmp/plain.txt" --unit m/s2 --alpha 0.1,0.1
 exit $fail

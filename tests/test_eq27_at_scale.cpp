@@ -291,8 +291,16 @@ TEST(Eq27AtScale, AGridThatSaysOtherThanItCountsIsRefusedInTheFrontEndsWords) {
 
 TEST(DistinctInputs, ARecordIsItsStepAndSamplesWhateverItsName) {
     const dynamics::SampledInput a({0.1, -0.2, 0.3}, 0.01, "a"), b({0.1, -0.2, 0.3}, 0.01, "b"),
-        slower({0.1, -0.2, 0.3}, 0.02, "slower"), other({0.1, -0.2, 0.30000000000000004}, 0.01, "other");
+        slower({0.1, -0.2, 0.3}, 0.02, "slower"), other({0.1, -0.2, 0.3000031}, 0.01, "other");
     EXPECT_EQ(refusal([&] { refuse_repeated_records({"a.txt", "slower.txt", "other.txt"}, {&a, &slower, &other}); }), "");
+    // Scaled, the sign flipped, or off by a rounding: one record to a study that scales each to every q.
+    const dynamics::SampledInput scaled({-0.15, 0.3, -0.45}, 0.01, "scaled"),
+        rounded({0.1, -0.2, 0.30000000000000004}, 0.01, "rounded");
+    for (const dynamics::SampledInput* copy : {&scaled, &rounded})
+        EXPECT_NE(refusal([&] { refuse_repeated_records({"a.txt", "copy.txt"}, {&a, copy}); })
+                      .find("copy.txt: the same record as a.txt scaled (records 1 and 2"),
+                  std::string::npos)
+            << copy->samples()[2];
     EXPECT_EQ(refusal([&] { refuse_repeated_records({"a.txt", "slower.txt", "b.txt"}, {&a, &slower, &b}); }),
               "b.txt: the same record as a.txt (records 1 and 3: the same step and samples), whose cases would count "
               "twice: give each record once");

@@ -1,5 +1,6 @@
 #include "studies/distinct_inputs.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <map>
@@ -10,6 +11,12 @@
 namespace rocking::studies {
 
 namespace {
+
+// Two shapes closer than this at every sample, relative to the peak, are one
+// record: a copy printed to 7 digits and scaled differs by about 1e-7, two
+// recordings of different motions by far more at most samples; and the
+// studies bisect q to 1e-6.
+constexpr double kSameShape = 1e-6;
 
 std::string g7(double v) {
     char text[40];
@@ -23,6 +30,21 @@ std::string content_digest(const dynamics::SampledInput& input) {
     digest.update(&dt, sizeof dt);
     digest.update(input.samples().data(), input.samples().size() * sizeof(double));
     return digest.hex();
+}
+
+// Whether b is a times a factor, the sign included: the same step and
+// length, and every sample of b / peak(b) within kSameShape of +-a / peak(a).
+bool scaled_copy(const dynamics::SampledInput& a, const dynamics::SampledInput& b) {
+    const std::vector<double>& x = a.samples();
+    const std::vector<double>& y = b.samples();
+    if (a.dt() != b.dt() || x.size() != y.size() || !(a.peak() > 0) || !(b.peak() > 0)) return false;
+    for (const double sign : {1.0, -1.0}) {
+        const double ratio = sign * b.peak() / a.peak();
+        std::size_t k = 0;
+        while (k < x.size() && std::fabs(y[k] - ratio * x[k]) <= kSameShape * b.peak()) ++k;
+        if (k == x.size()) return true;
+    }
+    return false;
 }
 
 }  // namespace
@@ -49,6 +71,20 @@ void refuse_repeated_records(const std::vector<std::string>& files,
                                         std::to_string(first->second + 1) + " and " + std::to_string(k + 1) +
                                         ": the same step and samples), whose cases would count twice: give each "
                                         "record once");
+    }
+    // Pairs of one step and length only: records of a study seldom share both,
+    // and two that do differ within a few samples.
+    std::map<std::pair<double, std::size_t>, std::vector<std::size_t>> by_step;
+    for (std::size_t k = 0; k < inputs.size(); ++k) {
+        std::vector<std::size_t>& same = by_step[{inputs[k]->dt(), inputs[k]->samples().size()}];
+        for (const std::size_t j : same)
+            if (scaled_copy(*inputs[j], *inputs[k]))
+                throw std::invalid_argument(
+                    files[k] + ": the same record as " + files[j] + " scaled (records " + std::to_string(j + 1) +
+                    " and " + std::to_string(k + 1) + ": the same step, and samples in one ratio to 1e-6 of the "
+                    "peak, the sign aside), which the study's scaling to each q makes one case, counted twice: "
+                    "give each record once");
+        same.push_back(k);
     }
 }
 

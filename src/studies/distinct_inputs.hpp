@@ -20,8 +20,11 @@ namespace rocking::studies {
 void refuse_repeated_values(const std::string& name, const std::vector<double>& values);
 
 // Throws std::invalid_argument naming both records when two inputs have the
-// same step and the same samples (in g), whatever their paths: `files[k]`
-// names `inputs[k]`.
+// same step and the same samples (in g), whatever their paths, or when one is
+// the other scaled, a flip of sign included (its samples in one ratio to the
+// other's within 1e-6 of its peak): the studies that take records (fragility,
+// eq27) scale each to every q, and the block is symmetric, so a scaled copy
+// is the same case.  `files[k]` names `inputs[k]`.
 void refuse_repeated_records(const std::vector<std::string>& files,
                              const std::vector<const dynamics::SampledInput*>& inputs);
 
