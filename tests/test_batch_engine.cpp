@@ -79,6 +79,28 @@ TEST(BatchEngine, Sha256MatchesTheStandardsVectors) {
     EXPECT_EQ(h.hex(), h.hex());  // reading the digest leaves the state as it was
 }
 
+// The processor's SHA instructions (where it has them) and the portable rounds give
+// one digest, for every length about the block's 64 bytes and pieces of every size.
+TEST(BatchEngine, Sha256sInstructionsAndPortableRoundsAgree) {
+    std::string text;
+    for (int i = 0; i < 4000; ++i) text += static_cast<char>((i * 131 + i / 7) & 0xFF);
+    for (std::size_t length : {0, 1, 55, 56, 63, 64, 65, 119, 127, 128, 129, 1000, 4000})
+        for (std::size_t piece : {1, 3, 64, 100, 4000}) {
+            Sha256 fast, portable;
+            portable.use_portable_rounds();
+            for (std::size_t at = 0; at < length; at += piece) {
+                fast.update(text.data() + at, std::min(piece, length - at));
+                portable.update(text.data() + at, std::min(piece, length - at));
+            }
+            EXPECT_EQ(fast.hex(), portable.hex()) << length << " bytes in pieces of " << piece;
+        }
+    Sha256 portable;
+    portable.use_portable_rounds();
+    portable.update("abc");
+    EXPECT_EQ(portable.hex(), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    if (!Sha256::accelerated()) GTEST_SKIP() << "this processor has no SHA instructions: the portable rounds alone were run";
+}
+
 TEST(BatchEngine, CsvCellsAreReadAsRfc4180WithSpacesAroundDropped) {
     using V = std::vector<std::string>;
     EXPECT_EQ(split_csv_line("a,b,c"), (V{"a", "b", "c"}));

@@ -364,6 +364,33 @@ TEST(Jobs, APlanKeepsEachRecordsDigestAndRefusesARecordChangedSince) {
               std::string::npos) << row.text;
 }
 
+// The records a plan pins are the cells its jobs read, split_csv_line's reading of each
+// row, whether the row is cut at its commas in place (no quote) or split (a quote).
+TEST(Jobs, TheNamedRecordsAreTheCellsTheRowsJobsRead) {
+    const batch::Manifest m = batch::Manifest::parse(
+        "kind, record ,alpha\n"
+        "simulate, a.txt ,0.1\n"          // spaces around the cell
+        "simulate,\ta.txt\t,0.2\n"        // tabs: the same record
+        "\"simulate\",b.txt,0.1\n"        // a quote elsewhere in the row
+        "simulate,\"c, d.txt\",0.1\n"     // a comma inside the quoted name
+        "simulate,\"e \"\"q\"\".txt\" ,0.1\n"
+        "simulate,,0.1\n"                 // no record: no input
+        "simulate\n"                      // too short: no input
+        "simulate,\"f.txt\"g,0.1\n"       // text after a closing quote: the row is refused
+        "simulate,h.txt\n"
+        "simulate,b.txt,0.3\n",
+        "/tmp/m.csv");
+    const std::vector<jobs::NamedRecord> named = jobs::named_records(m);
+    const std::vector<std::string> want = {"a.txt", "b.txt", "c, d.txt", "e \"q\".txt", "h.txt"};
+    ASSERT_EQ(named.size(), want.size());
+    for (std::size_t k = 0; k < want.size(); ++k) {
+        EXPECT_EQ(named[k].cell, want[k]);
+        EXPECT_EQ(named[k].path, "/tmp/" + want[k]);
+    }
+    EXPECT_EQ(named[3].line, 6);
+    EXPECT_EQ(named[4].line, 10);
+}
+
 // A relative record that is not there: the message says the folder it was
 // looked for in (issue 38: a manifest read from /dev/stdin or through a link).
 TEST(Jobs, AMissingRelativeRecordNamesTheFolderItWasResolvedFrom) {

@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cstring>
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define ROCKING_SHA_NI 1
+#endif
+
 namespace rocking::batch {
 
 namespace {
@@ -19,7 +24,84 @@ constexpr std::uint32_t kRound[64] = {
 
 inline std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
 
+#ifdef ROCKING_SHA_NI
+// The processor's SHA-256 instructions (SHA-NI: Intel since Goldmont and Ice
+// Lake, AMD since Zen), chosen at run time: about five times faster than
+// the portable rounds, which took 44 % of a batch of 200 records' start
+// (every record is hashed when the batch begins and again when a job first
+// reads it) and a quarter of a batch of idle jobs (the results' digest).
+// The state is FIPS 180-4's a..h, held as the instructions want it: ABEF and CDGH.
+#define ROCKING_SHA_TARGET __attribute__((target("sha,sse4.1")))
+
+ROCKING_SHA_TARGET inline void four_rounds(__m128i& abef, __m128i& cdgh, __m128i w, int group) {
+    const __m128i wk = _mm_add_epi32(w, _mm_loadu_si128(reinterpret_cast<const __m128i*>(kRound + 4 * group)));
+    cdgh = _mm_sha256rnds2_epu32(cdgh, abef, wk);
+    abef = _mm_sha256rnds2_epu32(abef, cdgh, _mm_shuffle_epi32(wk, 0x0E));
+}
+
+// w[t..t+3] of the message schedule from the four groups before it, oldest first.
+ROCKING_SHA_TARGET inline __m128i next_words(__m128i w16, __m128i w12, __m128i w8, __m128i w4) {
+    const __m128i partial = _mm_add_epi32(_mm_sha256msg1_epu32(w16, w12), _mm_alignr_epi8(w4, w8, 4));
+    return _mm_sha256msg2_epu32(partial, w4);
+}
+
+ROCKING_SHA_TARGET void blocks_sha_ni(std::uint32_t h[8], const unsigned char* p, std::size_t blocks) {
+    const __m128i big_endian = _mm_set_epi64x(0x0c0d0e0f08090a0bULL, 0x0405060700010203ULL);
+    const __m128i dcba = _mm_shuffle_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(h)), 0xB1);  // CDAB
+    const __m128i efgh = _mm_shuffle_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(h + 4)), 0x1B);
+    __m128i abef = _mm_alignr_epi8(dcba, efgh, 8);
+    __m128i cdgh = _mm_blend_epi16(efgh, dcba, 0xF0);
+    for (; blocks > 0; --blocks, p += 64) {
+        const __m128i abef_before = abef, cdgh_before = cdgh;
+        __m128i w[4];
+        for (int i = 0; i < 4; ++i)
+            w[i] = _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p + 16 * i)), big_endian);
+        four_rounds(abef, cdgh, w[0], 0);
+        four_rounds(abef, cdgh, w[1], 1);
+        four_rounds(abef, cdgh, w[2], 2);
+        four_rounds(abef, cdgh, w[3], 3);
+        for (int group = 4; group < 16; group += 4) {
+            w[0] = next_words(w[0], w[1], w[2], w[3]);
+            four_rounds(abef, cdgh, w[0], group);
+            w[1] = next_words(w[1], w[2], w[3], w[0]);
+            four_rounds(abef, cdgh, w[1], group + 1);
+            w[2] = next_words(w[2], w[3], w[0], w[1]);
+            four_rounds(abef, cdgh, w[2], group + 2);
+            w[3] = next_words(w[3], w[0], w[1], w[2]);
+            four_rounds(abef, cdgh, w[3], group + 3);
+        }
+        abef = _mm_add_epi32(abef, abef_before);
+        cdgh = _mm_add_epi32(cdgh, cdgh_before);
+    }
+    const __m128i feba = _mm_shuffle_epi32(abef, 0x1B);
+    const __m128i dchg = _mm_shuffle_epi32(cdgh, 0xB1);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(h), _mm_blend_epi16(feba, dchg, 0xF0));      // DCBA: a..d
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(h + 4), _mm_alignr_epi8(dchg, feba, 8));  // HGFE: e..h
+}
+
+bool have_sha_ni() {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("sha") && __builtin_cpu_supports("sse4.1") && __builtin_cpu_supports("ssse3");
+}
+#endif
+
 }  // namespace
+
+bool Sha256::accelerated() {
+#ifdef ROCKING_SHA_NI
+    static const bool yes = have_sha_ni();
+    return yes;
+#else
+    return false;
+#endif
+}
+
+void Sha256::blocks(const unsigned char* p, std::size_t count) {
+#ifdef ROCKING_SHA_NI
+    if (accelerated() && !portable_) return blocks_sha_ni(h_, p, count);
+#endif
+    for (; count > 0; --count, p += 64) block(p);
+}
 
 Sha256::Sha256()
     : h_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
@@ -51,10 +133,12 @@ void Sha256::update(const void* data, std::size_t size) {
         std::memcpy(buffer_ + used_, p, take);
         used_ += take, p += take, size -= take;
         if (used_ < 64) return;
-        block(buffer_);
+        blocks(buffer_, 1);
         used_ = 0;
     }
-    for (; size >= 64; p += 64, size -= 64) block(p);
+    blocks(p, size / 64);
+    p += size / 64 * 64;
+    size %= 64;
     std::memcpy(buffer_, p, size);
     used_ = size;
 }

@@ -17,9 +17,17 @@ public:
     // The digest of everything given so far, as 64 lowercase hex digits;
     // the state is left as it was, so that more may be added after.
     std::string hex() const;
+    // Whether this processor's SHA instructions compute the digests
+    // (x86-64 with SHA-NI); the portable rounds otherwise.
+    static bool accelerated();
+    // The portable rounds even where the instructions exist: the tests
+    // check the two against each other.
+    void use_portable_rounds() { portable_ = true; }
 
 private:
     void block(const unsigned char* p);
+    void blocks(const unsigned char* p, std::size_t count);
+    bool portable_ = false;
     std::uint32_t h_[8];
     unsigned char buffer_[64];
     std::size_t used_ = 0;
