@@ -174,6 +174,7 @@ void check_outputs(const Args& a, const std::vector<std::string>& output_flags, 
         if (a.values.count(flag)) outputs.push_back({flag, a.values.at(flag)});
     for (const std::string& path : inputs) files.push_back({input_role, path});
     try {
+        for (const harness::NamedPath& out : outputs) harness::refuse_empty_name(out);
         harness::refuse_outputs_over_inputs(outputs, files);
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());

@@ -355,8 +355,6 @@ Command command_from(int argc, char** argv, bool mpi) {
     if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
     c.alphas = alphas_from(a.values.at("--alpha"));
     c.grid = grid_from(a);
-    for (const char* flag : {"--output", "--png", "--rows"})
-        if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
     check_outputs(a, {"--output", "--png", "--rows"}, {c.path});
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
