@@ -215,6 +215,27 @@ if command -v gnuplot >/dev/null; then
     status=$?
     if [[ $status != 0 ]] && grep -q "not written whole" "$tmp/err"; then ok "reproduce: a PNG cut by a full disk is the scene's error (exit $status)"
     else bad "reproduce: a PNG cut by a full disk: exit $status, $(grep -m1 -i 'plot\|error' "$tmp/err")"; fi
+    # The file gnuplot draws into has a plain name we created in the target's folder, and
+    # gnuplot runs there: whatever the target's name or folder holds, the drawn file is the
+    # one checked and renamed, and nothing is left.  A newline in the name reached the script
+    # as '?': gnuplot drew into another file, left as a complete PNG (".nl?x.png.tmpXXXXXX"),
+    # and the run failed with "empty: nothing was drawn".
+    mkdir -p "$tmp/odd"$'\n'"folder's \\ \$(x)"
+    for name in $'nl\nx.png' "it's.png" 'back\slash.png' '$(touch pwned).png' $'bad\xff.png' "odd"$'\n'"folder's \\ \$(x)/in.png"; do
+        "$rocking" "${spectrum[@]}" --png "$tmp/$name" >"$tmp/err" 2>&1
+        status=$?
+        if [[ $status == 0 ]] && /usr/bin/python3 -c "import sys; b = open(sys.argv[1], 'rb').read(); sys.exit(not (b[:8] == b'\x89PNG\r\n\x1a\n' and b[-8:-4] == b'IEND'))" "$tmp/$name"
+        then ok "--png $(printf '%q' "$name"): drawn whole at its name"
+        else bad "--png $(printf '%q' "$name"): exit $status, $(head -c 300 "$tmp/err")"; fi
+    done
+    [[ ! -e pwned && ! -e "$tmp/pwned" ]] && ok "a name is never run by a shell" || bad "a name ran as a command"
+    no_leftovers "--png at odd names" "$tmp"
+    odd_out="$tmp/out's"$'\n'"dir"
+    "$reproduce" --out "$odd_out" fig04 >"$tmp/err" 2>&1
+    if /usr/bin/python3 -c "import sys; b = open(sys.argv[1], 'rb').read(); sys.exit(not b.endswith(b'IEND\xaeB\x60\x82'))" "$odd_out/fig04/fig04.png" 2>/dev/null
+    then ok "reproduce --out with a quote and a newline: fig04.png drawn whole"
+    else bad "reproduce --out with a quote and a newline: $(grep -m1 -i 'plot\|error' "$tmp/err")"; fi
+    no_leftovers "reproduce at an odd --out" "$odd_out"
 else
     echo "skipped: PNGs on a full disk (gnuplot is not installed)"
 fi

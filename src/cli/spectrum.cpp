@@ -318,10 +318,13 @@ void write_png(const std::string& png, const records::Record& r, const SpectrumO
     }
     {
         std::ofstream out(script.path);
-        out << plot_script(data.path, file->draw_path(), r, o, studies);
+        out << plot_script(data.path, file->draw_name(), r, o, studies);
         if (!out.flush()) throw std::runtime_error("--png " + png + ": cannot write the plot's script to " + script.path);
     }
-    const std::string cmd = "gnuplot " + shell_quote(script.path) + " 2>" + shell_quote(log.path);
+    // gnuplot runs in the folder it draws in and names the file by its plain name:
+    // the target's own name never reaches the script (PlotFile::draw_name).
+    const std::string cmd = "cd " + shell_quote(file->draw_folder()) + " && gnuplot " + shell_quote(script.path) +
+                            " 2>" + shell_quote(log.path);
     if (std::system(cmd.c_str()) != 0) {
         std::ifstream in(log.path);
         std::string first, line;
