@@ -111,13 +111,14 @@ std::map<std::string, double> key_values(const std::string& flag, const std::str
     return values;
 }
 
-// Digits only: std::stoull would take "-1" as 2^64 - 1 and "1e3" as 1.
+// The whole-number rule of every option (numerics::whole_number: "7", "7.0" and "7e0" are
+// 7), in mt19937's range: it reads 32 bits and takes 0 as its default seed.
 std::uint64_t seed_option(const std::string& flag, const std::string& text) {
-    const bool digits = !text.empty() && text.size() <= 10 && text.find_first_not_of("0123456789") == std::string::npos;
-    const std::uint64_t seed = digits ? std::stoull(text) : 0;
-    if (seed < 1 || seed > 0xFFFFFFFFu)
-        throw UsageError(flag + ": the seed must be a whole number from 1 to 4294967295 (got '" + text + "')");
-    return seed;
+    try {
+        return static_cast<std::uint64_t>(numerics::whole_number(text, 1, 0xFFFFFFFFll));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(flag + ": the seed " + e.what());
+    }
 }
 
 Bootstrap bootstrap_options(const Args& a) {
