@@ -59,6 +59,13 @@ std::string describe(const harness::Deviation& d) {
 
 std::string quote(const std::string& s) { return "'" + s + "'"; }
 
+// A word for sh whatever it holds: single quotes, inner ones closed, escaped and reopened.
+std::string shell_quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
 // Plots with gnuplot when a script exists; a missing gnuplot is said, not
 // fatal, but a plot that fails or is not written whole is the scene's error.
 // gnuplot draws into a temporary file (its script's png variable) that
@@ -69,8 +76,10 @@ std::string plot(const Options& o, const std::string& scene, const std::string& 
     if (!o.plot || !fs::exists(script)) return "";
     if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return "plot skipped: gnuplot not installed (make deps)";
     harness::PlotFile png(dir + "/" + scene + ".png");
-    const std::string cmd = "gnuplot -e \"dir='" + dir + "'; png='" + png.draw_path() + "'\" " + quote(script) +
-                            " 2>" + quote(dir + "/gnuplot.log");
+    // gnuplot runs in the scene's folder (where it draws) and names every file relative
+    // to it: neither --out's spelling nor the PNG's reaches its quoting (PlotFile::draw_name).
+    const std::string cmd = "cd " + shell_quote(png.draw_folder()) + " && gnuplot -e \"dir='.'; png='" +
+                            png.draw_name() + "'\" " + shell_quote(fs::absolute(script).string()) + " 2>gnuplot.log";
     if (std::system(cmd.c_str()) != 0) throw std::runtime_error("plot failed: see " + dir + "/gnuplot.log");
     png.commit();
     return "";

@@ -24,7 +24,7 @@ jobs=$(grep -vc -e '^#' -e '^$' "$tmp/m.csv"); jobs=$((jobs - 1))
 # ---- Exit codes: 2 for the command line, 1 for the manifest, 3 for failed jobs.
 check  "no manifest"        "usage: rocking batch MANIFEST"     "$rocking" batch
 status "no manifest"        2                                   "$rocking" batch
-check  "jobs zero"          "--jobs must be an integer from 1 to 4096 (got '0')" "$rocking" batch "$tmp/m.csv" --jobs 0
+check  "jobs zero"          "--jobs: must be a whole number from 1 to 4096 (got 0)" "$rocking" batch "$tmp/m.csv" --jobs 0
 status "jobs zero"          2                                   "$rocking" batch "$tmp/m.csv" --jobs 0
 check  "resume needs output" "--resume needs --output"          "$rocking" batch "$tmp/m.csv" --resume
 status "resume needs output" 2                                  "$rocking" batch "$tmp/m.csv" --resume

@@ -52,7 +52,7 @@ code=$?
 if [[ $code == 3 ]]; then echo "ok: failed jobs under mpirun exit 3"; else echo "FAIL: failed jobs under mpirun exit $code, wanted 3"; fail=1; fi
 same "bad rows on 3 ranks = threads" "$tmp/bad_np3.csv" "$tmp/bad_threads.csv"
 check "bad rows reported" "# end: 5 jobs, 3 failed" tail -1 "$tmp/bad_np3.csv"
-check "a bad command line once, exit 2" "--jobs must be an integer" mpi 2 "$tmp/m.csv" --jobs 0
+check "a bad command line once, exit 2" "--jobs: must be a whole number" mpi 2 "$tmp/m.csv" --jobs 0
 status "a bad command line, exit 2" 2 mpi 2 "$tmp/m.csv" --jobs 0
 check "an unreadable manifest" "cannot open the manifest" mpi 2 "$tmp/none.csv"
 touch "$tmp/p.csv.partial"  # rank 0 refuses it: said before mpirun ends the job

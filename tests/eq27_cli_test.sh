@@ -43,7 +43,7 @@ status "seed alone"       2                                              "$rocki
 check "bootstrap, no seed" "--bootstrap needs --seed"                    "$rocking" eq27 x --bootstrap 100
 check "bootstrap of 1"    "--bootstrap: must be 0 (none) or from 2 to 100000 resamples (got 1)" "$rocking" eq27 x --bootstrap 1 --seed 3
 check "seed range"        "--seed: the seed must be a whole number"      "$rocking" eq27 x --bootstrap 100 --seed 0
-check "jobs range"        "--jobs must be an integer from 1 to 4096 (got '5000')" "$rocking" eq27 x --jobs 5000
+check "jobs range"        "--jobs: must be a whole number from 1 to 4096 (got 5000)" "$rocking" eq27 x --jobs 5000
 # Bad files: exit 1, the file named.
 check "missing file"      "no-such-file"                                 "$rocking" eq27 "$tmp/sine1.txt" no-such-file --unit g --dt 0.01
 status "missing file"     1                                              "$rocking" eq27 "$tmp/sine1.txt" no-such-file --unit g --dt 0.01

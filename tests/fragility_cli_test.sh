@@ -31,9 +31,9 @@ check "q-max too low"      "--q-max: must be in (1, 10000]" "$rocking" fragility
 status "q-max too low"     2                                 "$rocking" fragility x --alpha 0.1 --p 1 --q-max 1
 check "seed needed"        "--bootstrap needs --seed"       "$rocking" fragility x --alpha 0.1 --p 1 --bootstrap 10
 check "FILE first"         "FILE comes first, before '--alpha'" "$rocking" fragility --alpha 0.1 --p 1
-check "jobs zero"          "--jobs must be an integer from 1 to 4096 (got '0')" "$rocking" fragility x --alpha 0.1 --p 1 --jobs 0
+check "jobs zero"          "--jobs: must be a whole number from 1 to 4096 (got 0)" "$rocking" fragility x --alpha 0.1 --p 1 --jobs 0
 status "jobs zero"         2                                 "$rocking" fragility x --alpha 0.1 --p 1 --jobs 0
-check "jobs not a number"  "(got '2.5')"                    "$rocking" fragility x --alpha 0.1 --p 1 --jobs 2.5
+check "jobs not a number"  "(got 2.5)"                    "$rocking" fragility x --alpha 0.1 --p 1 --jobs 2.5
 check "unknown option"     "unknown option '--criterion'"   "$rocking" fragility x --alpha 0.1 --p 1 --criterion overturning
 # Bad files: exit 1, the file named.
 check "missing file"       "no-such-file"                   "$rocking" fragility "$tmp/sine1.txt" no-such-file --unit g --dt 0.01 --alpha 0.1 --p 1

@@ -108,7 +108,7 @@ done
 mpi 3 "${study[@]}" --rows "$tmp/mpi_rows.csv" >"$tmp/np3rows.json" 2>/dev/null
 same "-np 3 with a rows file = threads" "$tmp/np3rows.json" "$tmp/ref.json"
 same "-np 3's rows file = the threaded one" "$tmp/mpi_rows.csv" "$tmp/rows.csv"
-check "a bad command line under mpirun, said once" "--jobs must be an integer" mpi 2 "${study[@]}" --jobs 0
+check "a bad command line under mpirun, said once" "--jobs: must be a whole number" mpi 2 "${study[@]}" --jobs 0
 status "a bad command line under mpirun, exit 2" 2 mpi 2 "${study[@]}" --jobs 0
 check "a missing record under mpirun" "cannot open the file" mpi 2 "$tmp/none.txt" --unit g --dt 0.01 --alpha 0.1 --p 1
 exit $fail

@@ -52,6 +52,41 @@ check  "response --steps 2.5"            "--steps: must be a whole number from 1
 check  "q --pulses abc"                  "--pulses: must be a whole number from 1 to 1000 (got 'abc')" "$rocking" q --case 2 --x 1 --pulses abc
 check  "q --case 7"                      "--case: must be a whole number from 1 to 5 (got 7)" "$rocking" q --case 7 --x 1
 
+# One rule for every whole-number option, seeds and --jobs included (numerics::whole_number):
+# "10", "10.0" and "1e1" are the same number, and a refusal states the option's range.
+# --seed 1.0, --stochastic 1e0 and --jobs 1e2 were refused ("must be an integer") while
+# --points 1e1 was read.
+same_run() {  # description, three spellings' commands as one string each (word-split)
+    local what="$1" first; shift
+    # shellcheck disable=SC2086
+    first=$("$rocking" $1 2>&1); local a=$?
+    for cmd in "$@"; do
+        # shellcheck disable=SC2086
+        local got; got=$("$rocking" $cmd 2>&1); local b=$?
+        if [[ $a == 0 && $b == 0 && "$got" == "$first" ]]; then echo "ok: $what: '$cmd' as '$1'"
+        else echo "FAIL: $what: '$cmd' (exit $b) differs from '$1' (exit $a): ${got:0:200}"; fail=1; fi
+    done
+}
+same_run "--stochastic" "record synth --stochastic 7 --dt 0.01 --duration 5 --json" \
+    "record synth --stochastic 7.0 --dt 0.01 --duration 5 --json" "record synth --stochastic 7e0 --dt 0.01 --duration 5 --json"
+same_run "--seed and --bootstrap" "eq27 $r --unit g --bootstrap 100 --seed 3 --json" \
+    "eq27 $r --unit g --bootstrap 100.0 --seed 3.0 --json" "eq27 $r --unit g --bootstrap 1e2 --seed 0.3e1 --json"
+same_run "--jobs" "spectrum $r --unit g --alpha 0.1 --points 10 --jobs 2 --quiet --json" \
+    "spectrum $r --unit g --alpha 0.1 --points 10.0 --jobs 2.0 --quiet --json" "spectrum $r --unit g --alpha 0.1 --points 1e1 --jobs 2e0 --quiet --json"
+same_run "fragility --points, --seed" "fragility $r --unit g --alpha 0.1 --p 2 --points 10 --bootstrap 100 --seed 5 --jobs 1 --quiet --json" \
+    "fragility $r --unit g --alpha 0.1 --p 2 --points 1e1 --bootstrap 1e2 --seed 5e0 --jobs 1e0 --quiet --json"
+same_run "--case, --pulses" "q --case 2 --pulses 3 --x 1 --json" "q --case 2.0 --pulses 3e0 --x 1 --json"
+same_run "--steps" "response --case 2 --x 1 --steps 10 --json" "response --case 2 --x 1 --steps 1e1 --json"
+same_run "--p-points" "eq27 $r --unit g --p-min 1 --p-max 3 --p-points 3 --json" "eq27 $r --unit g --p-min 1 --p-max 3 --p-points 3.0 --json"
+check  "--jobs 1e4: the range"           "--jobs: must be a whole number from 1 to 4096 (got 1e4)" "$rocking" spectrum "$r" --alpha 0.1 --jobs 1e4 --unit g
+check  "--jobs 2.5: the range"           "--jobs: must be a whole number from 1 to 4096 (got 2.5)" "$rocking" batch "$r" --jobs 2.5
+status "and exits 2"                     2 "$rocking" batch "$r" --jobs 2.5
+check  "--seed 0: the range"             "--seed: the seed must be a whole number from 1 to 4294967295 (got 0)" "$rocking" eq27 "$r" --bootstrap 100 --seed 0 --unit g
+check  "--seed 2^32: the range"          "--seed: the seed must be a whole number from 1 to 4294967295 (got 4294967296)" "$rocking" fragility "$r" --alpha 0.1 --p 2 --bootstrap 100 --seed 4294967296 --unit g
+check  "--stochastic 1.5: the range"     "--stochastic: the seed must be a whole number from 1 to 4294967295 (got 1.5)" "$rocking" record synth --stochastic 1.5 --dt 0.01 --duration 5
+check  "--stochastic x: the range"       "--stochastic: the seed must be a whole number from 1 to 4294967295 (got 'x')" "$rocking" record synth --stochastic x --dt 0.01 --duration 5
+status "and exits 2"                     2 "$rocking" record synth --stochastic 1.5 --dt 0.01 --duration 5
+
 # ---- Samples: a subnormal is itself, an overflowing one too large; file and line, exit 1.
 printf '0.1\n1.9e-308\n-0.2\n0.05\n-1e-320\n0.0\n' > "$tmp/tiny.txt"
 check  "a sample 1.9e-308 reads"         '"samples": 6' "$rocking" record info "$tmp/tiny.txt" --unit g --dt 0.01 --json

@@ -186,12 +186,13 @@ expect_error "reproduce: a table it cannot write" 1 "fig04/fig04.csv" "is a fold
 # is whole or absent, and a failed write exits non-zero.  gnuplot exits 0 when
 # its own writes fail, so the PNG is read back to its IEND chunk before it lands.
 "$rocking" record synth --stochastic 1 --dt 0.01 --duration 8 --output "$tmp/rec.txt" >/dev/null || bad "record synth"
+"$rocking" record synth --stochastic 2 --dt 0.01 --duration 8 --output "$tmp/rec2.txt" >/dev/null || bad "record synth"
 spectrum=(spectrum "$tmp/rec.txt" --unit m/s2 --alpha 0.1 --points 12 --quiet)
 for writer in "spectrum --output" "spectrum --png" "fragility --output" "simulate --output" "record synth --output"; do
     case "$writer" in
         "spectrum --output") cmd=("${spectrum[@]}" --output /dev/full) ;;
         "spectrum --png") cmd=("${spectrum[@]}" --png /dev/full) ;;
-        "fragility --output") cmd=(fragility "$tmp/rec.txt" "$tmp/rec.txt" --unit m/s2 --alpha 0.2 --p 3 --points 4 --q-max 2 --quiet --output /dev/full) ;;
+        "fragility --output") cmd=(fragility "$tmp/rec.txt" "$tmp/rec2.txt" --unit m/s2 --alpha 0.2 --p 3 --points 4 --q-max 2 --quiet --output /dev/full) ;;
         "simulate --output") cmd=(simulate "${block[@]}" --rd 0.9 --output /dev/full) ;;
         "record synth --output") cmd=(record synth --stochastic 1 --dt 0.01 --duration 8 --output /dev/full) ;;
     esac
@@ -214,6 +215,27 @@ if command -v gnuplot >/dev/null; then
     status=$?
     if [[ $status != 0 ]] && grep -q "not written whole" "$tmp/err"; then ok "reproduce: a PNG cut by a full disk is the scene's error (exit $status)"
     else bad "reproduce: a PNG cut by a full disk: exit $status, $(grep -m1 -i 'plot\|error' "$tmp/err")"; fi
+    # The file gnuplot draws into has a plain name we created in the target's folder, and
+    # gnuplot runs there: whatever the target's name or folder holds, the drawn file is the
+    # one checked and renamed, and nothing is left.  A newline in the name reached the script
+    # as '?': gnuplot drew into another file, left as a complete PNG (".nl?x.png.tmpXXXXXX"),
+    # and the run failed with "empty: nothing was drawn".
+    mkdir -p "$tmp/odd"$'\n'"folder's \\ \$(x)"
+    for name in $'nl\nx.png' "it's.png" 'back\slash.png' '$(touch pwned).png' $'bad\xff.png' "odd"$'\n'"folder's \\ \$(x)/in.png"; do
+        "$rocking" "${spectrum[@]}" --png "$tmp/$name" >"$tmp/err" 2>&1
+        status=$?
+        if [[ $status == 0 ]] && /usr/bin/python3 -c "import sys; b = open(sys.argv[1], 'rb').read(); sys.exit(not (b[:8] == b'\x89PNG\r\n\x1a\n' and b[-8:-4] == b'IEND'))" "$tmp/$name"
+        then ok "--png $(printf '%q' "$name"): drawn whole at its name"
+        else bad "--png $(printf '%q' "$name"): exit $status, $(head -c 300 "$tmp/err")"; fi
+    done
+    [[ ! -e pwned && ! -e "$tmp/pwned" ]] && ok "a name is never run by a shell" || bad "a name ran as a command"
+    no_leftovers "--png at odd names" "$tmp"
+    odd_out="$tmp/out's"$'\n'"dir"
+    "$reproduce" --out "$odd_out" fig04 >"$tmp/err" 2>&1
+    if /usr/bin/python3 -c "import sys; b = open(sys.argv[1], 'rb').read(); sys.exit(not b.endswith(b'IEND\xaeB\x60\x82'))" "$odd_out/fig04/fig04.png" 2>/dev/null
+    then ok "reproduce --out with a quote and a newline: fig04.png drawn whole"
+    else bad "reproduce --out with a quote and a newline: $(grep -m1 -i 'plot\|error' "$tmp/err")"; fi
+    no_leftovers "reproduce at an odd --out" "$odd_out"
 else
     echo "skipped: PNGs on a full disk (gnuplot is not installed)"
 fi
@@ -250,6 +272,28 @@ for study in spectrum fragility eq27; do
     expect_error "$study --output in a missing folder, before the records are read" 1 "--output: $tmp/missing/o.csv" \
         "cannot create a file" -- "$rocking" "${cmd[@]}" --output "$tmp/missing/o.csv"
 done
+# An empty file name is a bad argument for every output option of every command: exit 2,
+# before any work (each input but simulate's is missing, so work would fail on it first), nothing left
+# behind.  simulate --output '' ran the simulation, then failed to move its temporary file
+# into place (exit 1); record synth --output '' exited 0 and wrote nothing.
+mkdir "$tmp/empty-names" && cd "$tmp/empty-names" || exit 1
+for writer in "simulate --output" "record synth --output" "spectrum --output" "spectrum --png" "spectrum --rows" \
+              "fragility --output" "fragility --rows" "eq27 --output" "batch --output"; do
+    flag=${writer##* }
+    case "$writer" in
+        simulate*) cmd=(simulate --record "$tmp/rec.txt" --unit m/s2 --alpha 0.2 --p 3) ;;  # read before, run after
+        "record synth"*) cmd=(record synth --pulse 0.5,1,0,2 --dt 0.01 --duration 5) ;;
+        spectrum*) cmd=(spectrum no-such-record.txt --unit m/s2 --alpha 0.1 --quiet) ;;
+        fragility*) cmd=(fragility no-such-record.txt no-such-record-2.txt --unit m/s2 --alpha 0.1 --p 2 --quiet) ;;
+        eq27*) cmd=(eq27 no-such-record.txt no-such-record-2.txt --unit m/s2) ;;
+        batch*) cmd=(batch no-such-manifest.csv) ;;
+    esac
+    expect_error "$writer ''" 2 "$flag: an empty file name" -- "$rocking" "${cmd[@]}" "$flag" ""
+done
+expect_error "simulate --output '' with a block of its own" 2 "--output: an empty file name" -- \
+    "$rocking" simulate "${block[@]}" --rd 0.9 --output ""
+[[ -z "$(ls -A "$tmp/empty-names")" ]] && ok "empty names: nothing written" || bad "empty names left: $(ls -A "$tmp/empty-names")"
+cd - >/dev/null || exit 1
 [[ ! -e "$tmp/missing" ]] && ok "the missing folder is still not created" || bad "the missing folder was created"
 no_leftovers "outputs checked before the work" "$tmp"
 

@@ -73,7 +73,7 @@ if [[ "$out" == *nan* || "$out" == *inf* ]]; then echo "FAIL: nan or inf in the 
 "${run[@]}" --alpha 0.2,0.1,0.15 --points 40 --json --jobs 1 >"$tmp/j1.json" 2>&1
 "${run[@]}" --alpha 0.2,0.1,0.15 --points 40 --json --jobs 3 >"$tmp/j3.json" 2>&1
 if cmp -s "$tmp/j1.json" "$tmp/j3.json"; then echo "ok: --jobs 1 and 3 identical"; else echo "FAIL: --jobs 1 and 3 differ"; fail=1; fi
-expect "jobs refused"          2 "--jobs must be an integer from 1 to 4096 (got 'x')" "${run[@]}" --alpha 0.1 --jobs x
+expect "jobs refused"          2 "--jobs: must be a whole number from 1 to 4096 (got 'x')" "${run[@]}" --alpha 0.1 --jobs x
 
 # ---- On the batch engine: each alpha a job, the same bytes however its rows came.
 same() {  # description, file, reference

@@ -66,6 +66,41 @@ check "eq27 mixes them too" "3 record(s)" "$rocking" eq27 "$tmp/plain.txt" "$tmp
     --alpha 0.2 --p-min 3 --p-max 3 --p-points 1
 check "a plain-text record still needs --unit" "is read with its unit (rocking: --unit)" "$rocking" fragility "$tmp/plain.txt" "$tmp/motion.AT2" \
     --alpha 0.2 --p 3
+# Every command that reads a record takes --unit and --dt for plain-text files only: an AT2
+# or ESM file given --dt alone reads as it states (the same output as without it), where
+# `record info r.AT2 --dt 0.01` said "--unit is required for a plain-text record"; a
+# plain-text file given --dt alone still needs --unit (exit 2, naming the file).
+for format in AT2 ASC; do
+    for cmd in "record info" "collapse --alpha 0.2" "assess --alpha 0.2 --height 2" "spectrum --alpha 0.2 --points 3 --quiet" \
+               "simulate --alpha 0.2 --p 3 --record"; do
+        read -r -a words <<<"$cmd"
+        dt_flag=--dt; [[ ${words[0]} == simulate ]] && dt_flag=--record-dt
+        case ${words[0]} in
+            record) run=(record info "$tmp/motion.$format") ;;
+            simulate) run=("${words[@]}" "$tmp/motion.$format") ;;
+            *) run=("${words[0]}" "$tmp/motion.$format" "${words[@]:1}") ;;
+        esac
+        plain=$("$rocking" "${run[@]}" 2>&1); plain_status=$?
+        given=$("$rocking" "${run[@]}" $dt_flag 0.01 2>&1); given_status=$?
+        if [[ $plain_status == 0 && $given_status == 0 && "$given" == "$plain" ]]; then echo "ok: ${words[0]} $format $dt_flag 0.01: read as the file states"
+        else echo "FAIL: ${words[0]} $format $dt_flag 0.01: exit $given_status (${given:0:200}) against $plain_status"; fail=1; fi
+    done
+done
+for study in "fragility --alpha 0.2 --p 3 --quiet" "eq27 --alpha 0.2 --p-min 3 --p-max 3 --p-points 1"; do
+    read -r -a words <<<"$study"
+    run=("${words[0]}" "$tmp/motion.AT2" "$tmp/motion.ASC" "${words[@]:1}")
+    plain=$("$rocking" "${run[@]}" 2>&1); plain_status=$?
+    given=$("$rocking" "${run[@]}" --dt 0.01 2>&1); given_status=$?
+    if [[ $plain_status == 0 && $given_status == 0 && "$given" == "$plain" ]]; then echo "ok: ${words[0]} AT2 and ESM --dt 0.01: read as the files state"
+    else echo "FAIL: ${words[0]} AT2 and ESM --dt 0.01: exit $given_status (${given:0:200}) against $plain_status"; fail=1; fi
+done
+grep -v '^#' "$tmp/plain.txt" | cut -d, -f2 >"$tmp/one-column-dt.txt"
+check  "record info of plain text with --dt alone" "--unit is required for a plain-text record (g, m/s2, cm/s2), as $tmp/one-column-dt.txt is" \
+    "$rocking" record info "$tmp/one-column-dt.txt" --dt 0.01
+status "and exits 2" 2 "$rocking" record info "$tmp/one-column-dt.txt" --dt 0.01
+check  "fragility: a plain-text file among AT2s with --dt alone" "--unit is required for a plain-text record (g, m/s2, cm/s2), as $tmp/one-column-dt.txt is" \
+    "$rocking" fragility "$tmp/motion.AT2" "$tmp/one-column-dt.txt" --dt 0.005 --alpha 0.2 --p 3
+
 # A run the solvers cannot follow (p t above 1e9, at 4.5e15 not a step moves
 # t) is refused by the option that made it, not by the solver's "no progress".
 grep -v '^#' "$tmp/plain.txt" | cut -d, -f2 >"$tmp/one-column.txt"

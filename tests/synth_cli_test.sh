@@ -151,6 +151,39 @@ refused "a q(t) that overflows within the record" "--params: q(t) = alpha1 t^(al
 refused "fc = -1" "--params: fc must be > 0 and finite (got -1)" --stochastic 1 --dt 0.01 --duration 20 --params fc=-1
 refused "zeta = 1" "--params: zeta must be in (0, 1) (got 1)" --stochastic 1 --dt 0.01 --duration 20 --params zeta=1
 
+# Each generator parameter at its lower extreme: the record is the model's limit, or it
+# is refused naming the parameter; never a silent wrong record (issue 38).  The post-filter's
+# corner toward 0 Hz passes its input: every fc below 1e-9 Hz gives fc = 1e-9's summary (at
+# 1e-14 Hz the PGV was 27 m/s, at 1e-300 the record was NaN).
+limit_summary=$("$rocking" record synth --stochastic 1 --dt 0.01 --duration 20 --params fc=1e-9 | grep 'PGA =')
+for fc in 1e-13 1e-14 3e-15 1e-200 1e-300; do
+    same "fc = $fc Hz: the post-filter passes its input" "$limit_summary" \
+        "$("$rocking" record synth --stochastic 1 --dt 0.01 --duration 20 --params fc=$fc | grep 'PGA =')"
+done
+same "fc toward 0 Hz: the unfiltered record's PGA" "  PGA = 1.4394 m/s^2 (0.1467 g), PGV = 0.2417 m/s, to_5 = 0.5275 s" "$limit_summary"
+# The filter's frequency toward 0 Hz (h underflowed at 1e-100 Hz: a record of 0/0).
+limit_summary=$("$rocking" record synth --stochastic 1 --dt 0.01 --duration 20 --params fmid=1e-9,fprime=0 | grep 'PGA =')
+for fmid in 1e-100 1e-300; do
+    same "fmid = $fmid Hz: the filter's limit" "$limit_summary" \
+        "$("$rocking" record synth --stochastic 1 --dt 0.01 --duration 20 --params fmid=$fmid,fprime=0 | grep 'PGA =')"
+done
+# A modulation narrower than the step holds none of its Arias intensity.
+for width in 0.01 0.001 1e-9; do
+    refused "D5_95 = tmid = $width s at dt = 0.01 s" "--params: D5_95 = $(/usr/bin/python3 -c "print('%.4g' % $width)") s, the modulation's 5-95 % duration" \
+        --stochastic 1 --dt 0.01 --duration 20 --params D5_95=$width,tmid=$width
+done
+kept "a modulation of 15 steps" "D5_95 = 0.1472 s, the modulation's 5-95 % duration (tmid = 0.02989 s), spans 14.72 steps" \
+    --stochastic 1 --dt 0.01 --duration 20 --params alpha1=1,alpha2=1.0000000001,alpha3=10
+# A phase far from 0: the pulse of nu mod 2 pi, whose PGV is at most A (1.55 m/s for A = 0.5 at nu = -1e17).
+for nu in -1e17 1e17 -1e300; do
+    pgv=$(json_field '["pgv_ms"]' "$rocking" record synth --pulse 0.5,1,$nu,2 --dt 0.01 --duration 5 --json)
+    if /usr/bin/python3 -c "import sys; sys.exit(not 0.4 < float('$pgv') <= 0.5)" 2>/dev/null; then echo "ok: nu = $nu: PGV $pgv within A"
+    else echo "FAIL: nu = $nu: PGV '$pgv' m/s for A = 0.5"; fail=1; fi
+done
+same "nu = 1e17 is the pulse of nu mod 2 pi" \
+    "$(json_field '["pga_ms2"]' "$rocking" record synth --pulse 0.5,1,3.6246965700849060518,2 --dt 0.01 --duration 5 --json | cut -c1-10)" \
+    "$(json_field '["pga_ms2"]' "$rocking" record synth --pulse 0.5,1,1e17,2 --dt 0.01 --duration 5 --json | cut -c1-10)"
+
 check  "--dt is required"          "--dt is required" "$rocking" record synth --pulse 0.5,1,0,2 --duration 5
 status "both generators exit 2"    2 "$rocking" record synth --pulse 0.5,1,0,2 --stochastic 1 --dt 0.01 --duration 5
 # An --output that cannot be written is an input error (exit 1) naming the file; nothing lands.

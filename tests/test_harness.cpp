@@ -127,6 +127,30 @@ TEST(OutputPaths, AnOutputThatIsAnInputIsRefusedWhateverItsSpelling) {
     EXPECT_NE(two.find("are one file"), std::string::npos) << two;
 }
 
+// An empty name is a bad argument (std::invalid_argument, exit 2 on the command line) in
+// every check, before the outputs are compared: AtomicFile("") probed a temporary file in
+// the working folder and passed, and the run failed at its end moving it onto "".
+TEST(OutputPaths, AnEmptyNameIsABadArgumentInEveryCheck) {
+    const std::string dir = rocking::testing::temp_folder("rocking-output-paths");
+    const std::string here = fs::current_path().string();
+    fs::current_path(dir);
+    for (const auto& check : std::vector<std::function<void()>>{
+             [] { check_writable({"--png", ""}); },
+             [] { check_outputs({{"--output", "x.csv"}, {"--png", ""}}, {}); },
+             [] { check_outputs({{"--png", ""}, {"--rows", ""}}, {}); }}) {
+        try {
+            check();
+            ADD_FAILURE() << "an empty name was taken";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_EQ(std::string(e.what()), "--png: an empty file name");
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "not a bad argument: " << e.what();
+        }
+    }
+    fs::current_path(here);
+    EXPECT_TRUE(fs::is_empty(dir));
+}
+
 TEST(OutputPaths, AnUnwritableOutputIsFoundBeforeTheWorkAndTheProbeLeavesNothing) {
     const std::string dir = rocking::testing::temp_folder("rocking-output-paths");
     EXPECT_NE(error_of([&] { check_outputs({{"--output", dir + "/no/such/folder/x.csv"}}, {}); })

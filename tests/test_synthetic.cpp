@@ -909,7 +909,8 @@ TEST(SyntheticStochastic, RefusalsNameTheKeysGiven) {
     EXPECT_NE(overflow.find("its tmid = 100 s is 5.78 times its D5_95 = 17.3 s"), std::string::npos) << overflow;
     EXPECT_TRUE(starts(error_of([] { stochastic_with({{"alpha1", 1}, {"alpha2", 1e5}, {"alpha3", 4000}}, 0.01, 20); }),
                        "q(t) = alpha1 t^(alpha2 - 1) exp(-alpha3 t) overflows a double"));
-    const Record largest = stochastic_with({{"alpha1", 1}, {"alpha2", 1e5}, {"alpha3", 1e5}}, 0.01, 1);
+    // (Its burst, D5_95 = 0.0074 s, needs a step of D5_95/20: RefusesAModulationTheStepCannotHold.)
+    const Record largest = stochastic_with({{"alpha1", 1}, {"alpha2", 1e5}, {"alpha3", 1e5}}, 0.0002, 1);
     EXPECT_TRUE(std::all_of(largest.accel.begin(), largest.accel.end(), [](double a) { return std::isfinite(a); }));
     // The filter's keys in their own units.
     EXPECT_EQ(error_of([] { stochastic_parameters_from({{"fc", -1.0}}); }), "fc must be > 0 and finite (got -1)");
@@ -919,4 +920,121 @@ TEST(SyntheticStochastic, RefusalsNameTheKeysGiven) {
                   .find("the filter's frequency fmid + fprime (t - tmid) is -12.73 Hz at t = 0 s (fmid = 5.87 Hz, "
                         "fprime = 1.5 Hz/s, tmid = 12.4 s): it must stay > 0 over the record (lower fprime or raise fmid)"),
               std::string::npos);
+}
+
+// ---- the generators at their parameters' lower extremes (issue 38) ----
+
+// The post-filter for every corner down to 1e-300 Hz: the ramp's exact response,
+// z'' = (1 - w t + c t) e^(-w t), to 1e-12 of its size.  Written in z itself the step's
+// particular solution 2 slope/w^3 cancelled against z: at fc = 1e-14 Hz the record's PGV
+// was 27 m/s for 0.24, and below 1e-200 Hz the record was NaN.
+TEST(SyntheticStochastic, HighPassRampResponseIsExactForEveryCorner) {
+    const double dt = 0.01, c = 0.5;
+    std::vector<double> x(2001);
+    for (std::size_t k = 0; k < x.size(); ++k) x[k] = 1 + c * dt * k;
+    for (double fc : {0.2, 1e-3, 1e-9, 1e-13, 1e-14, 3e-15, 1e-200, 1e-300}) {
+        const double w = 2 * M_PI * fc;
+        const std::vector<double> z = critically_damped_high_pass(x, dt, w);
+        double worst = 0;
+        for (std::size_t k = 0; k < z.size(); ++k) {
+            const double t = dt * k;
+            worst = std::max(worst, std::fabs(z[k] - (1 - w * t + c * t) * std::exp(-w * t)));
+        }
+        EXPECT_LE(worst, 1e-12 * largest_magnitude(x)) << "fc = " << fc << " Hz";
+    }
+}
+
+// As the corner falls the post-filter passes its input: z'' - x = -w (2 z' + w z), with
+// |z'| <= t max|x| and |w z| <= w t^2 max|x| / 2, so |z'' - x| <= 3 w T max|x| over a
+// record of length T (w T <= 1), plus rounding.  The record at fc = 1e-300 Hz is the
+// modulated noise itself.
+TEST(SyntheticStochastic, PostFilterTendsToItsInputAsTheCornerFalls) {
+    StochasticParameters p = default_stochastic_parameters();
+    const double dt = 0.01, duration = 20;
+    const std::vector<double> x = modulated_noise(p, 1, dt, duration);
+    const double peak = largest_magnitude(x);
+    for (double fc : {1e-3, 1e-9, 1e-13, 1e-14, 3e-15, 1e-200, 1e-300}) {
+        p.omega_c = 2 * M_PI * fc;
+        const Record r = stochastic_record(p, 1, dt, duration);
+        ASSERT_EQ(r.accel.size(), x.size());
+        double worst = 0;
+        for (std::size_t k = 0; k < x.size(); ++k) worst = std::max(worst, std::fabs(r.accel[k] - x[k]));
+        EXPECT_LE(worst, 3 * p.omega_c * duration * peak + 1e-14 * peak) << "fc = " << fc << " Hz";
+    }
+}
+
+// The filter's frequency toward 0 Hz (fprime = 0): the normalized sum tends to its limit,
+// nu_k = sum (k - i) u_i / sqrt(sum (k - i)^2), where h(s) ~ w^2 s.  h itself underflowed:
+// at fmid = 1e-100 Hz every h^2 was 0 and the record 0/0.  The records at 1e-9, 1e-100 and
+// 1e-300 Hz agree with that limit within w's share, h's decay zeta w T over the record
+// (1.3e-8 at 1e-9 Hz), plus rounding.
+TEST(SyntheticStochastic, FilterTowardZeroHertzTendsToItsLimit) {
+    const double dt = 0.01, duration = 10;
+    const std::vector<double> u = white_noise(1, 1001);
+    std::vector<double> limit(u.size(), 0.0);
+    for (std::size_t k = 1; k < u.size(); ++k) {
+        double sum = 0, norm = 0;
+        for (std::size_t i = 0; i < k; ++i) sum += double(k - i) * u[i], norm += double(k - i) * double(k - i);
+        limit[k] = sum / std::sqrt(norm);
+    }
+    for (double fmid : {1e-9, 1e-100, 1e-300}) {
+        StochasticParameters p = stochastic_parameters_from({{"fmid", fmid}, {"fprime", 0.0}});
+        const std::vector<double> nu = filtered_noise(p, u, dt);
+        ASSERT_EQ(nu.size(), limit.size());
+        double worst = 0;
+        for (std::size_t k = 0; k < nu.size(); ++k) worst = std::max(worst, std::fabs(nu[k] - limit[k]));
+        EXPECT_LE(worst, p.zeta_f * p.omega_mid * duration + 1e-12) << "fmid = " << fmid << " Hz";
+        EXPECT_GT(largest_magnitude(nu), 1.0) << "fmid = " << fmid << " Hz";
+    }
+}
+
+// The pulse's phase at any finite nu: nu = +-1e17 (exact doubles, ulp 16 rad) is the pulse
+// of nu mod 2 pi (by mpmath to 20 digits: 3.6246965700849060518 and 2 pi minus it).  With
+// b s + nu rounded to a double the "pulse" at nu = -1e17 had a PGV of 1.55 m/s for A = 0.5.
+TEST(SyntheticPulse, PhaseIsExactForAnyNu) {
+    const double reduced = 3.6246965700849060518;
+    for (double sign : {1.0, -1.0}) {
+        const PulseParameters far{0.5, 1.0, sign * 1e17, 2.0, 1.0};
+        const PulseParameters near{0.5, 1.0, sign > 0 ? reduced : 2 * M_PI - reduced, 2.0, 1.0};
+        const Record a = pulse_record(far, 0.01, 3), b = pulse_record(near, 0.01, 3);
+        double worst = 0;
+        for (std::size_t k = 0; k < a.accel.size(); ++k) {
+            worst = std::max(worst, std::fabs(a.accel[k] - b.accel[k]));
+            EXPECT_LE(std::fabs(pulse_velocity(far, 0.01 * k)), 0.5) << "nu = " << far.nu << ", sample " << k;
+        }
+        EXPECT_LE(worst, 1e-12 * largest_magnitude(b.accel)) << "nu = " << far.nu;
+    }
+}
+
+// A modulation that falls between the samples is not the model's record: the samples'
+// expected Arias intensity, sum q(t_k)^2 dt, against the model's integral over the record.
+// D5_95 = tmid = 0.001 s at dt = 0.01 s gave a PGA of 1e-5 m/s^2 under a header stating
+// Ia = 0.46 m/s; refused (SamplingError naming D5_95) beyond 10 % off, warned beyond 1 %,
+// and at dt = D5_95/20 kept for every shape (the worst, alpha2 -> 1, about 7 % off).
+TEST(SyntheticStochastic, RefusesAModulationTheStepCannotHold) {
+    for (double width : {1e-9, 1e-3, 0.01}) {
+        const StochasticParameters p = stochastic_parameters_from({{"D5_95", width}, {"tmid", width}});
+        try {
+            stochastic_record(p, 1, 0.01, 20);
+            ADD_FAILURE() << "D5_95 = " << width << " s at dt = 0.01 s was kept";
+        } catch (const SamplingError& e) {
+            EXPECT_NE(std::string(e.what()).find("D5_95 = " + std::string(width == 0.01 ? "0.01" : width == 1e-3 ? "0.001" : "1e-09") +
+                                                 " s, the modulation's 5-95 % duration"),
+                      std::string::npos)
+                << e.what();
+            EXPECT_NE(std::string(e.what()).find("take dt at most D5_95/20"), std::string::npos) << e.what();
+            EXPECT_NE(std::find(e.parameters.begin(), e.parameters.end(), "D5_95"), e.parameters.end());
+        }
+    }
+    // Shapes from alpha2 -> 1 (tmid/D5_95 at its lowest, 0.203) to a narrow late burst (6).
+    for (double ratio : {0.2035, 0.3, 0.717, 3.0, 6.0}) {
+        const double width = 1.0, dt = width / 20;
+        const StochasticParameters p = stochastic_parameters_from({{"D5_95", width}, {"tmid", ratio * width}});
+        EXPECT_NO_THROW(stochastic_record(p, 1, dt, ratio * width + 5 * width)) << "tmid/D5_95 = " << ratio;
+    }
+    const StochasticParameters steep = stochastic_parameters_from({{"alpha1", 1.0}, {"alpha2", 1 + 1e-10}, {"alpha3", 10.0}});
+    const std::vector<std::string> w = warnings_of(stochastic_record(steep, 1, 0.01, 20));
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_NE(w[0].find("spans 14.72 steps of dt = 0.01 s: its samples of q(t)^2 hold 90.33 %"), std::string::npos) << w[0];
+    EXPECT_TRUE(warnings_of(stochastic_record(default_stochastic_parameters(), 1, 0.01, 40)).empty());
 }

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "numerics/number_text.hpp"
+
 namespace rocking::batch {
 
 int default_threads() {
@@ -37,13 +39,13 @@ void start_threads(std::vector<std::thread>& pool, std::size_t count, const std:
     }
 }
 
+// The whole-number rule of every option (numerics::whole_number: "8", "8.0", "1e2").
 int parse_threads(const std::string& text) {
-    errno = 0;
-    char* end = nullptr;
-    const long n = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || n < 1 || n > 4096)
-        throw std::invalid_argument("--jobs must be an integer from 1 to 4096 (got '" + text + "')");
-    return static_cast<int>(n);
+    try {
+        return static_cast<int>(numerics::whole_number(text, 1, 4096));
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--jobs: ") + e.what());
+    }
 }
 
 }  // namespace rocking::batch

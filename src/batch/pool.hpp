@@ -30,8 +30,9 @@ namespace rocking::batch {
 // (its CPU affinity, so a container's or taskset's limit counts), at least 1.
 int default_threads();
 
-// Checks a --jobs value: an integer in [1, 4096].  Throws std::invalid_argument
-// naming the value otherwise.
+// Checks a --jobs value: a whole number in [1, 4096] by numerics::whole_number's rule
+// ("8", "8.0", "1e2").  Throws std::invalid_argument "--jobs: must be a whole number
+// from 1 to 4096 (got TEXT)" otherwise.
 int parse_threads(const std::string& text);
 
 // The threads asked for could not all be started (a limit on processes or

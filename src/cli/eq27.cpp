@@ -119,8 +119,6 @@ Command command_from(int argc, char** argv, bool mpi) {
                                                "--seed", "--unit", "--dt", "--jobs", "--output"});
     c.study = options_from(c.args);
     c.blocks = c.study.grid.blocks();
-    if (c.args.values.count("--output") && c.args.values.at("--output").empty())
-        throw UsageError("--output: an empty file name");
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
     check_outputs(c.args, {"--output"}, c.files);
     set_threads_and_flush(c.engine, c.args, mpi);

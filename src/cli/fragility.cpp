@@ -222,8 +222,6 @@ Command command_from(int argc, char** argv, bool mpi) {
     refuse_repeated_values("--alpha", alphas);
     refuse_repeated_values("--p", ps);
     c.study = options_from(a);
-    for (const char* flag : {"--output", "--rows"})
-        if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
     check_outputs(a, {"--output", "--rows"}, c.files);
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");

@@ -111,13 +111,14 @@ std::map<std::string, double> key_values(const std::string& flag, const std::str
     return values;
 }
 
-// Digits only: std::stoull would take "-1" as 2^64 - 1 and "1e3" as 1.
+// The whole-number rule of every option (numerics::whole_number: "7", "7.0" and "7e0" are
+// 7), in mt19937's range: it reads 32 bits and takes 0 as its default seed.
 std::uint64_t seed_option(const std::string& flag, const std::string& text) {
-    const bool digits = !text.empty() && text.size() <= 10 && text.find_first_not_of("0123456789") == std::string::npos;
-    const std::uint64_t seed = digits ? std::stoull(text) : 0;
-    if (seed < 1 || seed > 0xFFFFFFFFu)
-        throw UsageError(flag + ": the seed must be a whole number from 1 to 4294967295 (got '" + text + "')");
-    return seed;
+    try {
+        return static_cast<std::uint64_t>(numerics::whole_number(text, 1, 0xFFFFFFFFll));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(flag + ": the seed " + e.what());
+    }
 }
 
 Bootstrap bootstrap_options(const Args& a) {
@@ -174,6 +175,7 @@ void check_outputs(const Args& a, const std::vector<std::string>& output_flags, 
         if (a.values.count(flag)) outputs.push_back({flag, a.values.at(flag)});
     for (const std::string& path : inputs) files.push_back({input_role, path});
     try {
+        for (const harness::NamedPath& out : outputs) harness::refuse_empty_name(out);
         harness::refuse_outputs_over_inputs(outputs, files);
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
@@ -394,19 +396,26 @@ std::string json_number(double v) { return std::isfinite(v) ? harness::format_nu
 // A record file by content; --unit (and, for one column, the sampling step
 // under dt_flag) reads a plain-text one, and leaves an ESM or AT2 file, which
 // states its own, to its format: a study may mix the three.
+// --unit and --dt apply to plain-text records only (records::read_with_unit): a file that
+// states its own unit and step (ESM, AT2) is read as it says, with them or without, in
+// every command alike, so that `record info r.AT2 --dt 0.01` reads r.AT2 as fragility and
+// eq27 read it beside a text record; only a plain-text file needs --unit.
 records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag) {
-    if (a.values.count("--unit") || a.values.count(dt_flag)) {
-        if (!a.values.count("--unit")) throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2)");
-        const std::string unit = a.values.at("--unit");
+    if (!a.values.count("--unit") && !a.values.count(dt_flag)) return records::read_any(path);
+    if (a.values.count("--unit")) {
+        const std::string& unit = a.values.at("--unit");
         if (unit != "g" && unit != "m/s2" && unit != "cm/s2")
             throw UsageError("--unit: '" + unit + "' is not a unit it knows (g, m/s2, cm/s2)");
-        const double dt = a.values.count(dt_flag) ? number(dt_flag, a.values.at(dt_flag)) : 0.0;
-        // 0 would read as "not given" (a two-column file), and a negative
-        // step was reported against the file's line 0.
-        if (a.values.count(dt_flag) && !(dt > 0)) throw UsageError(dt_flag + ": must be > 0 (got " + a.values.at(dt_flag) + ")");
-        return records::read_with_unit(path, unit, dt);
     }
-    return records::read_any(path);
+    const double dt = a.values.count(dt_flag) ? number(dt_flag, a.values.at(dt_flag)) : 0.0;
+    // 0 would read as "not given" (a two-column file), and a negative
+    // step was reported against the file's line 0.
+    if (a.values.count(dt_flag) && !(dt > 0)) throw UsageError(dt_flag + ": must be > 0 (got " + a.values.at(dt_flag) + ")");
+    if (a.values.count("--unit")) return records::read_with_unit(path, a.values.at("--unit"), dt);
+    const std::string text = records::read_text(path);
+    if (records::states_its_units(text)) return records::parse_any(text, path);
+    throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2), as " + path + " is (" + dt_flag +
+                     " sets its step, and applies to plain-text records only)");
 }
 
 }  // namespace rocking::cli

@@ -68,8 +68,8 @@ Args parse(int argc, char** argv, int first, const std::vector<std::string>& all
 // without a value.
 std::vector<char*> without_engine_switches(int argc, char** argv, bool& resume, bool& quiet);
 // Before any work (issue 38): the outputs the options in output_flags name
-// are neither one of the input files (a UsageError) nor one another, and
-// each can be written (a runtime_error, as a failed write at the end was).
+// are not empty, neither one of the input files (UsageErrors) nor one another,
+// and each can be written (a runtime_error, as a failed write at the end was).
 void check_outputs(const Args& a, const std::vector<std::string>& output_flags, const std::vector<std::string>& inputs,
                    const std::string& input_role = "FILE");
 // Refuses a run the solvers cannot follow (dynamics::unresolvable_run: p

@@ -318,10 +318,13 @@ void write_png(const std::string& png, const records::Record& r, const SpectrumO
     }
     {
         std::ofstream out(script.path);
-        out << plot_script(data.path, file->draw_path(), r, o, studies);
+        out << plot_script(data.path, file->draw_name(), r, o, studies);
         if (!out.flush()) throw std::runtime_error("--png " + png + ": cannot write the plot's script to " + script.path);
     }
-    const std::string cmd = "gnuplot " + shell_quote(script.path) + " 2>" + shell_quote(log.path);
+    // gnuplot runs in the folder it draws in and names the file by its plain name:
+    // the target's own name never reaches the script (PlotFile::draw_name).
+    const std::string cmd = "cd " + shell_quote(file->draw_folder()) + " && gnuplot " + shell_quote(script.path) +
+                            " 2>" + shell_quote(log.path);
     if (std::system(cmd.c_str()) != 0) {
         std::ifstream in(log.path);
         std::string first, line;
@@ -355,8 +358,6 @@ Command command_from(int argc, char** argv, bool mpi) {
     if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
     c.alphas = alphas_from(a.values.at("--alpha"));
     c.grid = grid_from(a);
-    for (const char* flag : {"--output", "--png", "--rows"})
-        if (a.values.count(flag) && a.values.at(flag).empty()) throw UsageError(std::string(flag) + ": an empty file name");
     check_outputs(a, {"--output", "--png", "--rows"}, {c.path});
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())

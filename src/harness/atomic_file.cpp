@@ -76,11 +76,11 @@ std::string random_suffix() {
 
 // "DIR/.NAME.tmp" for "DIR/NAME"; the name is cut so that the temporary one
 // stays within the 255 bytes a file name may have.
-std::string temporary_prefix(const std::string& path) {
+std::string temporary_prefix(const std::string& path, AtomicFile::Temporary naming) {
     const auto slash = path.find_last_of('/');
     const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
     const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-    return dir + "." + name.substr(0, 200) + ".tmp";
+    return dir + "." + (naming == AtomicFile::Temporary::plain ? std::string("rocking") : name.substr(0, 200)) + ".tmp";
 }
 
 std::string folder_of(const std::string& path) {
@@ -90,7 +90,7 @@ std::string folder_of(const std::string& path) {
 
 }  // namespace
 
-AtomicFile::AtomicFile(const std::string& path) : path_(path), shown_(path) {
+AtomicFile::AtomicFile(const std::string& path, Temporary naming) : path_(path), shown_(path) {
     struct stat existing {};
     const bool exists = ::stat(path.c_str(), &existing) == 0;
     if (exists && S_ISDIR(existing.st_mode)) fail("is a folder, not a file", 0);
@@ -106,7 +106,7 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path), shown_(path) {
         if (::access(path.c_str(), W_OK) != 0) fail("cannot write", errno);
         if (char* real = ::realpath(path.c_str(), nullptr)) path_ = real, std::free(real);
     }
-    const std::string prefix = temporary_prefix(path_);
+    const std::string prefix = temporary_prefix(path_, naming);
     install_handlers();
     // A signal between creating the file and listing it would leave it: held until listed.
     sigset_t held, before;

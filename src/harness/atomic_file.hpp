@@ -23,8 +23,13 @@ namespace rocking::harness {
 
 class AtomicFile {
 public:
+    // How the temporary file beside the target is named: ".NAME.tmpXXXXXX" (NAME the
+    // target's, so that a leftover says whose it was), or ".rocking.tmpXXXXXX", plain
+    // characters whatever the target's name, for a path another program must read
+    // from a script (gnuplot read a newline in NAME as '?' and drew into another file).
+    enum class Temporary { named_after_target, plain };
     // Throws std::runtime_error ("PATH: cannot create a file in DIR: reason").
-    explicit AtomicFile(const std::string& path);
+    explicit AtomicFile(const std::string& path, Temporary naming = Temporary::named_after_target);
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
     // Removes the temporary file unless commit() succeeded.

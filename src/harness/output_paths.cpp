@@ -58,7 +58,12 @@ void refuse_outputs_over_inputs(const std::vector<NamedPath>& outputs, const std
         }
 }
 
+void refuse_empty_name(const NamedPath& output) {
+    if (output.path.empty()) throw std::invalid_argument(output.role + ": an empty file name");
+}
+
 void check_writable(const NamedPath& output) {
+    refuse_empty_name(output);
     struct stat s {};
     if (::stat(output.path.c_str(), &s) == 0 && !S_ISREG(s.st_mode) && !S_ISDIR(s.st_mode)) {
         if (::access(output.path.c_str(), W_OK) != 0)
@@ -73,6 +78,7 @@ void check_writable(const NamedPath& output) {
 }
 
 void check_outputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
+    for (const NamedPath& out : outputs) refuse_empty_name(out);
     refuse_outputs_over_inputs(outputs, inputs);
     for (const NamedPath& out : outputs) check_writable(out);
 }

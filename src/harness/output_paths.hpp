@@ -27,15 +27,20 @@ bool same_file(const std::string& a, const std::string& b);
 // it exists, otherwise by its folder's canonical path and its name).
 void refuse_outputs_over_inputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
 
-// Throws std::runtime_error "ROLE: PATH: reason" when the output cannot be
+// Throws std::invalid_argument "ROLE: an empty file name" for an empty path: a bad
+// argument, which no folder's state explains (--output '' ran a whole simulation,
+// then failed to move its temporary file onto "").
+void refuse_empty_name(const NamedPath& output);
+
+// refuse_empty_name, then throws std::runtime_error "ROLE: PATH: reason" when the output cannot be
 // written as AtomicFile writes it: a temporary file beside it is created and
 // removed.  A target that exists and is not a regular file (a device, a
 // FIFO) is only checked for write permission: opening a FIFO now would hand
 // its reader an end of file before the real output.
 void check_writable(const NamedPath& output);
 
-// Both checks, before any work: the outputs against the inputs and each
-// other, then each output's folder.
+// Every check, before any work: no empty name, the outputs against the inputs
+// and each other, then each output's folder.
 void check_outputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
 
 }  // namespace rocking::harness

@@ -58,7 +58,7 @@ PlotFile::PlotFile(const std::string& target) : target_(target) {
     struct stat s {};
     const bool device = ::stat(target.c_str(), &s) == 0 && !S_ISREG(s.st_mode) && !S_ISDIR(s.st_mode);
     if (!device) {
-        beside_ = std::make_unique<AtomicFile>(target);
+        beside_ = std::make_unique<AtomicFile>(target, AtomicFile::Temporary::plain);
         draw_ = beside_->temporary_path();
         return;
     }
@@ -72,6 +72,16 @@ PlotFile::PlotFile(const std::string& target) : target_(target) {
     ::close(fd);
     draw_ = pattern;
     own_draw_ = true;
+}
+
+std::string PlotFile::draw_folder() const {
+    const auto slash = draw_.find_last_of('/');
+    return slash == std::string::npos ? "." : slash == 0 ? "/" : draw_.substr(0, slash);
+}
+
+std::string PlotFile::draw_name() const {
+    const auto slash = draw_.find_last_of('/');
+    return slash == std::string::npos ? draw_ : draw_.substr(slash + 1);
 }
 
 PlotFile::~PlotFile() {

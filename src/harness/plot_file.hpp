@@ -29,8 +29,15 @@ public:
     PlotFile& operator=(const PlotFile&) = delete;
     ~PlotFile();
 
-    // Where the drawing program writes the PNG.
+    // Where the drawing program writes the PNG: a file we created, in the target's
+    // folder (or, for a device, the temporary folder), whose name is plain characters
+    // (".rocking.tmpXXXXXX").  A script should name it as draw_name() and run in
+    // draw_folder(), so that no byte of the target's path or its folder's passes
+    // through the script's quoting: gnuplot, given a name with a newline as '?',
+    // drew into another file, which was left behind.
     const std::string& draw_path() const { return draw_; }
+    std::string draw_folder() const;
+    std::string draw_name() const;
     // Checks the PNG is whole and moves it into place; throws std::runtime_error
     // naming the target otherwise, leaving nothing at a regular target.
     void commit();

@@ -161,19 +161,33 @@ std::vector<std::string> warnings_of(const Record& r) {
     return out;
 }
 
+namespace {
+// cos and sin of x + nu, by the sum's formulas: x + nu rounded to a double loses x's digits
+// as |nu| grows (at nu = -1e17, whose ulp is 16 rad, the "pulse" had a PGV of 3 A:
+// issue 38), while libm's cos(nu) and sin(nu) are exact for any double nu.
+struct Phased {
+    double cos, sin;
+};
+Phased phased(double x, double nu) {
+    const double c = std::cos(x), s = std::sin(x), cn = std::cos(nu), sn = std::sin(nu);
+    return {c * cn - s * sn, s * cn + c * sn};
+}
+}  // namespace
+
 double pulse_velocity(const PulseParameters& p, double t) {
     const double s = t - p.t0;
     if (std::fabs(s) > half_width(p)) return 0;
     const double w = 2 * M_PI * p.fp;
-    return 0.5 * p.A * (1 + std::cos(w * s / p.gamma)) * std::cos(w * s + p.nu);
+    return 0.5 * p.A * (1 + std::cos(w * s / p.gamma)) * phased(w * s, p.nu).cos;
 }
 
 double pulse_acceleration(const PulseParameters& p, double t) {
     const double s = t - p.t0;
     if (std::fabs(s) > half_width(p)) return 0;
-    const double w = 2 * M_PI * p.fp, envelope = w * s / p.gamma, carrier = w * s + p.nu;
+    const double w = 2 * M_PI * p.fp, envelope = w * s / p.gamma;
+    const Phased carrier = phased(w * s, p.nu);
     return -(p.A * M_PI * p.fp / p.gamma) *
-           (std::sin(envelope) * std::cos(carrier) + p.gamma * std::sin(carrier) * (1 + std::cos(envelope)));
+           (std::sin(envelope) * carrier.cos + p.gamma * carrier.sin * (1 + std::cos(envelope)));
 }
 
 double pulse_displacement(const PulseParameters& p, double t) {
@@ -182,8 +196,8 @@ double pulse_displacement(const PulseParameters& p, double t) {
     const double b = 2 * M_PI * p.fp, g = p.gamma;
     auto F = [&](double x) {
         return p.A / (4 * M_PI * p.fp) *
-               (std::sin(b * x + p.nu) + g / (2 * (g - 1)) * std::sin(b * (g - 1) / g * x + p.nu) +
-                g / (2 * (g + 1)) * std::sin(b * (g + 1) / g * x + p.nu));
+               (phased(b * x, p.nu).sin + g / (2 * (g - 1)) * phased(b * (g - 1) / g * x, p.nu).sin +
+                g / (2 * (g + 1)) * phased(b * (g + 1) / g * x, p.nu).sin);
     };
     return F(s) - F(-h);
 }
@@ -394,6 +408,51 @@ void check_sum_cost(const StochasticParameters& p, double t_mid, double dt, std:
     }
 }
 
+// The discrete process's expected Arias intensity is (pi/2g) sum_k q(t_k)^2 dt (nu has unit
+// variance at k >= 1), the model's (pi/2g) int q^2: a modulation a few steps wide falls
+// between the samples (D5_95 = 0.001 s at dt = 0.01 s gave a PGA of 1e-5 m/s^2 under a
+// header stating Ia = 0.46 m/s: issue 38).  Their ratio over the record, sum over
+// integral, both of q^2's gamma density (shape 2 alpha2 - 1, rate 2 alpha3).
+double sampled_arias_share(const StochasticParameters& p, double dt, std::size_t n) {
+    const double k = 2 * p.alpha2 - 1, rate = 2 * p.alpha3, log_scale = k * std::log(rate) - gsl_sf_lngamma(k);
+    double sum = 0;
+    for (std::size_t j = 1; j < n; ++j) {
+        const double t = dt * j;
+        sum += std::exp((k - 1) * std::log(t) + log_scale - rate * t);
+    }
+    return sum * dt / gsl_cdf_gamma_P(dt * (n - 1), k, 1 / rate);
+}
+
+// More than kRefusedArias from 1, the samples are not the model's record: refused; more
+// than kWarnedArias, warned of.  At dt = D5_95/20 the share is within 7.4 % of 1 for every
+// shape (the worst, alpha2 -> 1, loses the half step after t = 0, where q^2 starts at its
+// peak; narrower shapes converge faster: docs/synthetic.md, "Sampling").
+constexpr double kRefusedArias = 0.10, kWarnedArias = 0.01;
+
+std::string modulation_text(const StochasticParameters& p, double dt, double share) {
+    const double t05 = arias_time(p, 0.05), d5_95 = arias_time(p, 0.95) - t05;
+    return "D5_95 = " + short_text(d5_95) + " s, the modulation's 5-95 % duration (tmid = " +
+           short_text(arias_time(p, 0.45)) + " s), spans " + short_text(d5_95 / dt) + " steps of dt = " + text_of(dt) +
+           " s: its samples of q(t)^2 hold " + short_text(100 * share) +
+           " % of the record's expected Arias intensity";
+}
+
+// Refuses a modulation the step cannot hold; the warning, if any, for one it holds poorly.
+std::vector<std::string> check_modulation_sampling(const StochasticParameters& p, double dt, std::size_t n) {
+    const double share = sampled_arias_share(p, dt, n);
+    if (!std::isfinite(share)) return {};  // nothing of q^2 within the record to compare
+    const double d5_95 = arias_time(p, 0.95) - arias_time(p, 0.05);
+    if (std::fabs(share - 1) > kRefusedArias)
+        throw SamplingError(modulation_text(p, dt, share) + ", more than " + short_text(100 * kRefusedArias) +
+                                " % from it: raise D5_95, or take dt at most D5_95/20 = " + short_text(d5_95 / 20) +
+                                " s",
+                            {"D5_95", "tmid", "alpha1", "alpha2", "alpha3"});
+    if (std::fabs(share - 1) > kWarnedArias)
+        return {modulation_text(p, dt, share) + ", more than " + short_text(100 * kWarnedArias) +
+                " % from it (take dt at most about " + short_text(dt * kWarnedArias / std::fabs(share - 1)) + " s)"};
+    return {};
+}
+
 // A GSL error aborts the process by default; here it becomes an exception.
 struct GslErrorsAsCodes {
     gsl_error_handler_t* previous = gsl_set_error_handler_off();
@@ -506,9 +565,16 @@ std::vector<double> filtered_noise(const StochasticParameters& p, const std::vec
     check_filter(p, t_mid, dt, dt * (n ? n - 1 : 0));
     check_sum_cost(p, t_mid, dt, n);
     const double root = std::sqrt(1 - p.zeta_f * p.zeta_f);
+    // nu is a ratio: a factor common to every h cancels.  h's own gain w/root times
+    // Im z^(k - i), of order w (k - i) sin(w root dt), underflowed as w fell (at fmid =
+    // 1e-100 Hz, h^2 = 0 and nu = 0/0: issue 38); divided by w_top sin(w_top root dt),
+    // w_top the largest omega_f over the record, it tends to (k - i) as w -> 0.
+    const double t_end = dt * (n ? n - 1 : 0);
+    const double w_top = std::max(filter_frequency(p, t_mid, 0), filter_frequency(p, t_mid, t_end));
+    const double top_sine = std::sin(w_top * root * dt);
     std::vector<double> sum(n, 0.0), norm(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
-        const double w = filter_frequency(p, t_mid, dt * i), gain = w / root;
+        const double w = filter_frequency(p, t_mid, dt * i), gain = w / w_top / top_sine;
         // h(t_k - t_i) = gain Im z^(k - i), z = exp((-zeta w + i w root) dt): one
         // complex product a step instead of an exp and a sine.
         const double decay = std::exp(-p.zeta_f * w * dt), c = decay * std::cos(w * root * dt),
@@ -531,21 +597,50 @@ std::vector<double> filtered_noise(const StochasticParameters& p, const std::vec
     return nu;
 }
 
+namespace {
+// g_n(a) = int_0^1 u^n e^(-a u) du for n = 1, 2, a = omega_c dt >= 0: the step's weights.
+// Below a = 1 by their series (the recurrence g_n = (n g_(n-1) - e^-a)/a cancels as a
+// falls); above it by that recurrence, which there loses at most a digit.
+struct StepWeights {
+    double g1, g2;
+};
+StepWeights step_weights(double a) {
+    if (a < 1) {
+        // sum_m (-a)^m / (m! (n + m + 1)): 25 terms leave 1/25! < 1e-25.
+        double g1 = 0, g2 = 0, term = 1;
+        for (int m = 0; m < 25; ++m) {
+            g1 += term / (m + 2), g2 += term / (m + 3);
+            term *= -a / (m + 1);
+        }
+        return {g1, g2};
+    }
+    const double e = std::exp(-a), g0 = -std::expm1(-a) / a, g1 = (g0 - e) / a;
+    return {g1, (2 * g1 - e) / a};
+}
+}  // namespace
+
 std::vector<double> critically_damped_high_pass(const std::vector<double>& x, double dt, double omega_c) {
     if (!(omega_c > 0) || !std::isfinite(omega_c)) refuse("omega_c", "> 0 and finite", omega_c);
     if (!(dt > 0) || !std::isfinite(dt)) refuse("dt", "> 0 and finite", dt);
-    const double w = omega_c, w2 = w * w, decay = std::exp(-w * dt);
+    // The state is (p, r) = (z', omega_c z): p' = x - 2 w p - w r, r' = w p.  Written in z
+    // itself, z ~ x/w^2 and the step's particular solution 2 slope/w^3 grow as the corner
+    // falls, and their difference cancelled: at fc = 1e-14 Hz the record's PGV was 27 m/s
+    // for 0.24 (issue 38).  Here every weight is bounded as w -> 0, where the filter passes
+    // x unchanged.  A + w I is nilpotent for A = [[-2w, -w], [w, 0]], so
+    // exp(A s) = e^(-w s) [[1 - w s, -w s], [w s, 1 + w s]], and with x = x_(k+1) - slope s
+    // over the step the forced part is dt [x_(k+1) e^-a - dx (e^-a - g1)] for p and
+    // a dt [x_(k+1) g1 - dx g2] for r (a = w dt, dx = x_(k+1) - x_k, g_n of step_weights).
+    const double w = omega_c, a = w * dt, decay = std::exp(-a);
+    const StepWeights g = step_weights(a);
     std::vector<double> out(x.size());
-    double z = 0, v = 0;  // z and z' at t_k
+    double p = 0, r = 0;  // z' and omega_c z at t_k
     for (std::size_t k = 0; k < x.size(); ++k) {
-        out[k] = x[k] - 2 * w * v - w2 * z;
+        out[k] = x[k] - w * (2 * p + r);
         if (k + 1 == x.size()) break;
-        // On [t_k, t_k + dt], x = x_k + slope s: a particular solution
-        // z_p = (x_k + slope s)/w^2 - 2 slope/w^3, and (y0 + (y0' + w y0) s) e^(-w s) for the rest.
-        const double slope = (x[k + 1] - x[k]) / dt;
-        const double y0 = z - (x[k] / w2 - 2 * slope / (w2 * w)), y1 = v - slope / w2, b = y1 + w * y0;
-        z = (y0 + b * dt) * decay + (x[k + 1] / w2 - 2 * slope / (w2 * w));
-        v = (b - w * (y0 + b * dt)) * decay + slope / w2;
+        const double next = x[k + 1], dx = next - x[k];
+        const double p_next = decay * ((1 - a) * p - a * r) + dt * (next * decay - dx * (decay - g.g1));
+        r = decay * (a * p + (1 + a) * r) + a * dt * (next * g.g1 - dx * g.g2);
+        p = p_next;
     }
     return out;
 }
@@ -569,6 +664,7 @@ Record stochastic_record(const StochasticParameters& p, std::uint64_t seed, doub
     const Frequency band = frequencies.back();
     frequencies.push_back(corner_frequency(p));
     refuse_unsampled(frequencies, dt);
+    const std::vector<std::string> held_poorly = check_modulation_sampling(p, dt, sample_count(dt, duration));
     Record r;
     r.accel = critically_damped_high_pass(modulated_noise(p, seed, dt, duration), dt, p.omega_c);
     r.format = "synthetic";
@@ -595,7 +691,9 @@ Record stochastic_record(const StochasticParameters& p, std::uint64_t seed, doub
                 {"expected_D5_95_s", text_of(t95 - t05)},
                 {"dt_s", text_of(dt)},
                 {"duration_s", text_of(duration)}};
-    state_warnings(r, sampling_warnings({band, corner_frequency(p)}, dt));
+    std::vector<std::string> warnings = sampling_warnings({band, corner_frequency(p)}, dt);
+    warnings.insert(warnings.end(), held_poorly.begin(), held_poorly.end());
+    state_warnings(r, warnings);
     return r;
 }
 

@@ -157,7 +157,8 @@ std::vector<double> filtered_noise(const StochasticParameters& p, const std::vec
 // The high-pass post-filter: the acceleration z'' of the critically damped oscillator
 //   z'' + 2 omega_c z' + omega_c^2 z = x(t),  z(0) = z'(0) = 0,
 // with x linear between samples (the engine's reading of a record), integrated
-// exactly step by step; z''(t_k) = x_k - 2 omega_c z'_k - omega_c^2 z_k.
+// exactly step by step; z''(t_k) = x_k - 2 omega_c z'_k - omega_c^2 z_k.  Stable for
+// every omega_c > 0: as omega_c -> 0 the output tends to x (docs/synthetic.md).
 std::vector<double> critically_damped_high_pass(const std::vector<double>& x, double dt, double omega_c);
 
 // q(t_k) nu(t_k) for the seed's noise, before the post-filter: n - 1 = floor(duration/dt).
