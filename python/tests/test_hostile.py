@@ -45,9 +45,10 @@ def test_a_gamma_shape_beyond_gsl_s_inverse_is_refused_not_aborted():
     assert code == 2 and message.startswith("--params: alpha2 must be in (1, 100000]"), message
     # The largest alpha2 taken still runs (the Arias route gives at most 50000.5: shape 1e5), on a
     # record short enough for t^(alpha2 - 1) to stay a double; over 20 s it overflowed, and the record
-    # was inf times 0, NaN, until q's range was checked.
-    r = rq.record_synth(stochastic=1, params={"alpha1": 1, "alpha2": 1e5, "alpha3": 1e5}, dt=0.01, duration=1)
-    assert r.samples == 101 and np.isfinite(r.accel).all()
+    # was inf times 0, NaN, until q's range was checked.  Its burst lasts D5_95 = 0.0074 s, so the
+    # step must resolve it (at 0.01 s it is refused: its samples would misstate its Arias intensity).
+    r = rq.record_synth(stochastic=1, params={"alpha1": 1, "alpha2": 1e5, "alpha3": 1e5}, dt=0.0002, duration=1)
+    assert r.samples == 5001 and np.isfinite(r.accel).all()
     with pytest.raises(ValueError, match=r"^params: q\(t\) = alpha1 t\^\(alpha2 - 1\) exp\(-alpha3 t\) overflows"):
         rq.record_synth(stochastic=1, params={"alpha1": 1, "alpha2": 1e5, "alpha3": 4000}, dt=0.01, duration=20)
 
