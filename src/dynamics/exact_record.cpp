@@ -24,8 +24,11 @@ using closed_piece::Bounce;
 using closed_piece::Closed;
 using closed_piece::series;
 
-template <class Real>
-SimulationResult run_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options) {
+// kObserved: observer is told of each flight's start (FlightStart); without
+// it, the instantiation holds none of that code.
+template <class Real, bool kObserved = false>
+SimulationResult run_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options,
+                            FlightObserver* observer = nullptr) {
     const Real alpha = model.block.alpha, p = model.block.p;
     const std::vector<double>& a = input.samples();
     const Real dt = input.dt(), inv_dt = 1.0 / dt, inv_p = 1.0 / p;
@@ -53,6 +56,13 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
 
     auto note_theta = [&](Real when, Real value) {
         if (when <= t_fin) max_theta = std::max(max_theta, std::fabs(value));
+    };
+    // A flight starts from the run's state (after an impact: unless it rests).
+    auto flight_starts = [&]() {
+        if constexpr (kObserved) {
+            if (!run.resting)
+                observer->flight({static_cast<double>(t), static_cast<double>(theta), static_cast<double>(omega), sigma});
+        }
     };
     // The rest of record piece j from s (s < t_fin, j holding s): the record
     // a0 + c1 u over 0 <= u <= u1.  The samples sit at j dt exactly; s and
@@ -105,6 +115,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         const Real t_impact = t + hit.u;
         note_theta(t_impact, 0.0);
         rules::impact(run, result, model, options, t_impact, om_i, rest);
+        flight_starts();
         // The rebounds that land inside the same record piece (an impact
         // cascade) go by the bounce form, one Newton solve each, while it can
         // be shown that nothing else happens on the way: sigma theta'' < 0 at
@@ -138,6 +149,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             ++result.steps;
             const Real t_land = t + u_land;
             rules::impact(run, result, model, options, t_land, om_land, rest);
+            flight_starts();
             // The next bounce's lin (sigma is the new corner's) with the move
             // added last: one product and an add after u_land, not two adds.
             lin_b = (piece.a0 - sigma * alpha) + piece.c1 * u_land;
@@ -397,7 +409,12 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     // The run: the rules at the top of each pass (the end of the input, the
     // uplift from rest, the free rocking's end), then the pieces to the
     // next event.
-    while (!done && rules::begin_pass(run, result, model, input, accel_at, options, t_fin, note_theta, [](Real) {})) {
+    if (!run.resting) flight_starts();  // a block released (initial_theta, initial_omega)
+    for (;;) {
+        const bool was_resting = run.resting;
+        if (done || !rules::begin_pass(run, result, model, input, accel_at, options, t_fin, note_theta, [](Real) {}))
+            break;
+        if (was_resting && !run.resting) flight_starts();  // the uplift
         const Real t_stop = t < t_fin ? t_fin : run.t_limit;
         rose = std::fabs(theta) > noise || std::fabs(omega) > 0.0;
         bool event = false;
@@ -418,6 +435,11 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
 
 SimulationResult simulate_record_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options) {
     return run_kernel<double>(model, input, options);
+}
+
+SimulationResult simulate_record_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options,
+                                        FlightObserver& observer) {
+    return run_kernel<double, true>(model, input, options, &observer);
 }
 
 SimulationResult simulate_record_kernel_extended(const Model& model, const SampledInput& input,

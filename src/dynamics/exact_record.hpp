@@ -35,6 +35,32 @@ bool record_kernel_applies(const Model& model, const GroundInput& input, const S
 // The run itself (callers normally go through simulate()).
 SimulationResult simulate_record_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options);
 
+// The start of a flight: the block leaves the ground (an uplift from rest,
+// theta = theta' = 0), rebounds from an impact (theta = 0, theta' the
+// rebound's speed, after the restitution; not a rebound that the rest rule
+// stops), or is released (options.initial_theta, initial_omega; t = 0).
+// sigma: the corner rocked on from there.  The escape margin of the flight
+// (escape_margin.hpp) is a function of this state.
+struct FlightStart {
+    double t, theta, omega;
+    int sigma;
+};
+
+// Told of every flight's start, in the order of the run.
+class FlightObserver {
+public:
+    virtual ~FlightObserver() = default;
+    virtual void flight(const FlightStart& start) = 0;
+};
+
+// The same run, telling `observer` of each flight's start.  The kernel is
+// instantiated twice: the run above has no observer's code in it at all
+// (no test, no call), and both give the same result bit for bit
+// (EscapeMargin.TheObserverChangesNoOutcome).  The caller checks
+// record_kernel_applies(): the general path has no observer.
+SimulationResult simulate_record_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options,
+                                        FlightObserver& observer);
+
 // The same kernel in long double (64-bit significand, 11 bits more than
 // double) from the same double input: the reference that measures the
 // double kernel's rounding error, which the response's sensitivity can
