@@ -51,8 +51,8 @@ Options options_from(int argc, char** argv, bool mpi) {
     return o;
 }
 
-// Before any job (issue 38): the results, and the partial file and state
-// they are written through, are none of the inputs (batch study.csv --output
+// Before any job (issue 38): the results, and the files they are written
+// through (batch::engine_files), are none of the inputs (batch study.csv --output
 // study.csv replaced the manifest at the end), and their folder is writable.
 void check_output(const std::string& output, const batch::Manifest& manifest,
                   const std::vector<jobs::NamedRecord>& records) {
@@ -60,14 +60,7 @@ void check_output(const std::string& output, const batch::Manifest& manifest,
     std::vector<harness::NamedPath> inputs = {{"the manifest", manifest.path()}};
     for (const jobs::NamedRecord& r : records)
         inputs.push_back({"the record of manifest line " + std::to_string(r.line), r.path});
-    try {
-        harness::refuse_outputs_over_inputs(
-            {{"--output", output}, {"--output's partial file", output + ".partial"},
-             {"--output's state file", output + ".partial.state"}},
-            inputs);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
-    }
+    refuse_engine_files_over({"--output", output}, inputs);
     harness::check_writable({"--output", output});
 }
 
