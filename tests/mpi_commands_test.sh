@@ -6,9 +6,12 @@
 # commands that `rocking --help` names, so that a new one is not left out.
 # eq27's IDAs shared on 1, 2 and 3 ranks give the bytes of one process on 1
 # or 2 threads (JSON, text and CSV).  An input the ranks cannot share (a
-# pipe, /dev/stdin, a FIFO) is refused before any work, said once, exit 2;
-# in a batch manifest every rank refuses it in its rows alike.  Built
-# without MPI it exits 77 (a skip) and says so.
+# pipe, a FIFO, a descriptor's path: /dev/stdin, <(...), /dev/fd/N,
+# /proc/self/fd/N, /proc/PID/fd/N) is refused before any work, said once,
+# exit 2; in a batch manifest every rank refuses it in its rows alike.
+# Threads that cannot start on the ranks end batch and fragility with exit 2,
+# said once under the command's name, no resume state left.  Built without
+# MPI it exits 77 (a skip) and says so.
 #
 #   tests/mpi_commands_test.sh ROCKING MPIEXEC     (MPIEXEC: "none" when built without MPI)
 set -u
