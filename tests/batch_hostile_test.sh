@@ -7,7 +7,11 @@
 # more threads than jobs, and threads that cannot start named by --jobs with
 # nothing left behind; an output that is an input refused before any job;
 # the folder relative records resolve from, said; a run still holding its
-# results said as such, not "add --resume".
+# results said as such, not "add --resume"; and the probe of the merged
+# build: every file the engine writes for --output (X.partial.state.tmp too)
+# refused as an input, rows the solvers cannot follow refused by their
+# column, CR-only line ends refused, results on a full disk leaving nothing
+# or resumable rows.
 #
 #   tests/batch_hostile_test.sh ROCKING
 set -u
@@ -152,12 +156,114 @@ for out in m.csv ./m.csv m_link.csv m_hard.csv "$tmp/m.csv" records/sine1.txt; d
     status "--output $out (an input) refused" 2              "$rocking" batch m.csv --output "$out"
 done
 same   "the manifest untouched" m.csv m.orig
-cp m.csv x.csv.partial
-check  "--output whose partial file is the manifest" "--output's partial file 'x.csv.partial' is the input the manifest" \
-       "$rocking" batch x.csv.partial --output x.csv
+# Every file the engine writes for --output X (X, X.partial, X.partial.state, its .tmp):
+# none may be the manifest or a record, with or without --resume.
+for suffix in .partial .partial.state .partial.state.tmp; do
+    case $suffix in
+        .partial) what="partial file" ;;
+        .partial.state) what="state file" ;;
+        *) what="state file's temporary" ;;
+    esac
+    for resume in "" --resume; do
+        cp m.csv "x.csv$suffix"
+        check  "the manifest as x.csv$suffix $resume" "--output's $what 'x.csv$suffix' is the input the manifest" \
+               "$rocking" batch "x.csv$suffix" --output x.csv $resume
+        status "the manifest as x.csv$suffix $resume" 2 "$rocking" batch "x.csv$suffix" --output x.csv $resume
+        same   "the manifest as x.csv$suffix $resume: untouched" "x.csv$suffix" m.csv
+        rm -f x.csv x.csv.partial*
+    done
+    cp records/sine1.txt "y.csv$suffix"
+    printf 'record,unit,record_dt,alpha,p\ny.csv%s,g,0.01,0.1,2\n' "$suffix" >y.csv.in
+    check  "a record as y.csv$suffix" "--output's $what 'y.csv$suffix' is the input the record of manifest line 2" \
+           "$rocking" batch y.csv.in --output y.csv
+    same   "a record as y.csv$suffix: untouched" "y.csv$suffix" records/sine1.txt
+    rm -f y.csv y.csv.partial*
+done
 check  "an output folder that does not exist" "--output: $tmp/no/r.csv: cannot create a file in $tmp/no" \
        "$rocking" batch m.csv --output "$tmp/no/r.csv"
 status "an output folder that does not exist" 1 "$rocking" batch m.csv --output "$tmp/no/r.csv"
+
+# ---- Issue 38 (hostile probe of the merged build): rows whose run the solvers
+# cannot follow (p t beyond 1e9) are refused in their error cell by the column at
+# fault, not by the solver's "no progress ... max_step_p".
+cat >huge.csv <<'EOF'
+id,kind,record,unit,record_dt,alpha,p,half_height,p_max
+p,simulate,records/sine1.txt,g,0.01,0.1,1e300,,
+dt,simulate,records/sine1.txt,g,1e300,0.1,2,,
+hh,simulate,records/sine1.txt,g,0.01,0.1,,1e-300,
+ida,ida,records/sine1.txt,g,1e300,0.1,2,,
+collapse,collapse,records/sine1.txt,g,1e300,0.1,,,
+spectrum,spectrum,records/sine1.txt,g,1e300,0.1,,,
+fine,simulate,records/sine1.txt,g,0.01,0.1,2,,
+EOF
+"$rocking" batch huge.csv --output huge_r.csv --quiet
+if $py - huge_r.csv <<'PY'
+import csv, sys
+rows = {r["id"]: r for r in csv.DictReader(l for l in open(sys.argv[1], newline="") if not l.startswith("#"))}
+want = {"p": "p", "dt": "record_dt", "hh": "half_height", "ida": "record_dt", "collapse": "record_dt",
+        "spectrum": "record_dt"}
+for id, column in want.items():
+    e = rows[id]["error"]
+    assert rows[id]["status"] == "error", (id, rows[id]["status"])
+    assert e.startswith("manifest line %d: %s: p t = " % (list(rows).index(id) + 2, column)), (id, e)
+    assert "exceeds 1e+09" in e and "no progress" not in e, (id, e)
+assert rows["fine"]["status"] == "ok" and rows["fine"]["error"] == "", rows["fine"]
+PY
+then echo "ok: unresolvable rows refused by their column (p, record_dt, half_height), the others run"
+else echo "FAIL: unresolvable rows: $(grep -v '^#' huge_r.csv | cut -c1-400)"; fail=1; fi
+
+# ---- CR-only line ends (classic Mac OS): refused naming the line, never read
+# as one header row ("the header names column 'r.AT2' twice"); a CR inside
+# quotes is the cell's.
+printf 'id,record,unit,record_dt,alpha,p\rx,records/sine1.txt,g,0.01,0.1,2\ry,records/sine1.txt,g,0.01,0.1,3\r' >cr.csv
+check  "CR-only line ends refused"  "cr.csv:1: a carriage return (CR) with no line feed after it, outside quotes" \
+       "$rocking" batch cr.csv --output cr_r.csv
+check_not "CR-only: not a header error" "twice" "$rocking" batch cr.csv --output cr_r.csv
+status "CR-only line ends: exit 1"  1   "$rocking" batch cr.csv --output cr_r.csv
+absent "CR-only: no row runs"       cr_r.csv cr_r.csv.partial
+printf 'id,record,unit,record_dt,alpha,p\nx,records/sine1.txt,g,0.01,0.1,2\ry,records/sine1.txt,g,0.01,0.1,3\n' >cr2.csv
+check  "a CR-only line end among LF ones: its line" "cr2.csv:2: a carriage return (CR)" "$rocking" batch cr2.csv
+printf 'id,record,unit,record_dt,alpha,p\r\n"a\rb",records/sine1.txt,g,0.01,0.1,2\r\n' >cr3.csv
+"$rocking" batch cr3.csv --output cr3_r.csv --quiet
+if $py -c "
+import csv
+rows = list(csv.DictReader(l for l in open('cr3_r.csv', newline='') if not l.startswith('#')))
+assert len(rows) == 1 and rows[0]['id'] == 'a\rb' and rows[0]['status'] == 'ok', rows"
+then echo "ok: a CR inside quotes is the cell's, CRLF still ends rows"; else echo "FAIL: a quoted CR"; fail=1; fi
+
+# ---- Results on a disk that fills (ulimit -f, SIGXFSZ ignored: a write past the
+# limit fails with EFBIG): a run that kept no row leaves nothing, so the next plain
+# run is not asked for a --resume; one that kept rows leaves them resumable, with no
+# temporary state beside them, and a --resume completes the clean bytes.
+full() {  # KiB, output, arguments...; its messages through a pipe, which the limit does not cut
+    local kib=$1 out=$2; shift 2
+    rm -f "$out" "$out".partial*
+    ROCKING_BATCH_FLUSH_SECONDS=0 sh -c 'trap "" XFSZ; ulimit -f "$0"; exec "$@"' "$kib" "$rocking" batch "$@" \
+        --output "$out" --jobs 1 --quiet 2>&1 >/dev/null | cat >full.err
+    return "${PIPESTATUS[0]}"
+}
+for kib in 0 1; do   # no room for the header (about 700 bytes), then none for a row
+    full $kib full_r.csv m.csv
+    code=$?
+    if [[ $code == 1 && $(cat full.err) == *"File too large"* ]]; then echo "ok: $kib KiB: exit 1, said"
+    else echo "FAIL: $kib KiB: exit $code: $(cat full.err)"; fail=1; fi
+    absent "$kib KiB: nothing left" full_r.csv full_r.csv.partial full_r.csv.partial.state full_r.csv.partial.state.tmp
+done
+status "after it, the next plain run" 0 "$rocking" batch m.csv --output full_r.csv --quiet
+full 4 full_r.csv m.csv   # some rows
+kept=$(awk '{print $5}' full_r.csv.partial.state 2>/dev/null)
+if [[ -n $kept ]] && (( kept > 0 )); then echo "ok: a full disk after $kept rows: they are kept"
+else echo "FAIL: a full disk after some rows: state '$kept', $(cat full.err)"; fail=1; fi
+absent "a full disk after some rows: no temporary state" full_r.csv.partial.state.tmp
+"$rocking" batch m.csv --output full_r.csv --resume --quiet
+same   "a full disk after some rows, resumed: the clean file" full_r.csv clean.csv
+# A partial file without its state (a run killed before its first state): the
+# message names only the file there is.
+rm -f full_r.csv*; touch full_r.csv.partial
+check     "a partial file without state: said" "full_r.csv.partial exists, with no state file" \
+          "$rocking" batch m.csv --output full_r.csv
+check_not "a partial file without state: its state not named" "full_r.csv.partial.state" \
+          "$rocking" batch m.csv --output full_r.csv
 
 # ---- The folder relative records resolve from: a manifest read from
 # /dev/stdin resolves them from the current folder, and a missing one says where.

@@ -56,7 +56,7 @@ check "a bad command line once, exit 2" "--jobs: must be a whole number" mpi 2 "
 status "a bad command line, exit 2" 2 mpi 2 "$tmp/m.csv" --jobs 0
 check "an unreadable manifest" "cannot open the manifest" mpi 2 "$tmp/none.csv"
 touch "$tmp/p.csv.partial"  # rank 0 refuses it: said before mpirun ends the job
-check "a partial file refused on 3 ranks" "Add --resume to complete it" mpi 3 "$tmp/m.csv" --output "$tmp/p.csv"
+check "a partial file refused on 3 ranks" "p.csv.partial exists, with no state file" mpi 3 "$tmp/m.csv" --output "$tmp/p.csv"
 
 # ---- Killed and resumed, on the mixed manifest four times over (long enough to be killed
 # midway once the ranks are at work).  The rows are flushed after each one, so that kills

@@ -2,8 +2,8 @@
 # rocking fragility on the batch engine (issue 29): the study's JSON is the
 # same bytes on 1 and 2 threads, with its IDAs kept in a rows file, from a
 # resume of the finished file, after a SIGKILL or a Ctrl-C resumed, and on
-# 1, 2 and 3 ranks under mpirun; a resume on another study or an edited
-# record is refused.  The records are synthetic (rocking record synth), so
+# 1, 2 and 3 ranks under mpirun; a resume on another study is refused, and
+# one over an edited record refused naming that record.  The records are synthetic (rocking record synth), so
 # that it runs without ../shared.  The MPI part is skipped, saying so, in a
 # build without MPI.
 #
@@ -52,7 +52,7 @@ check "a resume of a finished file on another study is refused" "holds no result
     --rows "$tmp/rows.csv" --resume
 cp "$tmp/rows.csv" "$tmp/edit.csv"
 awk -F, 'NR == 2000 { $2 = 2 * $2 } 1' OFS=, "$tmp/s4.txt" >"$tmp/s4.edit" && mv "$tmp/s4.edit" "$tmp/s4.txt"  # one sample doubled
-check "a resume over an edited record is refused" "holds no results of this study" \
+check "a resume over an edited record names it" "$tmp/s4.txt, a record the study names, has changed since $tmp/edit.csv was written" \
     "$rocking" fragility "${study[@]}" --rows "$tmp/edit.csv" --resume
 "$rocking" record synth --stochastic 4 --dt 0.01 --duration 20 --output "$tmp/s4.txt" >/dev/null
 status "a resume on another study exits 1" 1 \
@@ -84,6 +84,13 @@ for sig in KILL INT; do
     else
         check "a resume of the partial rows on another study is refused" "the study has changed since" \
             "$rocking" fragility "${files[@]}" --unit m/s2 --alpha 0.1 --p 1 --json --quiet --rows "$out" --resume
+        # One sample of the second record edited: the resume names that record.
+        cp "$tmp/s2.txt" "$tmp/s2.orig"
+        awk -F, 'NR == 1500 { $2 = 2 * $2 } 1' OFS=, "$tmp/s2.orig" >"$tmp/s2.txt"
+        check "a resume of the partial rows over an edited record names it" \
+            "$tmp/s2.txt, a record the study names, has changed since $out.partial was begun" \
+            "$rocking" fragility "${long[@]}" --jobs 1 --rows "$out" --resume
+        cp "$tmp/s2.orig" "$tmp/s2.txt"
     fi
     "$rocking" fragility "${long[@]}" --jobs 1 --rows "$out" --resume >"$tmp/k$sig.json"
     same "SIG$sig after $done_jobs of $long_jobs IDAs, resumed" "$tmp/k$sig.json" "$tmp/long.json"

@@ -6,9 +6,12 @@
 # commands that `rocking --help` names, so that a new one is not left out.
 # eq27's IDAs shared on 1, 2 and 3 ranks give the bytes of one process on 1
 # or 2 threads (JSON, text and CSV).  An input the ranks cannot share (a
-# pipe, /dev/stdin, a FIFO) is refused before any work, said once, exit 2;
-# in a batch manifest every rank refuses it in its rows alike.  Built
-# without MPI it exits 77 (a skip) and says so.
+# pipe, a FIFO, a descriptor's path: /dev/stdin, <(...), /dev/fd/N,
+# /proc/self/fd/N, /proc/PID/fd/N) is refused before any work, said once,
+# exit 2; in a batch manifest every rank refuses it in its rows alike.
+# Threads that cannot start on the ranks end batch and fragility with exit 2,
+# said once under the command's name, no resume state left.  Built without
+# MPI it exits 77 (a skip) and says so.
 #
 #   tests/mpi_commands_test.sh ROCKING MPIEXEC     (MPIEXEC: "none" when built without MPI)
 set -u
@@ -136,7 +139,21 @@ piped "eq27 of /dev/stdin" eq27 sine0.7.txt /dev/stdin "${plain[@]}" --alpha 0.1
 piped "a batch manifest on /dev/stdin" batch /dev/stdin --quiet
 mkfifo fifo.txt
 piped "a FIFO given to spectrum" spectrum fifo.txt "${plain[@]}" --alpha 0.1 --points 10
-check "the refusal names the file" "/dev/stdin: not a regular file" mpi 2 spectrum /dev/stdin "${plain[@]}" --alpha 0.1
+check "the refusal names the file" "/dev/stdin: a descriptor of the process that names it" \
+    mpi 2 spectrum /dev/stdin "${plain[@]}" --alpha 0.1
+# A descriptor's path (bash's <(...), /dev/fd/N, /proc/self/fd/N, /proc/PID/fd/N) is the
+# process's own, whatever file is behind it: the ranks, started by mpirun, cannot open it
+# (rank 1 said "/dev/fd/63:0: cannot open the file", exit 1).
+piped "spectrum of <(cat FILE)" spectrum <(cat sine1.txt) "${plain[@]}" --alpha 0.1 --points 10
+exec 7<sine1.txt
+for path in /dev/fd/7 /proc/self/fd/7 "/proc/$$/fd/7"; do
+    piped "spectrum of $path (a regular file behind it)" spectrum "$path" "${plain[@]}" --alpha 0.1 --points 10
+    piped "fragility of $path" fragility sine0.7.txt "$path" "${plain[@]}" --alpha 0.1 --p 2 --points 10
+    piped "a batch manifest on $path" batch "$path" --quiet
+done
+exec 7<&-
+check "a descriptor refused by its name" "/dev/fd/63: a descriptor of the process that names it" \
+    mpi 2 spectrum /dev/fd/63 "${plain[@]}" --alpha 0.1
 # A manifest's row on /dev/stdin: every rank refuses it in its row, so that the results do
 # not depend on the rank that ran the job (rank 0 alone reads mpirun's standard input).
 printf 'kind,record,unit,record_dt,alpha,p\nsimulate,/dev/stdin,g,0.01,0.1,2\nsimulate,sine1.txt,g,0.01,0.1,2\nsimulate,/dev/stdin,g,0.01,0.1,3\nsimulate,sine1.txt,g,0.01,0.1,3\n' >stdin.csv
@@ -147,9 +164,37 @@ for np in 1 2 3; do
 done
 same "a manifest row on /dev/stdin: 2 ranks = 1" stdin2.csv stdin1.csv
 same "a manifest row on /dev/stdin: 3 ranks = 1" stdin3.csv stdin1.csv
-check "the row says why" "manifest line 2: /dev/stdin: not a regular file" grep -F ',error,' stdin1.csv
+check "the row says why" "manifest line 2: /dev/stdin: a descriptor of the process that names it" grep -F ',error,' stdin1.csv
 check "the row says what to do" "save it to a file and name that file in the manifest" grep -F ',error,' stdin1.csv
 check "the other rows run" "# end: 4 jobs, 2 failed" tail -1 stdin1.csv
+# A manifest's record on /proc/self/fd/N: refused in its row alike.
+printf 'kind,record,unit,record_dt,alpha,p\nsimulate,/proc/self/fd/0,g,0.01,0.1,2\nsimulate,sine1.txt,g,0.01,0.1,2\n' >fd.csv
+mpi 2 batch fd.csv --output fd_r.csv --quiet <sine1.txt >/dev/null 2>&1
+check "a manifest row on /proc/self/fd/0" "manifest line 2: /proc/self/fd/0: a descriptor of the process" \
+    grep -F ',error,' fd_r.csv
+
+# ---- Threads that cannot start on the ranks (issue 38, item 7): every command on the
+# engine ends with exit 2, the refusal said once under its own name, and no resume state
+# is left to block the next run (MPI_ABORT had left the .partial and its state, "jobs 0").
+$py -c "
+rows = ['record,unit,record_dt,alpha,p'] + ['sine1.txt,g,0.01,0.2,%d' % (1 + k % 5) for k in range(2000)]
+open('many.csv', 'w').write('\n'.join(rows) + '\n')"
+alphas=$(seq -s, 0.10 0.01 0.29); ps=$(seq -s, 1 1 20)   # 400 IDAs
+limited() {  # description, command, output, arguments...: under ulimit -v, 1500 threads asked
+    local what="$1" command="$2" out="$3"; shift 3
+    rm -f "$out" "$out".partial*
+    (ulimit -v 1048576; mpi 2 "$command" "$@" --jobs 1500) >/dev/null 2>err.txt
+    local code=$?
+    if [[ $code == 2 && $(said err.txt "rocking $command: --jobs: ") == 1 && $(said err.txt "threads were needed") == 1 ]]
+    then echo "ok: $what: threads refused on the ranks, exit 2, said once as rocking $command"
+    else echo "FAIL: $what: exit $code, stderr: $(head -c 600 err.txt)"; fail=1; fi
+    local left; left=$(ls "$out".partial* 2>/dev/null)
+    if [[ -z $left && ! -e $out ]]; then echo "ok: $what: nothing left"; else echo "FAIL: $what: left $left $out"; fail=1; fi
+}
+limited "batch --output" batch many_r.csv many.csv --output many_r.csv
+status  "the next plain batch runs" 0 mpi 2 batch many.csv --output many_r.csv --quiet
+limited "fragility --rows" fragility fr.rows sine1.txt "${plain[@]}" --alpha "$alphas" --p "$ps" --points 4 --rows fr.rows
+
 # Without mpirun standard input is one process's: read once, as before.
 "$rocking" spectrum /dev/stdin "${plain[@]}" --alpha 0.1 --points 10 --json <sine1.txt >stdin.json
 "$rocking" spectrum sine1.txt "${plain[@]}" --alpha 0.1 --points 10 --json >file.json

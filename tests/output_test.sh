@@ -9,7 +9,7 @@ set -u
 rocking="$1"
 reproduce="$2"
 tmp=$(mktemp -d) || exit 1
-trap 'chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
+trap 'umount "$tmp/disk" 2>/dev/null; chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
 fail=0
 ok() { echo "ok: $1"; }
 bad() { echo "FAIL: $1"; fail=1; }
@@ -296,5 +296,95 @@ expect_error "simulate --output '' with a block of its own" 2 "--output: an empt
 cd - >/dev/null || exit 1
 [[ ! -e "$tmp/missing" ]] && ok "the missing folder is still not created" || bad "the missing folder was created"
 no_leftovers "outputs checked before the work" "$tmp"
+
+# --- The probe of the merged build (issue 38): every file the engine writes for
+# --rows X (X.partial, X.partial.state and its X.partial.state.tmp) is refused as
+# an input, with or without --resume, before any work, and the input stays as it
+# was (spectrum REC.partial.state --rows REC removed the record; fragility
+# Q.partial --rows Q --resume took it for its rows).
+for suffix in .partial .partial.state .partial.state.tmp; do
+    for resume in "" --resume; do
+        for study in spectrum fragility; do
+            cp "$tmp/rec.ref" "$tmp/in$suffix"
+            case $study in
+                spectrum) cmd=(spectrum "$tmp/in$suffix" --unit m/s2 --alpha 0.1 --points 4 --quiet) ;;
+                fragility) cmd=(fragility "$tmp/in$suffix" --unit m/s2 --alpha 0.2 --p 3 --points 4 --quiet) ;;
+            esac
+            expect_error "$study: its record is --rows X's X$suffix $resume" 2 "--rows's" \
+                "'$tmp/in$suffix' is the input FILE" -- "$rocking" "${cmd[@]}" --rows "$tmp/in" $resume
+            cmp -s "$tmp/in$suffix" "$tmp/rec.ref" && ok "$study: X$suffix $resume: the record untouched" ||
+                bad "$study: X$suffix $resume: the record changed or went"
+            rm -f "$tmp/in" "$tmp/in".partial*
+        done
+    done
+done
+expect_error "spectrum: --output is --rows X's X.partial" 2 "--rows's partial file" "are one file" -- \
+    "$rocking" "${spectrum[@]}" --rows "$tmp/r" --output "$tmp/r.partial"
+
+# --- A rows file on a disk that fills (ulimit -f, SIGXFSZ ignored: a write past
+# the limit fails with EFBIG): a run that kept no row leaves nothing behind, so
+# that the next plain run is not asked for a --resume (an empty sp.rows.partial
+# was left, and the advice named a state file that was not there).
+rows_on_full() {  # KiB, study...; its messages through a pipe, which the limit does not cut
+    local kib=$1; shift
+    ROCKING_BATCH_FLUSH_SECONDS=0 sh -c 'trap "" XFSZ; ulimit -f "$0"; exec "$@"' "$kib" "$rocking" "$@" \
+        --rows "$tmp/full.rows" 2>&1 >/dev/null | cat >"$tmp/err"
+    return "${PIPESTATUS[0]}"
+}
+for study in spectrum fragility; do
+    case $study in
+        spectrum) cmd=(spectrum "$tmp/rec.txt" --unit m/s2 --alpha 0.1,0.2 --points 4 --quiet) ;;
+        fragility) cmd=(fragility "$tmp/rec.txt" --unit m/s2 --alpha 0.2 --p 3,4 --points 4 --quiet) ;;
+    esac
+    for kib in 0 1; do
+        rows_on_full $kib "${cmd[@]}"
+        code=$?
+        left=$(ls "$tmp"/full.rows* 2>/dev/null)
+        if [[ $code == 1 && -z $left ]] && grep -q "File too large" "$tmp/err"; then
+            ok "$study --rows, $kib KiB to write: exit 1, nothing left"
+        else bad "$study --rows, $kib KiB to write: exit $code, left: $left; $(cat "$tmp/err")"; fi
+        "$rocking" "${cmd[@]}" --rows "$tmp/full.rows" >/dev/null 2>"$tmp/err" && ok "$study: the next plain run" ||
+            bad "$study: the next plain run: $(cat "$tmp/err")"
+        rm -f "$tmp"/full.rows*
+    done
+done
+
+# A real full disk (a 40 KiB tmpfs, as root), filled to every depth: the state's
+# temporary can fail too (a stray fr.rows.partial.state.tmp was left).  Each run
+# ends complete, or leaves nothing, or leaves rows its state counts and no
+# temporary, which a --resume completes into the bytes of a clean run; and
+# its advice names no file to remove that is not there.
+"$rocking" fragility "$tmp/rec.txt" --unit m/s2 --alpha 0.2,0.25 --p 3,4,5 --points 4 --quiet \
+    --rows "$tmp/clean.rows" >/dev/null || bad "fragility --rows, the clean run"
+disk="$tmp/disk"
+mkdir -p "$disk"
+if mount -t tmpfs -o size=40k tmpfs "$disk" 2>/dev/null; then
+    outcomes=""
+    for fill in 26000 28000 30000 31000 32000 33000 34000 35000 36000 38000; do
+        rm -rf "${disk:?}"/*
+        head -c $fill /dev/zero >"$disk/fill" 2>/dev/null
+        ROCKING_BATCH_FLUSH_SECONDS=0 "$rocking" fragility "$tmp/rec.txt" --unit m/s2 --alpha 0.2,0.25 --p 3,4,5 \
+            --points 4 --quiet --rows "$disk/fr.rows" >/dev/null 2>"$tmp/err"
+        code=$?
+        rm -f "$disk/fill"
+        named=$(sed -n 's/.*[Rr]emove //p' "$tmp/err" | grep -o "$disk/[^ :;,)]*" | sort -u)
+        for f in $named; do [[ -e $f ]] || bad "fill $fill: the advice names $f, which is not there: $(cat "$tmp/err")"; done
+        [[ -e $disk/fr.rows.partial.state.tmp ]] && bad "fill $fill: the state's temporary was left"
+        if [[ $code == 0 ]]; then outcomes+=" complete"
+        elif [[ ! -e $disk/fr.rows.partial && ! -e $disk/fr.rows.partial.state ]]; then outcomes+=" nothing"
+            "$rocking" fragility "$tmp/rec.txt" --unit m/s2 --alpha 0.2,0.25 --p 3,4,5 --points 4 --quiet \
+                --rows "$disk/fr.rows" >/dev/null 2>"$tmp/err2" || bad "fill $fill: the next plain run: $(cat "$tmp/err2")"
+        elif [[ -e $disk/fr.rows.partial.state ]] && (( $(awk '{print $5}' "$disk/fr.rows.partial.state") > 0 )); then
+            outcomes+=" kept"
+            "$rocking" fragility "$tmp/rec.txt" --unit m/s2 --alpha 0.2,0.25 --p 3,4,5 --points 4 --quiet \
+                --rows "$disk/fr.rows" --resume >/dev/null 2>"$tmp/err2" || bad "fill $fill: --resume: $(cat "$tmp/err2")"
+        else bad "fill $fill: exit $code left $(ls "$disk"): $(cat "$tmp/err")"; continue; fi
+        cmp -s "$disk/fr.rows" "$tmp/clean.rows" || bad "fill $fill: the rows file, run again, differs from the clean one"
+    done
+    ok "fragility --rows on a 40 KiB disk filled to 10 depths:$outcomes"
+    umount "$disk"
+else
+    echo "skipped: a real full disk (mount -t tmpfs is not permitted here)"
+fi
 
 exit $fail

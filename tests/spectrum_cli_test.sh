@@ -90,6 +90,15 @@ if [[ -s "$tmp/rows.err" ]]; then echo "FAIL: --rows said on stderr: $(head -3 "
 same "--resume of the finished rows = in memory" "$tmp/resumed.json" "$tmp/j1.json"
 expect "resume needs rows"     2 "--resume needs --rows FILE" "${study[@]}" --resume
 expect "resume of other alphas" 1 "holds no results of this study" "${study[@]/0.2,0.1,0.15/0.2,0.1}" --rows "$tmp/r.rows" --resume
+# An edited record: the resume names it (its samples' digest is in the rows' header).
+cp "$rec" "$tmp/sine.orig"
+$py -c "
+import sys
+v = [float(l) for l in open(sys.argv[1])]
+open(sys.argv[1], 'w').write(''.join('%.10f\n' % (x * 1.1) for x in v))" "$rec"
+expect "resume over an edited record names it" 1 "$rec, a record the study names, has changed since $tmp/r.rows was written" \
+    "${study[@]}" --rows "$tmp/r.rows" --resume
+cp "$tmp/sine.orig" "$rec"
 expect "empty rows name"       2 "--rows: an empty file name" "${study[@]}" --rows ""
 expect "rows in no folder"     1 "$tmp/no/such/dir/r.rows" "${study[@]}" --rows "$tmp/no/such/dir/r.rows"
 
@@ -121,6 +130,12 @@ else
     echo "ok: killed with $kept of 20 rows on disk"
     expect "resume of a partial with other alphas" 1 "has changed since $tmp/k.rows.partial was begun" \
         "${big[@]/$many/0.02,0.04}" --rows "$tmp/k.rows" --resume
+    cp "$long" "$tmp/long.orig"
+    awk 'NR == 3000 { $1 = 2 * $1 } 1' "$tmp/long.orig" >"$long"   # one sample doubled
+    expect "resume of a partial over an edited record names it" 1 \
+        "$long, a record the study names, has changed since $tmp/k.rows.partial was begun" \
+        "${big[@]}" --rows "$tmp/k.rows" --resume
+    cp "$tmp/long.orig" "$long"
     "${big[@]}" --rows "$tmp/k.rows" --resume >"$tmp/killed.json" 2>"$tmp/killed.err"
     same "a killed study resumed = uninterrupted" "$tmp/killed.json" "$tmp/big.json"
     expect "the resumed rows file is finished" 0 "# end: 20 jobs, 0 failed" tail -n 1 "$tmp/k.rows"

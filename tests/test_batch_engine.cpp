@@ -4,6 +4,8 @@
 // vary by 1000x: the same bytes on any number of threads.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -24,6 +26,7 @@
 #include "batch/manifest.hpp"
 #include "batch/pool.hpp"
 #include "batch/progress.hpp"
+#include "batch/ranks.hpp"
 #include "batch/results_file.hpp"
 #include "batch/sha256.hpp"
 #include "test_util.hpp"
@@ -633,4 +636,174 @@ TEST(BatchEngine, TheProgressLineSaysDoneFailedRateAndTimeLeft) {
     EXPECT_EQ(Progress::line(120, 3, 1000, 20, 2.0), "batch: 120/1000 jobs, 3 failed, 50 jobs/s, 18 s left");
     EXPECT_EQ(Progress::line(0, 0, 10, 0, 0.0), "batch: 0/10 jobs, 0 failed, 0 jobs/s, ? left");
     EXPECT_EQ(Progress::line(10, 0, 100000, 0, 1.0), "batch: 10/100000 jobs, 0 failed, 10 jobs/s, 2 h 46 min left");
+}
+
+namespace {
+
+// One rank alone, as the engine sees an MPI run of one process: what the
+// engine does under mpirun (the threads tried on every rank before the
+// first job, the rows delivered through the ranks) without MPI.
+class OneRank : public Ranks {
+public:
+    int rank() const override { return 0; }
+    int size() const override { return 1; }
+    int agree(int status) override { return status; }
+    std::string broadcast(const std::string& text) override { return text; }
+    void run(std::size_t first, std::size_t n, int, std::size_t, const JobFunction& job, const DeliverRow& deliver,
+             const std::string&) override {
+        for (std::size_t i = first; i < n; ++i) {
+            JobRow row = job(i);
+            deliver(i, row);
+        }
+    }
+};
+
+// The engine's run on `output` in a child whose files may grow to `bytes`
+// at most (SIGXFSZ ignored: a write past it fails with EFBIG); the child
+// exits 3 when the run failed with a ResultsError naming the file, or under
+// ranks, before the first job, with OtherRankFailed once rank 0 said why
+// (a row that cannot be written there is MpiRanks's to end by MPI_Abort).
+void run_on_a_full_disk(const BatchPlan& plan, const std::string& output, rlim_t bytes, bool ranks) {
+    const auto child = [&] {
+        signal(SIGXFSZ, SIG_IGN);
+        const rlimit limit{bytes, bytes};
+        setrlimit(RLIMIT_FSIZE, &limit);
+        EngineOptions o;
+        o.output = output;
+        o.quiet = true;
+        o.threads = 2;
+        o.flush_seconds = 0;  // each row a flush: the disk fills between two
+        OneRank one;
+        try {
+            run_batch(plan, o, ranks ? &one : nullptr);
+        } catch (const ResultsError& e) {
+            std::_Exit(std::string(e.what()).find(output) != std::string::npos ? 3 : 2);
+        } catch (const OtherRankFailed& e) {
+            std::_Exit(ranks && e.status == 1 ? 3 : 2);
+        }
+        std::_Exit(1);
+    };
+    // No message is matched: with no room at all, the child's stderr (a file) cannot take one.
+    EXPECT_EXIT(child(), ::testing::ExitedWithCode(3), "") << bytes << " bytes, ranks " << ranks;
+}
+
+}  // namespace
+
+// Issue 38's probe of the merged build: a full disk left an empty
+// OUT.partial (or one with a state counting no row, or a stray
+// OUT.partial.state.tmp), and the next plain run was asked for a --resume.
+TEST(BatchEngine, AFullDiskLeavesNothingUnlessRowsAreKeptAndThoseResume) {
+    const std::string dir = temp_dir();
+    const BatchPlan plan = synthetic_plan(200);
+    EngineOptions clean;
+    clean.output = dir + "/clean.csv";
+    clean.quiet = true;
+    run_batch(plan, clean, nullptr);
+    for (bool ranks : {false, true}) {
+        const std::string out = dir + (ranks ? "/ranks.csv" : "/threads.csv");
+        // No room for the header (100 bytes), then none for a row after it.
+        for (rlim_t bytes : {rlim_t{0}, rlim_t{kHeader.size() + 90}}) {
+            run_on_a_full_disk(plan, out, bytes, ranks);
+            for (const EngineFile& f : engine_files(out))
+                EXPECT_FALSE(exists(f.path)) << f.path << " left, " << bytes << " bytes, ranks " << ranks;
+        }
+        // Room for some rows: they stay, counted, and a resume completes the clean bytes.
+        run_on_a_full_disk(plan, out, 1000, ranks);
+        EXPECT_FALSE(exists(out + ".partial.state.tmp"));
+        const std::string state = slurp(out + ".partial.state");
+        EXPECT_EQ(state.find("jobs 0 "), std::string::npos) << state;
+        EXPECT_NE(state.find("jobs "), std::string::npos) << state;
+        EngineOptions o = clean;
+        o.output = out;
+        o.resume = true;
+        OneRank one;
+        const BatchOutcome resumed = run_batch(plan, o, ranks ? &one : nullptr);
+        EXPECT_GT(resumed.ran, 0u);
+        EXPECT_LT(resumed.ran, 200u);
+        EXPECT_EQ(slurp(out), slurp(clean.output)) << "ranks " << ranks;
+    }
+}
+
+// Under mpirun threads that could not start ended the run by MPI_ABORT
+// mid-protocol, leaving OUT.partial and its state ("jobs 0"), and the
+// message said "rocking batch:" for every command.  Now every rank tries
+// its threads first: status 2 on every rank, said once under the command's
+// name, the files gone.
+TEST(BatchEngine, UnderRanksThreadsThatCannotStartEndEveryRankWithStatus2AndNoFiles) {
+    const std::string dir = temp_dir();
+    const BatchPlan plan = synthetic_plan(2000);
+    const auto child = [&] {
+        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
+        setrlimit(RLIMIT_AS, &limit);
+        EngineOptions o;
+        o.quiet = true;
+        o.threads = 1500;
+        o.output = dir + "/ranks.csv";
+        o.command = "rocking fragility";
+        OneRank one;
+        try {
+            run_batch(plan, o, &one);
+        } catch (const OtherRankFailed& e) {
+            std::_Exit(e.status == 2 ? 3 : 2);
+        } catch (...) {
+            std::_Exit(4);
+        }
+        std::_Exit(1);
+    };
+    EXPECT_EXIT(child(), ::testing::ExitedWithCode(3), "^rocking fragility: --jobs: 1500 threads were needed");
+    for (const EngineFile& f : engine_files(dir + "/ranks.csv")) EXPECT_FALSE(exists(f.path)) << f.path;
+}
+
+TEST(BatchEngine, TheEnginesFilesAreTheResultsPartialStateAndItsTemporary) {
+    const std::vector<EngineFile> files = engine_files("d/r.csv");
+    ASSERT_EQ(files.size(), 4u);
+    EXPECT_EQ(files[0].path, "d/r.csv");
+    EXPECT_EQ(files[1].path, "d/r.csv.partial");
+    EXPECT_EQ(files[2].path, "d/r.csv.partial.state");
+    EXPECT_EQ(files[3].path, "d/r.csv.partial.state.tmp");
+}
+
+// Lines ended by CR alone (classic Mac OS) were read as one header row:
+// "the header names column 'r.AT2' twice".  Refused naming the line; a CR
+// in quotes is the cell's, and CRLF still ends a row.
+TEST(BatchEngine, CarriageReturnsAloneAreRefusedNamingTheLine) {
+    for (const auto& [text, line] : std::vector<std::pair<std::string, std::string>>{
+             {"id,record,alpha\rx,r.AT2,0.15\ry,r.AT2,0.2\r", "m.csv:1:"},
+             {"id,record,alpha\nx,r.AT2,0.15\ry,r.AT2,0.2\n", "m.csv:2:"},
+             {"# a comment\nid,record,alpha\r\nx,r.AT2,0.15\r\n\"y\",r.AT2\r,0.2\n", "m.csv:4:"}}) {
+        try {
+            Manifest::parse(text, "m.csv");
+            ADD_FAILURE() << "read: " << text;
+        } catch (const ManifestError& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.rfind(line + " a carriage return (CR) with no line feed after it", 0), 0u) << what;
+        }
+    }
+    const Manifest m = Manifest::parse("id,record,alpha\r\n\"a\rb\",r.AT2,0.15\r\n", "m.csv");
+    ASSERT_EQ(m.size(), 1u);
+    EXPECT_EQ(split_csv_line(m.text(0))[0], "a\rb");
+}
+
+// A descriptor's path is the process's own: the ranks mpirun starts cannot
+// open it, whatever is behind it (bash's <(...) gave "/dev/fd/63:0: cannot
+// open the file" on the ranks).
+TEST(BatchEngine, DescriptorPathsCannotBeSharedByRanks) {
+    const std::string dir = temp_dir();
+    const std::string file = dir + "/r.txt";
+    std::ofstream(file) << "0.1\n";
+    const int fd = ::open(file.c_str(), O_RDONLY);
+    ASSERT_GE(fd, 0);
+    const std::string n = std::to_string(fd);
+    for (const std::string& path : {"/dev/fd/" + n, "/proc/self/fd/" + n, "/proc/thread-self/fd/" + n,
+                                    "/proc/" + std::to_string(::getpid()) + "/fd/" + n, std::string("/dev/fd/63"),
+                                    std::string("/dev/stdin"), std::string("/proc/1/fd/0")}) {
+        EXPECT_TRUE(unshareable_by_ranks(path)) << path;
+        EXPECT_NE(unshareable_text(path).find(path + ": a descriptor of the process that names it"), std::string::npos)
+            << unshareable_text(path);
+    }
+    ::close(fd);
+    for (const std::string& path : {file, dir, dir + "/none", std::string("/dev/fd/"), std::string("/dev/fdx/3"),
+                                    std::string("/proc/self/fdinfo/1"), std::string("/proc/self/fd/x")})
+        EXPECT_FALSE(descriptor_path(path)) << path;
+    EXPECT_FALSE(unshareable_by_ranks(file));
 }

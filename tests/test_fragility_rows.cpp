@@ -99,3 +99,29 @@ TEST(FragilityRows, AFailedJobsErrorReachesTheCommandAndAForeignRowIsRefused) {
     EXPECT_NE(jobs::fragility_plan(other).digest, plan.digest);
     EXPECT_EQ(jobs::fragility_plan(jobs).digest, plan.digest);
 }
+
+// Each record is one of the plan's inputs, named as the command line gave it
+// and with its samples' digest, so that a resume over an edited record
+// names it ("the study has changed" did not say which input had).
+TEST(FragilityRows, EachRecordIsANamedInputWhoseDigestFollowsItsSamples) {
+    const dynamics::SampledInput sine = decaying_sine();
+    std::vector<double> g = sine.samples();
+    g[100] = std::nextafter(g[100], 1.0);
+    const dynamics::SampledInput edited(g, sine.dt(), "sine");
+    jobs::FragilityJobs jobs;
+    jobs.inputs = {&sine, &sine};
+    jobs.names = {"a.txt", "b.txt"};
+    jobs.blocks = {{0.1, 2.0}};
+    const batch::BatchPlan plan = jobs::fragility_plan(jobs);
+    ASSERT_EQ(plan.inputs.size(), 2u);
+    EXPECT_EQ(plan.inputs[0].name, "a.txt");
+    EXPECT_EQ(plan.inputs[1].name, "b.txt");
+    EXPECT_EQ(plan.inputs[1].digest, plan.inputs[0].digest);
+    jobs.inputs[1] = &edited;
+    const batch::BatchPlan after = jobs::fragility_plan(jobs);
+    EXPECT_EQ(after.inputs[0].digest, plan.inputs[0].digest);
+    EXPECT_NE(after.inputs[1].digest, plan.inputs[1].digest) << "one sample of b.txt";
+    EXPECT_EQ(after.digest, plan.digest) << "the study itself is the same";
+    jobs.names.clear();  // eq27's plan names none
+    EXPECT_EQ(jobs::fragility_plan(jobs).inputs[1].name, "record 1");
+}

@@ -248,5 +248,18 @@ TEST(StudyRows, TheDigestChangesWithTheStudy) {
     std::vector<double> g = input.samples();
     g[500] = std::nextafter(g[500], 1.0);
     const dynamics::SampledInput edited(g, 0.01, "sine");
-    EXPECT_NE(jobs::spectrum_plan(jobs_on(edited, {0.1, 0.2}, 20)).digest, digest) << "one sample";
+    // The record is the plan's input, named, its digest in the rows' header: a resume over an
+    // edited record names it, where "the study has changed" did not say which input had.
+    const batch::BatchPlan plan = jobs::spectrum_plan(jobs_on(input, {0.1, 0.2}, 20));
+    SpectrumJobs named = jobs_on(edited, {0.1, 0.2}, 20);
+    named.name = "r.txt";
+    const batch::BatchPlan edited_plan = jobs::spectrum_plan(named);
+    ASSERT_EQ(plan.inputs.size(), 1u);
+    ASSERT_EQ(edited_plan.inputs.size(), 1u);
+    EXPECT_EQ(edited_plan.inputs[0].name, "r.txt");
+    EXPECT_EQ(edited_plan.inputs[0].digest.size(), 64u);
+    EXPECT_NE(edited_plan.inputs[0].digest, plan.inputs[0].digest) << "one sample";
+    EXPECT_EQ(edited_plan.digest, digest) << "the study itself is the same";
+    const dynamics::SampledInput slower(input.samples(), 0.02, "sine");
+    EXPECT_NE(jobs::spectrum_plan(jobs_on(slower, {0.1, 0.2}, 20)).inputs[0].digest, plan.inputs[0].digest) << "dt";
 }

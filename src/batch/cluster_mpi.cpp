@@ -16,6 +16,7 @@
 #include <deque>
 #include <map>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -104,12 +105,14 @@ public:
     }
 
     void run(std::size_t first, std::size_t n, int threads, std::size_t window, const JobFunction& job,
-             const DeliverRow& deliver) override {
-        if (rank_ != 0) return follow(threads, job);
+             const DeliverRow& deliver, const std::string& command) override {
+        // Once the chunks go out no rank can leave alone: the others would wait for it forever.
         try {
-            lead(first, n, threads, window, job, deliver);
+            if (rank_ != 0) follow(threads, job);
+            else lead(first, n, threads, window, job, deliver);
         } catch (const std::exception& e) {
-            std::fprintf(stderr, "rocking batch: %s\n", e.what());
+            std::fprintf(stderr, "%s: %s%s\n", command.c_str(),
+                         rank_ == 0 ? "" : ("rank " + std::to_string(rank_) + ": ").c_str(), e.what());
             MPI_Abort(MPI_COMM_WORLD, 1);
         }
     }

@@ -8,7 +8,10 @@
 #include <cstdlib>
 #include <exception>
 #include <algorithm>
+#include <condition_variable>
 #include <memory>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 #include "batch/interrupt.hpp"
@@ -52,7 +55,9 @@ std::vector<std::size_t> chunk_starts(std::size_t first, std::size_t n, std::siz
 // The finished file's rows to the front end that asked for them.
 void collect_rows(const BatchPlan& plan, const EngineOptions& options) {
     if (!options.collect) return;
-    const std::size_t header_lines = static_cast<std::size_t>(std::count(plan.header.begin(), plan.header.end(), '\n'));
+    // The inputs' digest lines, then the plan's header (results_file.hpp).
+    const std::size_t header_lines =
+        plan.inputs.size() + static_cast<std::size_t>(std::count(plan.header.begin(), plan.header.end(), '\n'));
     std::size_t rows = 0;
     ResultsFile::read_rows(options.output, header_lines, [&](std::size_t i, const std::string& row) {
         options.collect(i, row);
@@ -61,6 +66,51 @@ void collect_rows(const BatchPlan& plan, const EngineOptions& options) {
     if (rows != plan.jobs)
         throw ResultsError(options.output + ": holds " + std::to_string(rows) + " rows for " + std::to_string(plan.jobs) +
                            " jobs");
+}
+
+// Why `count` threads cannot run at once here ("" when they can): each is
+// started and held until all are, then let go.  Under mpirun every rank asks
+// before the first job, so that threads refused on any rank end the run with
+// one message and exit 2, its files removed, as on threads (the ranks'
+// protocol, once begun, can only be ended by MPI_Abort, which left the
+// results' partial file and its state asking the next run for a --resume).
+std::string threads_refused(std::size_t count) {
+    std::mutex mutex;
+    std::condition_variable released;
+    bool go = false;
+    std::vector<std::thread> pool;
+    std::string why;
+    try {
+        start_threads(pool, count, [&] {
+            std::unique_lock<std::mutex> lock(mutex);
+            released.wait(lock, [&] { return go; });
+        });
+    } catch (const ThreadsUnavailable& e) {
+        why = e.what();
+    }
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        go = true;
+    }
+    released.notify_all();
+    for (std::thread& t : pool) t.join();
+    return why;
+}
+
+// Under mpirun, before the first job: every rank's threads can start, or
+// each rank ends with status 2 (OtherRankFailed), the refusal said once (by
+// rank 0, or by each other rank refused when rank 0 was not) and rank 0's
+// results file removed if it keeps no row.
+void agree_threads_start(Ranks& ranks, std::size_t threads, ResultsFile* file, const std::string& command) {
+    const std::string why = threads_refused(threads);
+    const bool lead_refused = !ranks.broadcast(why).empty();
+    if (ranks.agree(why.empty() ? 0 : 2) == 0) return;
+    if (!why.empty() && (ranks.rank() == 0 || !lead_refused))
+        std::fprintf(stderr, "%s: %s%s\n", command.c_str(),
+                     ranks.rank() == 0 ? "" : ("rank " + std::to_string(ranks.rank()) + ": ").c_str(), why.c_str());
+    if (file) file->discard_unless_rows_kept();
+    ranks.agree(0);  // said and removed before any rank ends: mpirun stops the others at the first exit
+    throw OtherRankFailed(2);
 }
 
 double thread_cpu_seconds() {
@@ -104,7 +154,7 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
             } else if (!same)
                 message = "rank " + std::to_string(ranks->rank()) + " read a manifest or records other than rank 0's (the "
                           "manifest's sha256 is " + plan.digest + "): every rank must read the same files";
-            if (!message.empty()) std::fprintf(stderr, "rocking batch: %s\n", message.c_str());
+            if (!message.empty()) std::fprintf(stderr, "%s: %s\n", options.command.c_str(), message.c_str());
             // Said before any rank ends: mpirun stops the job at the first rank that ends with a
             // non-zero status, and a message not yet written would go with it.
             ranks->agree(0);
@@ -118,6 +168,7 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
     const std::size_t threads =
         std::min(options.threads < 1 ? std::size_t{1} : static_cast<std::size_t>(options.threads),
                  std::max<std::size_t>(1, plan.jobs - std::min(first, plan.jobs)));
+    if (ranks) agree_threads_start(*ranks, threads, file.get(), options.command);
     Progress progress(plan.jobs, first, lead && !options.quiet && stderr_is_terminal());
     // On every rank: the others end by the signal too (on_signal does nothing there).
     const InterruptWatch watch([&](int sig) {
@@ -127,13 +178,13 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
         say_interrupted(options.command, sig, *file, options.output, plan.jobs);
     });
     if (!lead) {
-        ranks->run(0, plan.jobs, static_cast<int>(threads), options.window, plan.run, nullptr);
+        ranks->run(0, plan.jobs, static_cast<int>(threads), options.window, plan.run, nullptr, options.command);
         return {};
     }
     if (file && (file->complete() || first == plan.jobs)) {
         // Nothing to run: a finished file found by --resume, or a partial one
         // whose rows are all there (killed before its end line).
-        if (ranks) ranks->run(first, plan.jobs, static_cast<int>(threads), options.window, plan.run, nullptr);
+        if (ranks) ranks->run(first, plan.jobs, static_cast<int>(threads), options.window, plan.run, nullptr, options.command);
         file->finish();
         collect_rows(plan, options);
         return {file->done(), file->failed(), 0, file->complete()};
@@ -152,7 +203,17 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
     if (ranks) {
         const std::size_t window =
             options.window ? options.window : 64 * (threads + static_cast<std::size_t>(ranks->size()));
-        ranks->run(first, plan.jobs, static_cast<int>(threads), window, plan.run, deliver);
+        // A row that cannot be written (a full disk) ends every rank by MPI_Abort: the
+        // files go first when they keep no row, as on threads.
+        const DeliverRow deliver_or_discard = [&](std::size_t i, JobRow& row) {
+            try {
+                deliver(i, row);
+            } catch (...) {
+                if (file) file->discard_unless_rows_kept();
+                throw;
+            }
+        };
+        ranks->run(first, plan.jobs, static_cast<int>(threads), window, plan.run, deliver_or_discard, options.command);
     } else {
         const std::vector<std::size_t> starts = chunk_starts(first, plan.jobs, threads);
         // The window in chunks: at most `window` rows held, or the pool's 64 chunks a thread.
@@ -169,13 +230,19 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
                 [&](std::size_t c, std::vector<JobRow>& rows) {
                     for (std::size_t k = 0; k < rows.size(); ++k) deliver(starts[c] + k, rows[k]);
                 });
-        } catch (const ThreadsUnavailable&) {
-            if (file) file->discard_if_empty();
+        } catch (...) {
+            // Threads that cannot start, a row that cannot be written: no state of a run that keeps no row.
+            if (file) file->discard_unless_rows_kept();
             throw;
         }
     }
     if (file) {
-        file->finish();
+        try {
+            file->finish();
+        } catch (...) {
+            file->discard_unless_rows_kept();
+            throw;
+        }
         failed = file->failed();
     }
     progress.finish(first + done, failed);

@@ -66,8 +66,11 @@ struct BatchOutcome {
 // SIGINT and SIGTERM flush the rows delivered so far and end the process by
 // the signal, after a line on stderr saying how to resume.  No more threads
 // start than there are jobs to run; when they cannot start, ThreadsUnavailable
-// is thrown, and a results file this run began without writing a row is
-// removed, so that the next run is not asked for a --resume.
+// is thrown (under mpirun every rank tries its threads before the first job,
+// and every rank throws OtherRankFailed(2) once the refusal is said).  A run
+// that fails (threads, a full disk) removes the results' partial file and
+// state when they keep no row, and the state's temporary always, so that the
+// next run is not asked for a --resume of nothing.
 BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Ranks* ranks);
 
 }  // namespace rocking::batch

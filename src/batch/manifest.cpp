@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -28,6 +29,20 @@ std::string absolute(const std::string& folder) {
     if (error) return folder;
     if (p.size() > 1 && p.back() == '/') p.pop_back();  // "/tmp/x/." is "/tmp/x/" once normal
     return p;
+}
+
+// Where a carriage return stands outside a quoted cell in `row` (its CRLF's
+// CR already cut off), or npos.  Such a CR is a line end of a file written
+// with CR alone (classic Mac OS), which RFC 4180 does not know: read as a
+// character of the cells, the whole file was one header row ("the header
+// names column 'r.AT2' twice").  Inside quotes it is the cell's.
+std::size_t bare_carriage_return(std::string_view row) {
+    bool quoted = false;
+    for (std::size_t at = 0; at < row.size(); ++at) {
+        if (row[at] == '"') quoted = !quoted;  // "" inside a quoted cell toggles twice
+        else if (row[at] == '\r' && !quoted) return at;
+    }
+    return std::string_view::npos;
 }
 
 }  // namespace
@@ -164,6 +179,11 @@ Manifest Manifest::parse(std::string text, const std::string& path, const Folder
         std::size_t length = end.end - at;
         if (length > 0 && m.text_[at + length - 1] == '\r') --length;
         const std::string_view row(m.text_.data() + at, length);
+        if (const std::size_t cr = bare_carriage_return(row); cr != std::string_view::npos)
+            throw ManifestError(path + ":" + std::to_string(line + std::count(row.begin(), row.begin() + cr, '\n')) +
+                                ": a carriage return (CR) with no line feed after it, outside quotes: lines ending "
+                                "with CR alone (as classic Mac OS wrote them) are not read as line ends (RFC 4180 "
+                                "ends a row with CRLF or LF); convert them, e.g. tr '\\r' '\\n' <in.csv >out.csv");
         if (!have_header) {
             try {
                 m.header_ = split_csv_line(row);

@@ -8,7 +8,9 @@
 // quote or a line break is quoted, "" inside for a quote, and a quoted line
 // break belongs to the cell, so that a row may span lines (it is known by the
 // line it starts on).  Spaces around a cell are dropped; a UTF-8 byte-order
-// mark at the head is skipped; CRLF ends a row as LF does.  A quote never
+// mark at the head is skipped; CRLF ends a row as LF does, and a CR alone
+// outside quotes (a file of classic Mac OS line ends) refuses the whole
+// manifest, its line named.  A quote never
 // closed is refused with the whole manifest: every row after it would be
 // read into one cell.  The whole file is held (about 100 bytes a job, plus 16
 // for its index): a manifest of 10^6 jobs takes about 120 MB.

@@ -22,12 +22,33 @@ inline bool launched_by_mpirun() {
     return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
 }
 
-// Whether `path` is a pipe, FIFO, socket or device (/dev/stdin among them),
-// which the ranks of an MPI run cannot each read whole: mpirun hands standard
-// input to rank 0 alone (the others read /dev/null), and a pipe or FIFO is
-// drained by the first rank that reads it.  A missing file or a folder is
-// not one: its reader names it.
+// Whether `path` names a descriptor of the process that opens it:
+// /dev/stdin, /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N,
+// /proc/thread-self/fd/N or /proc/PID/fd/N (bash's <(...) gives /dev/fd/63).
+// The ranks are processes mpirun starts, not the shell's children: the
+// descriptor is not theirs, whatever file is behind it (rank 1 found no
+// /dev/fd/63 and said "cannot open the file").
+inline bool descriptor_path(const std::string& path) {
+    auto number = [](const std::string& text) {
+        return !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+    };
+    if (path == "/dev/stdin" || path == "/dev/stdout" || path == "/dev/stderr") return true;
+    if (path.rfind("/dev/fd/", 0) == 0) return number(path.substr(8));
+    if (path.rfind("/proc/", 0) != 0) return false;
+    const std::string rest = path.substr(6);
+    const auto fd = rest.find("/fd/");
+    if (fd == std::string::npos) return false;
+    const std::string process = rest.substr(0, fd);
+    return (process == "self" || process == "thread-self" || number(process)) && number(rest.substr(fd + 4));
+}
+
+// Whether the ranks of an MPI run cannot each read `path` whole: a
+// descriptor's path (descriptor_path), or a pipe, FIFO, socket or device:
+// mpirun hands standard input to rank 0 alone (the others read /dev/null),
+// and a pipe or FIFO is drained by the first rank that reads it.  A missing
+// file or a folder is not one: its reader names it.
 inline bool unshareable_by_ranks(const std::string& path) {
+    if (descriptor_path(path)) return true;
     struct stat st;
     if (stat(path.c_str(), &st) != 0) return false;
     return !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
@@ -35,6 +56,10 @@ inline bool unshareable_by_ranks(const std::string& path) {
 
 // What is said of such a file, before the remedy's last words.
 inline std::string unshareable_text(const std::string& path) {
+    if (descriptor_path(path))
+        return path + ": a descriptor of the process that names it (standard input, or a <(...) of the shell), which "
+                      "the ranks of an MPI run cannot share (they are processes of mpirun's, which hands standard "
+                      "input to rank 0 alone and no other descriptor to any): save it to a file";
     return path + ": not a regular file (standard input, a pipe, a FIFO or a device), which the ranks of an MPI run "
                   "cannot share (mpirun gives standard input to rank 0 alone, and each rank reads its inputs itself): "
                   "save it to a file";
@@ -59,10 +84,11 @@ public:
     // ranks that ask, `threads` of its own taking them one by one too, and
     // every row to deliver() in the jobs' order, at most `window` rows held.
     // The other ranks: the chunks they are given, on `threads` threads, until
-    // told to stop (deliver is not called there).  A failure on rank 0
-    // (deliver throwing) aborts every rank, its message printed.
+    // told to stop (deliver is not called there).  A failure on any rank
+    // (deliver throwing, a thread that cannot start) aborts every rank, its
+    // message printed after `command` ("rocking fragility").
     virtual void run(std::size_t first, std::size_t n, int threads, std::size_t window, const JobFunction& job,
-                     const DeliverRow& deliver) = 0;
+                     const DeliverRow& deliver, const std::string& command) = 0;
 };
 
 }  // namespace rocking::batch

@@ -68,6 +68,13 @@ std::string held_by_another(const std::string& partial) {
 
 }  // namespace
 
+std::vector<EngineFile> engine_files(const std::string& output) {
+    return {{"", output},
+            {"partial file", output + ".partial"},
+            {"state file", output + ".partial.state"},
+            {"state file's temporary", output + ".partial.state.tmp"}};
+}
+
 ResultsFile::ResultsFile(const ResultsOptions& options, const std::string& header, const std::string& digest,
                          std::size_t jobs, const std::vector<InputDigest>& inputs)
     : options_(options), jobs_(jobs), inputs_(inputs), last_flush_(std::chrono::steady_clock::now()) {
@@ -77,6 +84,7 @@ ResultsFile::ResultsFile(const ResultsOptions& options, const std::string& heade
     try {
         open(preamble, digest);
     } catch (...) {
+        discard_unless_rows_kept();  // a header that could not be written (a full disk) leaves nothing
         if (fd_ >= 0) ::close(fd_);  // and its lock: the destructor does not run
         fd_ = -1;
         throw;
@@ -95,9 +103,13 @@ void ResultsFile::open(const std::string& preamble, const std::string& digest) {
                            ", then renamed)");
     if (!options_.resume) {
         if (exists(partial_path()) && locked_by_another(partial_path())) throw ResultsError(held_by_another(partial_path()));
-        if (exists(partial_path()))
+        if (exists(partial_path()) && exists(state_path()))
             throw ResultsError(partial_path() + " exists: an interrupted batch's results. Add --resume to complete it, or "
                                "remove " + partial_path() + " and " + state_path() + " to start over");
+        // Only the files there are named: a message naming one that is not sends the user looking for it.
+        if (exists(partial_path()))
+            throw ResultsError(partial_path() + " exists, with no state file: a run that ended before it kept a row "
+                               "left it. Add --resume to start over in it, or remove " + partial_path());
         start_fresh(preamble);
         return;
     }
@@ -127,8 +139,13 @@ void ResultsFile::start_fresh(const std::string& preamble) {
     if (fd_ < 0) {
         fd_ = ::open(partial_path().c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
         if (fd_ < 0) throw ResultsError(partial_path() + ": cannot create: " + why(errno));
-        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) throw ResultsError(held_by_another(partial_path()));
+        if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+            ::close(fd_);
+            fd_ = -1;
+            throw ResultsError(held_by_another(partial_path()));
+        }
     }
+    began_ = true;
     if (::ftruncate(fd_, 0) != 0 || ::lseek(fd_, 0, SEEK_SET) != 0)
         throw ResultsError(partial_path() + ": cannot write: " + why(errno));
     hash_ = Sha256();
@@ -143,7 +160,11 @@ void ResultsFile::start_fresh(const std::string& preamble) {
 bool ResultsFile::resume_partial(const std::string& digest) {
     fd_ = ::open(partial_path().c_str(), O_RDWR | O_CLOEXEC);
     if (fd_ < 0) throw ResultsError(partial_path() + ": cannot open: " + why(errno));
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) throw ResultsError(held_by_another(partial_path()));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        ::close(fd_);  // another run's files: this one holds no lock on them, and touches none
+        fd_ = -1;
+        throw ResultsError(held_by_another(partial_path()));
+    }
     if (!exists(state_path())) return false;
     const std::string state = slurp(state_path());
     unsigned long long jobs = 0, failed = 0, bytes = 0;
@@ -235,9 +256,13 @@ void ResultsFile::check_inputs(const std::string& text, const std::string& since
                            " names now; " + remedy);
 }
 
-void ResultsFile::discard_if_empty() {
+void ResultsFile::discard_unless_rows_kept() {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (options_.path.empty() || fd_ < 0 || done_ > 0 || written_done_ > 0) return;
+    // Files this run holds no lock on are another run's, or a refused resume's: not ours to remove.
+    if (options_.path.empty() || fd_ < 0) return;
+    ::unlink(state_temporary().c_str());
+    // A partial file begun again by a resume that found no state holds no row either.
+    if (written_done_ > 0 || !began_) return;
     ::unlink(state_path().c_str());
     ::unlink(partial_path().c_str());
     ::close(fd_);  // the lock last: no other run finds the files half gone
@@ -286,24 +311,36 @@ void ResultsFile::flush_locked() {
     held_.clear();
     // The rows reach the disk before the state that counts them.
     if (::fdatasync(fd_) != 0) throw ResultsError(partial_path() + ": cannot sync: " + why(errno));
+    // Counted as kept only once the state on the disk counts them: a state that could not be
+    // written leaves the rows uncounted, and the files removable (discard_unless_rows_kept).
+    write_state(done_, failed_);
     written_done_ = done_;
     written_failed_ = failed_;
-    write_state();
 }
 
-void ResultsFile::write_state() {
-    const std::string temporary = state_path() + ".tmp";
+void ResultsFile::write_state(std::size_t jobs, std::size_t failed) {
+    const std::string temporary = state_temporary();
     char text[200];
-    std::snprintf(text, sizeof text, "%s jobs %zu failed %zu bytes %llu sha256 %s\n", kStateLine, written_done_,
-                  written_failed_, bytes_, hash_.hex().c_str());
+    std::snprintf(text, sizeof text, "%s jobs %zu failed %zu bytes %llu sha256 %s\n", kStateLine, jobs, failed, bytes_,
+                  hash_.hex().c_str());
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) throw ResultsError(temporary + ": cannot create: " + why(errno));
     const std::size_t size = std::strlen(text);
-    const bool ok = ::write(fd, text, size) == static_cast<ssize_t>(size) && ::fsync(fd) == 0;
+    // A short write sets no errno: the next one says why (a full disk, a file size limit).
+    std::size_t written = 0;
+    for (ssize_t n = 0; written < size && (n = ::write(fd, text + written, size - written)) != 0;) {
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) break;
+        written += static_cast<std::size_t>(n);
+    }
+    const bool ok = written == size && ::fsync(fd) == 0;
     const int error = errno;
     ::close(fd);
-    if (!ok || std::rename(temporary.c_str(), state_path().c_str()) != 0)
-        throw ResultsError(state_path() + ": cannot write: " + why(ok ? errno : error));
+    if (!ok || std::rename(temporary.c_str(), state_path().c_str()) != 0) {
+        const int failure = ok ? errno : error;
+        ::unlink(temporary.c_str());  // half a state, of no use to a resume (a full disk left it)
+        throw ResultsError(state_path() + ": cannot write: " + why(failure));
+    }
 }
 
 void ResultsFile::finish() {

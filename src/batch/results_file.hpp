@@ -55,6 +55,18 @@ struct InputDigest {
 };
 constexpr char kUnverifiable[] = "unverifiable";
 
+// Every file the engine writes for results at `output`, and what each is,
+// for the messages: the results themselves, OUT.partial, its state
+// OUT.partial.state, and the state's temporary OUT.partial.state.tmp.  A
+// front end refuses any of them that is an input (issue 38: a record named
+// X.partial.state was removed by spectrum --rows X, one named X.partial
+// taken for the rows of a resume).
+struct EngineFile {
+    std::string what;  // "" for the results, else "partial file", "state file", "state file's temporary"
+    std::string path;
+};
+std::vector<EngineFile> engine_files(const std::string& output);
+
 struct ResultsOptions {
     std::string path;       // "" for standard output
     bool resume = false;
@@ -88,22 +100,26 @@ public:
     void flush();
     // Every job written: the end line, and the file moves to its path.
     void finish();
-    // A run that wrote no row (its threads could not start): OUT.partial and
-    // its state go, so that they do not ask the next run for a --resume.
-    void discard_if_empty();
+    // A run that failed (its threads could not start, a full disk): the
+    // state's temporary goes, and unless a row is kept on the disk (counted
+    // by the state: resumable), OUT.partial and its state go too, so that
+    // they do not ask the next run for a --resume of nothing.  Files a
+    // refused resume found, or another run holds, are never touched.
+    void discard_unless_rows_kept();
     // A finished results file's rows, in order, to `row`: the lines after
     // the digest's and `header_lines` more, up to the end line.  Throws
     // ResultsError when it cannot be read or does not end as a finished one.
     static void read_rows(const std::string& path, std::size_t header_lines,
                           const std::function<void(std::size_t, const std::string&)>& row);
-    std::string partial_path() const { return options_.path + ".partial"; }
-    std::string state_path() const { return options_.path + ".partial.state"; }
+    std::string partial_path() const { return engine_files(options_.path)[1].path; }
+    std::string state_path() const { return engine_files(options_.path)[2].path; }
+    std::string state_temporary() const { return engine_files(options_.path)[3].path; }
 
 private:
     void open(const std::string& preamble, const std::string& digest);
     void flush_locked();
     void write_all(const std::string& text);
-    void write_state();
+    void write_state(std::size_t jobs, std::size_t failed);
     void start_fresh(const std::string& preamble);
     bool resume_partial(const std::string& digest);
     void check_complete(const std::string& digest);
@@ -122,6 +138,7 @@ private:
     unsigned long long bytes_ = 0;
     Sha256 hash_;  // of the bytes written
     bool complete_ = false, finished_ = false;
+    bool began_ = false;  // this run made OUT.partial (or begun it again): its to remove
     std::chrono::steady_clock::time_point last_flush_;
 };
 

@@ -2,8 +2,10 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "batch/cluster.hpp"
+#include "batch/results_file.hpp"
 #include "cli/options.hpp"
 
 namespace rocking::cli {
@@ -91,6 +93,29 @@ int agree_on_setup(batch::Ranks* ranks, std::exception_ptr failure, const std::s
     }
     ranks->agree(0);
     return all;
+}
+
+void refuse_engine_files_over(const harness::NamedPath& output, const std::vector<harness::NamedPath>& inputs,
+                              const std::vector<harness::NamedPath>& others) {
+    std::vector<harness::NamedPath> written;
+    for (const batch::EngineFile& f : batch::engine_files(output.path))
+        written.push_back({f.what.empty() ? output.role : output.role + "'s " + f.what, f.path});
+    written.insert(written.end(), others.begin(), others.end());
+    try {
+        harness::refuse_outputs_over_inputs(written, inputs);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+}
+
+void refuse_engine_files_over(const Args& a, const std::string& flag, const std::vector<std::string>& other_flags,
+                              const std::vector<std::string>& inputs) {
+    if (!a.values.count(flag)) return;
+    std::vector<harness::NamedPath> files, others;
+    for (const std::string& path : inputs) files.push_back({"FILE", path});
+    for (const std::string& other : other_flags)
+        if (a.values.count(other)) others.push_back({other, a.values.at(other)});
+    refuse_engine_files_over({flag, a.values.at(flag)}, files, others);
 }
 
 void set_threads_and_flush(batch::EngineOptions& engine, const Args& a, bool mpi) {

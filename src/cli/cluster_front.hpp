@@ -9,10 +9,12 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "batch/engine.hpp"
 #include "batch/ranks.hpp"
 #include "cli/options.hpp"
+#include "harness/output_paths.hpp"
 
 namespace rocking::cli {
 
@@ -52,6 +54,19 @@ void parse_on_every_rank(const std::function<void()>& parse);
 // failure said once (by rank 0, or by a rank that failed where rank 0 did
 // not) before any rank ends.  Without ranks a failure is rethrown.
 int agree_on_setup(batch::Ranks* ranks, std::exception_ptr failure, const std::string& command);
+
+// Before any work: none of the files the engine writes for its results at
+// `output` (batch::engine_files: the results, their .partial file, its
+// .partial.state and the state's .tmp), named after output.role ("--rows's
+// partial file"), is one of `inputs` or one of the command's `others`
+// outputs: the engine would replace or remove it (spectrum REC.partial.state
+// --rows REC removed the record).  Throws UsageError naming both.
+void refuse_engine_files_over(const harness::NamedPath& output, const std::vector<harness::NamedPath>& inputs,
+                              const std::vector<harness::NamedPath>& others = {});
+// The same for a command's --rows (`flag`), the inputs its FILEs, the others
+// the outputs `other_flags` name; nothing when `flag` is not given.
+void refuse_engine_files_over(const Args& a, const std::string& flag, const std::vector<std::string>& other_flags,
+                              const std::vector<std::string>& inputs);
 
 // What every front end of the engine sets alike from its command line: its
 // threads (--jobs, by default the cores; under mpirun one a rank unless

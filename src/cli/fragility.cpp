@@ -224,6 +224,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     c.study = options_from(a);
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
     check_outputs(a, {"--output", "--rows"}, c.files);
+    refuse_engine_files_over(a, "--rows", {"--output"}, c.files);
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
         throw UsageError("--resume needs --rows FILE: the IDAs of an interrupted study are resumed from that file");
@@ -276,6 +277,7 @@ int cmd_fragility(int argc, char** argv) {
     jobs.blocks = c.blocks;
     jobs.ida = c.study.ida;
     jobs.description = description(c);
+    jobs.names = c.files;
     const batch::BatchPlan plan = jobs::fragility_plan(jobs);
 
     // Each (block, record) IDA a job of the engine; rank 0 gets their rows in

@@ -359,6 +359,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     c.alphas = alphas_from(a.values.at("--alpha"));
     c.grid = grid_from(a);
     check_outputs(a, {"--output", "--png", "--rows"}, {c.path});
+    refuse_engine_files_over(a, "--rows", {"--output", "--png"}, {c.path});
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
         throw UsageError("--resume needs --rows FILE: the spectra of an interrupted study are resumed from that file");
@@ -396,7 +397,7 @@ int cmd_spectrum(int argc, char** argv) {
         failure = std::current_exception();
     }
     if (const int status = agree_on_setup(ranks.get(), failure, "rocking spectrum")) return status;
-    const jobs::SpectrumJobs jobs{input.get(), c.alphas, c.grid, description(c)};
+    const jobs::SpectrumJobs jobs{input.get(), c.alphas, c.grid, description(c), c.path};
     const batch::BatchPlan plan = jobs::spectrum_plan(jobs);
 
     // Each alpha a job of the engine; rank 0 gets the rows in order, from

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <unordered_set>
 
+#include "batch/results_file.hpp"
 #include "harness/output_paths.hpp"
 #include "jobs/job.hpp"
 #include "jobs/result_row.hpp"
@@ -77,9 +78,10 @@ void check_output(const std::string& role, const std::string& output, const batc
     std::vector<harness::NamedPath> inputs = {{"the manifest", manifest.path()}};
     for (const NamedRecord& r : records)
         inputs.push_back({"the record of manifest line " + std::to_string(r.line), r.path});
-    harness::refuse_outputs_over_inputs(
-        {{role, output}, {role + "'s partial file", output + ".partial"}, {role + "'s state file", output + ".partial.state"}},
-        inputs);
+    std::vector<harness::NamedPath> outputs;  // the results and the files they are written through
+    for (const batch::EngineFile& f : batch::engine_files(output))
+        outputs.push_back({f.what.empty() ? role : role + "'s " + f.what, f.path});
+    harness::refuse_outputs_over_inputs(outputs, inputs);
     harness::check_writable({role, output});
 }
 

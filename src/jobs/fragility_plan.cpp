@@ -61,11 +61,10 @@ batch::BatchPlan fragility_plan(const FragilityJobs& jobs) {
     identity.update(plan.header);
     for (const studies::BlockShape& b : jobs.blocks) identity.update(format_number(b.alpha) + "," + format_number(b.p) + ";");
     identity.update(jobs.ida.describe_grid() + jobs.ida.describe_model() + jobs.ida.describe_checks());
-    for (const dynamics::SampledInput* input : jobs.inputs) {
-        identity.update(format_number(input->dt()) + ";");
-        identity.update(input->samples().data(), input->samples().size() * sizeof(double));
-    }
     plan.digest = identity.hex();
+    for (std::size_t k = 0; k < n; ++k)
+        plan.inputs.push_back({k < jobs.names.size() ? jobs.names[k] : "record " + std::to_string(k),
+                               sample_digest(*jobs.inputs[k])});
     plan.run = [&jobs, n](std::size_t j) {
         const studies::BlockShape& block = jobs.blocks[j / n];
         try {

@@ -29,11 +29,16 @@ struct FragilityJobs {
     studies::IdaOptions ida;
     // '#' lines stating the study (command, model, grid, inputs), each ending '\n'.
     std::string description;
+    // Each input's file as the command line gave it, for a refused resume to
+    // name the one that changed; "record K" (from 0) where none is given.
+    std::vector<std::string> names;
 };
 
 // Job j: block j / inputs, input j % inputs.  The digest covers the
-// description, the blocks, the grid and every input's samples, so that a
-// resume on another study or an edited record is refused.
+// description, the blocks and the grid; each record is one of the plan's
+// inputs, its digest that of its step and samples as read (jobs/row_cells.hpp's sample_digest),
+// so that a resume on another study is refused, and one on an edited record
+// refused naming it.
 batch::BatchPlan fragility_plan(const FragilityJobs& jobs);
 
 // A row back into its IDA (grid points left empty).  Throws

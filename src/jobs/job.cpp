@@ -252,7 +252,11 @@ Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::
     const bool simulate = job.kind == Kind::simulate;
     if (!(simulate ? job.alpha > 0 && job.alpha < M_PI / 4 : studies::in_search_alpha_range(job.alpha)))
         bad("alpha", "must be in " + std::string(simulate ? "(0, pi/4)" : studies::kSearchAlphaRange) + " (got " + alpha + ")");
-    if (job.kind == Kind::simulate || job.kind == Kind::ida) job.block = block_from(c, row, job.kind, job.alpha);
+    if (job.kind == Kind::simulate || job.kind == Kind::ida) {
+        job.block = block_from(c, row, job.kind, job.alpha);
+        for (const char* column : {"p", "height", "half_height"})
+            if (!c.cell(row, column).empty()) job.p_column = column;
+    }
     job.scaling = scaling_from(c.cell(row, "scaling"));
     model_from(c, row, job);
     if (job.kind == Kind::ida) {
@@ -272,6 +276,7 @@ Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::
         if (!(job.p_min >= 0.01 && job.p_min <= 1000)) bad("p_min", "must be in [0.01, 1000] rad/s (got " + lo + ")");
         if (!(job.p_max >= 0.01 && job.p_max <= 1000)) bad("p_max", "must be in [0.01, 1000] rad/s (got " + hi + ")");
         if (!(job.p_max > job.p_min)) bad("p_max", "must be above p_min (" + g(job.p_min) + " rad/s)");
+        if (!hi.empty()) job.p_column = "p_max";
     }
     return job;
 }

@@ -57,6 +57,9 @@ struct Job {
     RecordSource record;
     double alpha = 0;
     std::optional<dynamics::Block> block;  // simulate and ida: from p, height or half_height
+    // The column that set the highest p the job's runs reach (p, height,
+    // half_height, p_max), "" for a default: what a refused run names.
+    std::string p_column;
     Scaling scaling;                       // simulate, collapse and spectrum
     dynamics::Equation equation = dynamics::Equation::linearised;
     dynamics::SolverOptions solver;

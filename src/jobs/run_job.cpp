@@ -1,5 +1,6 @@
 #include "jobs/run_job.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -101,10 +102,42 @@ Figures spectrum(const Job& job, const SampledInput& input) {
     return f;
 }
 
+// The highest p the job's runs reach: its block's, or the top of its
+// searches (Table 1's to 30 rad/s, a spectrum's grid).
+double highest_p(const Job& job) {
+    const double table1 = records::CollapseOptions{}.p_max;
+    switch (job.kind) {
+        case Kind::simulate:
+        case Kind::ida: return job.block->p;
+        case Kind::collapse: return table1;
+        case Kind::spectrum: return std::max(job.p_max, table1);
+    }
+    return table1;
+}
+
+// As the commands refuse --p 1e300 or --dt 1e300 (dynamics::unresolvable_run):
+// the row refused by its columns, not the solver's "no progress" from deep
+// inside the run.  Which is at fault: a p above the commands' 1000 rad/s (no
+// block is physical beyond), a record longer than any p up to it could
+// follow; one of the two, since p t is then within the limit.  A duration
+// from the record's own step (a file's header) is named by the record.
+void refuse_unresolvable(const Job& job, const SampledInput& input) {
+    const double p = highest_p(job), duration = input.t_end();
+    const std::string why = dynamics::unresolvable_run(p, duration);
+    if (why.empty()) return;
+    constexpr double kHighestPhysicalP = 1000;
+    std::string columns;
+    if (p > kHighestPhysicalP) columns = job.p_column.empty() ? "p" : job.p_column;
+    if (duration * kHighestPhysicalP > dynamics::kLongestRunTimesP || columns.empty())
+        columns += (columns.empty() ? "" : ", ") + (job.record.dt > 0 ? std::string("record_dt") : "record " + job.record.cell);
+    throw std::invalid_argument(columns + ": " + why);
+}
+
 }  // namespace
 
 Figures run_job(const Job& job, RecordStore& records) {
     const std::shared_ptr<const SampledInput> input = input_of(job, records);
+    refuse_unresolvable(job, *input);
     switch (job.kind) {
         case Kind::simulate: return simulate(job, *input);
         case Kind::collapse: return collapse(job, *input);

@@ -183,8 +183,6 @@ std::string digest_of(const batch::BatchPlan& plan, const SpectrumJobs& jobs) {
                     bit(g.offset_grid) + "," + format_number(g.rel_tol) + "," + bit(g.confirm) + "," +
                     format_number(g.probe) + ";");
     identity.update(g.describe_grid() + g.describe_model() + g.describe_refinement());
-    identity.update(format_number(jobs.input->dt()) + ";");
-    identity.update(jobs.input->samples().data(), jobs.input->samples().size() * sizeof(double));
     return identity.hex();
 }
 
@@ -205,6 +203,7 @@ batch::BatchPlan spectrum_plan(const SpectrumJobs& jobs) {
                                      "the engine\")\n" +
                   kColumns;
     plan.digest = digest_of(plan, jobs);
+    plan.inputs.push_back({jobs.name, sample_digest(*jobs.input)});
     plan.run = [&jobs](std::size_t k) {
         try {
             return batch::JobRow{study_row(k, spectrum_study(*jobs.input, jobs.alphas[k], jobs.grid)), false};

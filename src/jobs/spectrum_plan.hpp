@@ -56,12 +56,15 @@ struct SpectrumJobs {
     studies::SpectrumOptions grid;  // without Table 1's points: each job adds its own
     // '#' lines stating the study (command, model, grid, record), each ending '\n'.
     std::string description;
+    // The record's file as the command line gave it: a refused resume names it.
+    std::string name = "the record";
 };
 
 // Job k: alphas[k]; the plan's jobs read `jobs`, which must outlive it.  The
-// digest covers the description, the alphas, the grid's options and the
-// record's samples, so that a resume on another study or an edited record
-// is refused.
+// digest covers the description, the alphas and the grid's options; the
+// record is the plan's one input, its digest that of its step and samples
+// (jobs/row_cells.hpp's sample_digest), so that a resume on another study is refused, and one on
+// an edited record refused naming it.
 batch::BatchPlan spectrum_plan(const SpectrumJobs& jobs);
 
 // The row of job `job`, and back.  study_from_row throws std::runtime_error
