@@ -194,7 +194,10 @@ TEST(Batch, AFailingDeliveryJoinsTheThreadsAndPropagates) {
 TEST(Batch, JobsCountsAreCheckedAndTheDefaultIsTheUsableCores) {
     EXPECT_EQ(parse_threads("1"), 1);
     EXPECT_EQ(parse_threads("12"), 12);
-    for (const char* bad : {"", "0", "-2", "2.5", "two", "4097", "99999999999999999999", "3 "})
+    // The one whole-number rule of every option (numerics/number_text.hpp): blanks
+    // at either end alike, and 1e1 or 10.0 are 10.
+    for (const char* ten : {"10", " 10", "10 ", "1e1", "10.0"}) EXPECT_EQ(parse_threads(ten), 10) << "'" << ten << "'";
+    for (const char* bad : {"", "0", "-2", "2.5", "two", "4097", "99999999999999999999", "3 x"})
         EXPECT_THROW(parse_threads(bad), std::invalid_argument) << "'" << bad << "'";
     EXPECT_GE(default_threads(), 1);
     EXPECT_LE(default_threads(), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
