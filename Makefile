@@ -6,7 +6,7 @@ JOBS    ?= 2
 # OpenMPI for rocking batch under mpirun: the build works without it, on threads only).
 PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath libopenmpi-dev openmpi-bin
 
-.PHONY: all deps build reproduce test bless bench bench-records bench-spectrum bench-fragility bench-batch report clean
+.PHONY: all deps build reproduce test bless bench bench-records bench-spectrum bench-fragility bench-overturning-set bench-batch report clean
 
 all: build
 
@@ -65,6 +65,12 @@ bench-spectrum: build
 bench-fragility: build
 	cmake --build $(BUILD) --target bench_fragility -j $(JOBS)
 	$(BUILD)/bench_fragility --out $(OUT)/bench
+
+# The refine IDA's cost against its width w (a benchmark, not a test; a few minutes at
+# w = 1e-5): out/bench/overturning_set.txt.
+bench-overturning-set: build
+	cmake --build $(BUILD) --target bench_overturning_set -j $(JOBS)
+	$(BUILD)/bench_overturning_set --out $(OUT)/bench
 
 # rocking batch's scale (a benchmark, not a test): jobs/s on 1 and 2 threads and 1-3 MPI ranks, the
 # coordination's cost, a model of 10^9 simulations: out/bench/batch.{txt,csv} (BATCH_BENCH_JOBS=N, default 10^6).

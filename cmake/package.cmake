@@ -28,6 +28,7 @@ set(ROCKING_PUBLIC_HEADERS
   records/collapse.hpp
   records/synthetic.hpp
   studies/intervals.hpp
+  studies/overturning_set.hpp
   studies/resampling.hpp
   studies/fragility.hpp
   studies/ida.hpp

@@ -156,8 +156,10 @@ void FlightMargins::flight(const FlightStart& s) {
         tangent_ = {s.t, e * before.theta, e * (before.omega + dd_minus * t_q) - dd_plus * t_q};
     } else {
         // From rest (or released): the tangent is 0.  An uplift moves with
-        // where q a reaches the threshold sigma alpha: t_q = -a / a'.
-        if (uplift) t_q = -s.sigma * model_.uplift_threshold() / (q * rest_.slope(s.t));
+        // where q a reaches the threshold sigma alpha: t_q = -a / a'.  At
+        // t = 0 the record starts above it (a jump from rest, for every q
+        // near): the start does not move.
+        if (uplift && s.t > 0) t_q = -s.sigma * model_.uplift_threshold() / (q * rest_.slope(s.t));
         tangent_ = {s.t, 0.0, 0.0};
     }
     const double xi = escape_margin(model_, rest_, q, s.t, s.theta, s.omega, s.sigma);

@@ -1,11 +1,14 @@
 #include "studies/ida.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 
 #include "batch/pool.hpp"
+#include "dynamics/escape_margin.hpp"
+#include "studies/overturning_set.hpp"
 #include "studies/scaled_input.hpp"
 #include "studies/spectrum.hpp"
 #include "studies/search_alpha.hpp"
@@ -17,7 +20,13 @@ using dynamics::GroundInput;
 std::string IdaOptions::describe_grid() const {
     char text[400];
     const double r = log_step(q_min, q_max, points);
-    if (offset_grid)
+    if (method == Method::refine)
+        std::snprintf(text, sizeof text,
+                      "refined from %d q log-spaced from %g to %g (x%.6g) down to %g in ln q where the flights' escape "
+                      "margins do not clear an interval; boundaries bisected to %g relative; islands narrower than "
+                      "%g in ln q may be missed",
+                      points, q_min, q_max, r, width, rel_tol, width);
+    else if (offset_grid)
         std::snprintf(text, sizeof text,
                       "%d q log-spaced from %g to %g (x%.6g), and %d more offset by half a step (x%.6g); "
                       "boundaries bisected to %g relative; islands narrower than half a step may be missed",
@@ -64,7 +73,18 @@ void check_options(const GroundInput& input, double alpha, double p, const IdaOp
     // Below 1e-15 the bisection would stall on neighbouring doubles.
     if (!(o.rel_tol >= 1e-15 && o.rel_tol <= 0.1)) throw std::invalid_argument("ida: rel_tol must be in [1e-15, 0.1]");
     if (!(o.probe > 0 && o.probe <= 1e-3)) throw std::invalid_argument("ida: the probe must be in (0, 1e-3]");
+    if (!(o.width > 0 && o.width <= 0.1)) throw std::invalid_argument("ida: the width must be in (0, 0.1]");
+    if (!(o.robust_width > 0)) throw std::invalid_argument("ida: the robust width must be > 0");
 }
+
+dynamics::Model model_of(double alpha, double p, const records::CollapseOptions& m) {
+    dynamics::Model model;
+    model.equation = m.equation;
+    model.restitution = m.housner_restitution ? dynamics::housner_restitution(alpha) : m.restitution;
+    model.block = dynamics::Block::from_p(p, alpha);
+    return model;
+}
+
 
 // Through scaled(), so that a record stays a record and the exact solver
 // takes it through the record kernel.
@@ -94,10 +114,115 @@ IdaInterval interval_of(const Span& span, const std::vector<Bracket>& brackets) 
     return in;
 }
 
+// One run at q with each flight's escape margin, as records::collapses_at
+// runs it (the same model, options and scaled samples: the observer changes
+// no outcome, EscapeMargin.TheObserverChangesNoOutcome).  Without the record
+// kernel (another input, solver, equation or criterion) the outcome only.
+class MarginSampler {
+public:
+    MarginSampler(const GroundInput& input, double alpha, double p, const IdaOptions& o)
+        : input_(input), alpha_(alpha), p_(p), o_(o), model_(model_of(alpha, p, o.model)) {
+        sim_.solver = o.model.solver;
+        sim_.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
+        record_ = dynamic_cast<const dynamics::SampledInput*>(&input);
+        if (record_ && o.model.criterion == dynamics::Criterion::overturning &&
+            dynamics::record_kernel_applies(model_, *record_, sim_))
+            rest_ = std::make_unique<dynamics::RestOfInput>(*record_, p);
+    }
+    bool with_margins() const { return rest_ != nullptr; }
+    MarginSample operator()(double q) const {
+        MarginSample s;
+        const double factor = q * alpha_ / input_.peak();
+        if (!rest_) {
+            s.collapse = collapses_at_q(input_, alpha_, p_, q, o_);
+            return s;
+        }
+        dynamics::FlightMargins margins(model_, *rest_, factor);
+        const dynamics::SampledInput at_q = record_->scaled_by(factor, "ida");
+        s.collapse = dynamics::simulate_with_margins(model_, at_q, sim_, margins).collapse(o_.model.criterion, alpha_);
+        s.has_margins = true;
+        for (const dynamics::FlightMargin& f : margins.flights()) {
+            s.xi.push_back(f.xi);
+            s.slope.push_back(f.slope);
+        }
+        return s;
+    }
+
+private:
+    const GroundInput& input_;
+    double alpha_, p_;
+    const IdaOptions& o_;
+    dynamics::Model model_;
+    dynamics::SimulationOptions sim_;
+    const dynamics::SampledInput* record_ = nullptr;
+    std::unique_ptr<dynamics::RestOfInput> rest_;
+};
+
+// The three numbers of issue 39 from the intervals, both methods alike.
+void summarise(Ida& ida, const IdaOptions& o) {
+    ida.point = ida.intervals.empty() ? IdaPoint{o.q_max, false} : IdaPoint{ida.intervals.front().from, true};
+    ida.first_overturning = ida.point;
+    ida.first_robust_collapse = IdaPoint{o.q_max, false};
+    for (const IdaInterval& in : ida.intervals)
+        if (std::log(in.to / in.from) > o.robust_width) {
+            ida.first_robust_collapse = IdaPoint{in.from, true};
+            break;
+        }
+    std::vector<Span> spans;
+    for (const IdaInterval& in : ida.intervals) spans.push_back(Span{in.from, in.to, -1, -1});
+    const std::vector<GridPoint> steps = log_grid(o.q_min, o.q_max, o.points, false, {});
+    for (std::size_t k = 1; k < steps.size(); ++k)
+        ida.bands.push_back({steps[k - 1].x, steps[k].x, covered_share(spans, steps[k - 1].x, steps[k].x)});
+}
+
+void check_brackets(Ida& ida, const GroundInput& input, double alpha, double p, const IdaOptions& o) {
+    if (o.checks == IdaOptions::Checks::none || ida.intervals.empty()) return;
+    const BracketChecks checks = checks_of(input, alpha, p, o);
+    for (IdaInterval& in : ida.intervals) {
+        if (in.has_lower) in.lower_check = check_bracket(in.lower, "q", checks, ida.simulations, ida.check_simulations);
+        if (o.checks == IdaOptions::Checks::first_collapse) break;
+        if (in.has_upper) in.upper_check = check_bracket(in.upper, "q", checks, ida.simulations, ida.check_simulations);
+    }
+}
+
+// The refine method: studies/overturning_set.hpp over [q_min, q_max] from the
+// main grid, its brackets checked as the grid's.
+Ida refined_ida(const GroundInput& input, double alpha, double p, const IdaOptions& o) {
+    Ida ida;
+    ida.alpha = alpha;
+    ida.p = p;
+    ida.q_input = input.peak() / alpha;
+    ida.refined = true;
+    const MarginSampler sampler(input, alpha, p, o);
+    ida.with_margins = sampler.with_margins();
+    RefineOptions ro;
+    ro.width = o.width;
+    ro.coarse = o.points;
+    ro.rel_tol = o.rel_tol;
+    ro.guarantee_below = (M_PI / 2 - alpha) / alpha;
+    const RefinedSet set = refine_set([&sampler](double q) { return sampler(q); },
+                                      [&](double q) { return collapses_at_q(input, alpha, p, q, o); }, o.q_min,
+                                      o.q_max, ro);
+    for (const GridPoint& at : log_grid(o.q_min, o.q_max, o.points, false, {})) {
+        const auto k = std::lower_bound(set.xs.begin(), set.xs.end(), at.x) - set.xs.begin();
+        ida.points.push_back({at.x, GridKind::main, set.collapse[k]});
+    }
+    for (const Span& span : set.spans) ida.intervals.push_back(interval_of(span, set.brackets));
+    ida.samples = set.samples;
+    ida.simulations = set.samples + set.bisection_runs;
+    ida.accepted = set.accepted;
+    ida.at_width = set.at_width;
+    ida.unguaranteed_from = set.unguaranteed_from;
+    check_brackets(ida, input, alpha, p, o);
+    summarise(ida, o);
+    return ida;
+}
+
 }  // namespace
 
 Ida incremental_dynamic_analysis(const GroundInput& input, double alpha, double p, const IdaOptions& o) {
     check_options(input, alpha, p, o);
+    if (o.method == IdaOptions::Method::refine) return refined_ida(input, alpha, p, o);
     Ida ida;
     ida.alpha = alpha;
     ida.p = p;
@@ -119,18 +244,8 @@ Ida incremental_dynamic_analysis(const GroundInput& input, double alpha, double 
         if (outcomes[k] != outcomes[k - 1])
             brackets.push_back(bisect_boundary(collapses, qs[k - 1], outcomes[k - 1], qs[k], o.rel_tol, ida.simulations));
     for (const Span& span : spans_of(qs, outcomes, brackets)) ida.intervals.push_back(interval_of(span, brackets));
-    if (o.checks != IdaOptions::Checks::none && !ida.intervals.empty()) {
-        const BracketChecks checks = checks_of(input, alpha, p, o);
-        for (IdaInterval& in : ida.intervals) {
-            if (in.has_lower)
-                in.lower_check = check_bracket(in.lower, "q", checks, ida.simulations, ida.check_simulations);
-            if (o.checks == IdaOptions::Checks::first_collapse) break;
-            if (in.has_upper)
-                in.upper_check = check_bracket(in.upper, "q", checks, ida.simulations, ida.check_simulations);
-        }
-    }
-
-    ida.point = ida.intervals.empty() ? IdaPoint{o.q_max, false} : IdaPoint{ida.intervals.front().from, true};
+    check_brackets(ida, input, alpha, p, o);
+    summarise(ida, o);
     return ida;
 }
 

@@ -9,9 +9,14 @@
 //
 // The grid's limit is the spectrum's (studies/intervals.hpp): an island of
 // collapse or of safety narrower than half a step in log q may be missed.
+// The refine method (issue 39, studies/overturning_set.hpp) finds every
+// island and gap wider than a width w in ln q instead, from each flight's
+// escape margin, where the record kernel runs the model (a record, eq. 3, the
+// exact solver, overturning); elsewhere it splits every interval down to w.
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -39,6 +44,15 @@ struct IdaOptions {
     enum class Checks { none, first_collapse, every_bracket };
     Checks checks = Checks::first_collapse;
     double probe = 1e-13;
+    // grid: the log grid above (and its offset grid); refine: the search of
+    // docs/overturning_set.md, section 3, from the main grid (points) down to
+    // a spacing of `width` in ln q where the escape margins do not accept an
+    // interval.  The grid is the default until the refine method's cost is
+    // decided (docs/overturning_set.md, section 4).
+    enum class Method { grid, refine };
+    Method method = Method::grid;
+    double width = 1e-5;         // w, in ln q (refine)
+    double robust_width = 5e-3;  // an interval wider than this in ln q is a robust collapse
     std::string describe_grid() const;
     std::string describe_model() const;
     std::string describe_checks() const;
@@ -57,6 +71,12 @@ struct IdaGridPoint {
     bool collapse = false;
 };
 
+// A band of q (a step of the main grid) and the share of it, in ln q, that
+// the intervals cover.
+struct IdaBand {
+    double from = 0, to = 0, share = 0;
+};
+
 struct Ida {
     double alpha = 0, p = 0;
     double q_input = 0;                   // the input's own q, unscaled
@@ -66,11 +86,29 @@ struct Ida {
     IdaPoint point{0, false};
     long simulations = 0;        // the model's solver: grid, bisection and probe
     long check_simulations = 0;  // the second solver's
+    // Both methods, from the intervals: the first overturning (the lowest
+    // interval's start: `point`), the first robust collapse (the start of the
+    // first interval wider than robust_width in ln q, or q_max censored), and
+    // the overturned share of each main-grid step.  With the grid method they
+    // hold only what its grid saw.
+    IdaPoint first_overturning{0, false}, first_robust_collapse{0, false};
+    std::vector<IdaBand> bands;
+    // The refine method's: `points` are then its coarse grid's samples only.
+    bool refined = false;
+    long samples = 0;        // runs with margins (of `simulations`)
+    long accepted = 0;       // intervals accepted by the margins
+    long at_width = 0;       // intervals split down to w with one outcome at both ends
+    bool with_margins = false;  // false: the record kernel does not run this model (every interval split to w)
+    // Above the turn-back bound q = (pi/2 - alpha)/alpha an overturning run
+    // need not have a flight with Xi > 0: the search's guarantee stops there
+    // (+inf when q_max is below it).
+    double unguaranteed_from = std::numeric_limits<double>::infinity();
 };
 
 // Throws std::invalid_argument for alpha not in (0, 1), p not finite and > 0,
 // an input that never moves (peak 0), points < 2, q_min not > 0, q_max not
-// > q_min, rel_tol not in [1e-15, 0.1], and whatever simulate() throws.
+// > q_min, rel_tol not in [1e-15, 0.1], width not in (0, 0.1],
+// robust_width not > 0, and whatever simulate() throws.
 Ida incremental_dynamic_analysis(const dynamics::GroundInput& input, double alpha, double p, const IdaOptions& options);
 
 struct BlockShape {
