@@ -48,6 +48,23 @@ void expect_same(const studies::Ida& got, const studies::Ida& want) {
         EXPECT_EQ(got.intervals.front().lower_check.confirmation, want.intervals.front().lower_check.confirmation);
         EXPECT_EQ(got.intervals.front().lower_check.detail, want.intervals.front().lower_check.detail);
     }
+    // Issue 39's fields, both methods.
+    EXPECT_EQ(got.first_overturning.q, want.first_overturning.q);
+    EXPECT_EQ(got.first_overturning.collapsed, want.first_overturning.collapsed);
+    EXPECT_EQ(got.first_robust_collapse.q, want.first_robust_collapse.q);
+    EXPECT_EQ(got.first_robust_collapse.collapsed, want.first_robust_collapse.collapsed);
+    ASSERT_EQ(got.bands.size(), want.bands.size());
+    for (std::size_t i = 0; i < want.bands.size(); ++i) {
+        EXPECT_EQ(got.bands[i].from, want.bands[i].from);
+        EXPECT_EQ(got.bands[i].to, want.bands[i].to);
+        EXPECT_EQ(got.bands[i].share, want.bands[i].share);
+    }
+    EXPECT_EQ(got.refined, want.refined);
+    EXPECT_EQ(got.samples, want.samples);
+    EXPECT_EQ(got.accepted, want.accepted);
+    EXPECT_EQ(got.at_width, want.at_width);
+    EXPECT_EQ(got.with_margins, want.with_margins);
+    EXPECT_EQ(got.unguaranteed_from, want.unguaranteed_from);
 }
 
 }  // namespace
@@ -124,4 +141,55 @@ TEST(FragilityRows, EachRecordIsANamedInputWhoseDigestFollowsItsSamples) {
     EXPECT_EQ(after.digest, plan.digest) << "the study itself is the same";
     jobs.names.clear();  // eq27's plan names none
     EXPECT_EQ(jobs::fragility_plan(jobs).inputs[1].name, "record 1");
+}
+
+// The refine method's IDA (issue 39) read back from its row bit for bit, its
+// first overturning, robust collapse, bands and counts included; the method,
+// its width and the robust width are part of the study, so that a resume
+// across them is refused.
+TEST(FragilityRows, ARefinedIdaReadBackFromItsRowIsTheIdaComputed) {
+    const dynamics::SampledInput sine = decaying_sine();
+    jobs::FragilityJobs jobs;
+    jobs.inputs = {&sine};
+    jobs.blocks = {{0.1, 2.0}, {0.2, 1.0}, {0.05, 5.0}};
+    jobs.ida.points = 20;
+    jobs.ida.q_max = 8;
+    jobs.ida.method = studies::IdaOptions::Method::refine;
+    jobs.ida.width = 1e-3;
+    const batch::BatchPlan plan = jobs::fragility_plan(jobs);
+    int with_bands = 0, margins = 0;
+    for (std::size_t j = 0; j < plan.jobs; ++j) {
+        const batch::JobRow row = plan.run(j);
+        EXPECT_FALSE(row.failed) << row.text;
+        const studies::Ida want =
+            studies::incremental_dynamic_analysis(sine, jobs.blocks[j].alpha, jobs.blocks[j].p, jobs.ida);
+        EXPECT_TRUE(want.refined);
+        with_bands += !want.bands.empty() && !want.intervals.empty();
+        margins += want.with_margins && want.samples > 0;
+        expect_same(jobs::ida_from_row(row.text, j, jobs), want);
+    }
+    EXPECT_GT(with_bands, 0);
+    EXPECT_GT(margins, 0) << "no run with margins: the record kernel's fields are untested";
+    // An infinite unguaranteed_from (q_max below the turn-back bound) and a finite one both read back.
+    jobs.blocks = {{0.3, 2.0}};
+    jobs.ida.q_max = 20;  // above (pi/2 - 0.3)/0.3 = 4.24
+    const studies::Ida want = studies::incremental_dynamic_analysis(sine, 0.3, 2.0, jobs.ida);
+    EXPECT_TRUE(std::isfinite(want.unguaranteed_from));
+    expect_same(jobs::ida_from_row(jobs::fragility_plan(jobs).run(0).text, 0, jobs), want);
+}
+
+TEST(FragilityRows, TheMethodAndItsWidthsArePartOfTheStudy) {
+    const dynamics::SampledInput sine = decaying_sine();
+    jobs::FragilityJobs jobs;
+    jobs.inputs = {&sine};
+    jobs.blocks = {{0.1, 2.0}};
+    const std::string grid = jobs::fragility_plan(jobs).digest;
+    jobs.ida.method = studies::IdaOptions::Method::refine;
+    const std::string refine = jobs::fragility_plan(jobs).digest;
+    EXPECT_NE(refine, grid);
+    jobs.ida.width = 1e-4;
+    const std::string wider = jobs::fragility_plan(jobs).digest;
+    EXPECT_NE(wider, refine);
+    jobs.ida.robust_width = 1e-2;
+    EXPECT_NE(jobs::fragility_plan(jobs).digest, wider);
 }

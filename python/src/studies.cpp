@@ -216,9 +216,59 @@ int bootstrap_argument(const std::optional<Whole>& bootstrap_given, const std::o
     return resamples;
 }
 
+
+// rocking fragility's refine note (src/cli/fragility.cpp), word for word.
+std::string refine_note(const studies::FragilityStudyOptions& o) {
+    return "w = " + g7(o.ida.width) +
+           " in ln q: every island and gap wider than w in ln q found, except above q = (pi/2 - alpha)/alpha where "
+           "the margin's guarantee does not hold; islands narrower than w may be missed; first robust collapse: the "
+           "start of the first interval wider than " + g7(o.ida.robust_width) +
+           " in ln q; the lognormal fit takes the first overturning";
+}
+
+py::dict point_dict(const studies::IdaPoint& p) {
+    py::dict d = result();
+    d["q"] = p.q;
+    d["collapsed"] = p.collapsed;
+    return d;
+}
+
+// The refine method's fields of a record, as rocking fragility --json's.
+void add_refine_fields(py::dict& d, const Ida& ida) {
+    const bool bracketed = ida.first_overturning.collapsed && ida.intervals.front().has_lower;
+    py::dict first = point_dict(ida.first_overturning);
+    first["bracket"] = bracket(bracketed, bracketed ? ida.intervals.front().lower : studies::Bracket{});
+    if (bracketed) {
+        py::dict c = result();
+        c["confirmation"] = studies::confirmation_name(ida.intervals.front().lower_check.confirmation);
+        c["detail"] = text(ida.intervals.front().lower_check.detail);
+        first["check"] = c;
+    } else {
+        first["check"] = py::none();
+    }
+    d["first_overturning"] = first;
+    d["first_robust_collapse"] = point_dict(ida.first_robust_collapse);
+    py::list bands;
+    for (const studies::IdaBand& b : ida.bands) {
+        py::dict band = result();
+        band["from"] = b.from;
+        band["to"] = b.to;
+        band["share"] = b.share;
+        bands.append(band);
+    }
+    d["bands"] = bands;
+    d["method"] = "refine";
+    d["samples"] = ida.samples;
+    d["accepted"] = ida.accepted;
+    d["at_width"] = ida.at_width;
+    d["with_margins"] = ida.with_margins;
+    d["unguaranteed_from"] = none_if_nan(ida.unguaranteed_from);
+}
+
 py::dict fragility(const py::object& records_given, const py::object& alpha, const py::object& p, const Real& q_max,
                    const Whole& points, const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed,
-                   const std::optional<Whole>& jobs, const py::kwargs& extra) {
+                   const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
+                   const std::optional<Real>& robust_width_given, const py::kwargs& extra) {
     no_other_keywords(extra, "fragility", "fragility");
     const std::vector<double> alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 50);
     const std::vector<double> ps = values_in(p, "p", 0.01, 1000, "(0.01, 1000) rad/s", 50);
@@ -230,6 +280,22 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     const long long points_given = whole(points, "points");
     if (points_given < 2 || points_given > 10000) refuse("points: must be between 2 and 10000");
     o.ida.points = static_cast<int>(points_given);
+    // As rocking fragility's --method, --width and --robust-width.
+    const std::string method = string_argument(method_given, "method");
+    if (method != "grid" && method != "refine") refuse("method: grid or refine (got '" + method + "')");
+    const bool refine = method == "refine";
+    if (refine) o.ida.method = studies::IdaOptions::Method::refine;
+    const std::optional<double> width = number(width_given, "width"), robust_width = number(robust_width_given, "robust_width");
+    if (width && !refine) refuse("width goes with method='refine'");
+    if (robust_width && !refine) refuse("robust_width goes with method='refine'");
+    if (width) {
+        if (!(*width >= 1e-7 && *width <= 1e-1)) refuse("width: must be in [1e-7, 0.1] (in ln q)");
+        o.ida.width = *width;
+    }
+    if (robust_width) {
+        if (!(*robust_width >= 1e-7 && *robust_width <= 1)) refuse("robust_width: must be in [1e-7, 1] (in ln q)");
+        o.ida.robust_width = *robust_width;
+    }
     o.resamples = bootstrap_argument(bootstrap, seed, o.seed);
     if (o.resamples < 0 || o.resamples > 100000) refuse("bootstrap: must be between 0 and 100000");
     o.threads = jobs_argument(jobs);
@@ -267,6 +333,13 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     grid["note"] = o.ida.describe_grid() +
                    "; q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold; " +
                    o.ida.describe_checks();
+    if (refine) {
+        grid["method"] = "refine";
+        grid["width"] = o.ida.width;
+        grid["robust_width"] = o.ida.robust_width;
+        grid["fit_capacity"] = "first_overturning";
+        grid["refine_note"] = refine_note(o);
+    }
     out["grid"] = grid;
     py::list blocks_out;
     for (const BlockFragility& f : study) {
@@ -301,6 +374,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
                 intervals.append(i);
             }
             d["intervals"] = intervals;
+            if (refine) add_refine_fields(d, ida);
             rows.append(d);
         }
         b["records"] = rows;
@@ -471,10 +545,14 @@ spectrum's points as arrays (p, grid, max_theta, final_rotation, peak_rotation, 
 t_overturn with NaN for null).  jobs: threads (default: the cores this process may use).  An
 alpha given twice is refused.  Releases the GIL.)");
     m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a, "p"_a, "q_max"_a = 20.0, "points"_a = 100,
-          "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
+          "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(), "method"_a = "grid",
+          "width"_a = py::none(), "robust_width"_a = py::none(),
           R"(`rocking fragility --json`: for each block (every alpha with every p) and record, the IDA's
 overturning intervals in q = PGA/(alpha g), the first collapse q or a censored point, the lognormal
 fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).
+method='refine' (width=w in ln q, default 1e-5; robust_width, default 5e-3) adds each record's
+first_overturning (bracket, check), first_robust_collapse, bands (from, to, share), samples,
+with_margins and unguaranteed_from, as --method refine does; the fit takes the first overturning.
 An alpha, a p or a record (by its step and samples) given twice is refused.  Releases the GIL.)");
     m.def("eq27", gsl_checked(&eq27), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = py::none(),
           "p_max"_a = py::none(),

@@ -94,6 +94,29 @@ def test_a_study_takes_records_made_from_arrays(synthetic):
         [dict(i, lower=dict(i["lower"] or {}), upper=dict(i["upper"] or {})) for i in b.spectra[0].intervals]
 
 
+def test_fragility_refine_is_rocking_fragility_refine(tmp_path):
+    """method="refine" (issue 39): every field of `rocking fragility --method refine --json`, the
+    first overturning, its bracket and check, the first robust collapse, the bands and the counts."""
+    path = tmp_path / "s3.txt"
+    cli("record", "synth", "--stochastic", 3, "--dt", 0.01, "--duration", 20, "--output", path)
+    expected = cli("fragility", path, "--unit", "m/s2", "--alpha", 0.1, "--p", "2,3", "--q-max", 2, "--points", 20,
+                   "--method", "refine", "--width", 1e-3, "--robust-width", 1e-2)
+    record = rq.read_record(str(path), unit="m/s2")
+    for jobs in (1, 2):
+        got = rq.fragility([record], alpha=0.1, p=[2, 3], q_max=2, points=20, method="refine", width=1e-3,
+                           robust_width=1e-2, jobs=jobs)
+        check_fragility(got, expected)
+    first = expected["blocks"][1]["records"][0]
+    assert first["first_overturning"]["q"] < first["first_robust_collapse"]["q"]  # an island below the robust collapse
+    assert expected["grid"]["method"] == "refine"
+    with pytest.raises(ValueError, match="^width goes with method='refine'"):
+        rq.fragility([record], alpha=0.1, p=2, width=1e-3)
+    with pytest.raises(ValueError, match=r"^method: grid or refine \(got 'dense'\)"):
+        rq.fragility([record], alpha=0.1, p=2, method="dense")
+    with pytest.raises(ValueError, match=r"^width: must be in \[1e-7, 0.1\]"):
+        rq.fragility([record], alpha=0.1, p=2, method="refine", width=1.0)
+
+
 def test_study_arguments_are_checked():
     r = rq.record_synth(pulse=(0.6, 0.8, 0.4, 2.2), dt=0.01, duration=12)
     with pytest.raises(ValueError, match=r"^alpha: each must be in \(0, 0.7\)"):

@@ -35,8 +35,8 @@ using studies::IdaInterval;
 
 const char* kUsage =
     "usage: rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N] "
-    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json] [--rows FILE [--resume]] "
-    "[--quiet]";
+    "[--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] "
+    "[--output CSV] [--json] [--rows FILE [--resume]] [--quiet]";
 
 std::string g7(double v) { return significant(v, 7); }
 
@@ -56,6 +56,23 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     // Beyond 1e4 the scaled record reaches thousands of g: no physical input.
     if (!(o.ida.q_max > o.ida.q_min && o.ida.q_max <= 1e4)) throw UsageError("--q-max: must be in (1, 10000]");
     if (a.values.count("--points")) o.ida.points = integer("--points", a.values.at("--points"), 2, 10000);
+    if (a.values.count("--method")) {
+        const std::string& m = a.values.at("--method");
+        if (m != "grid" && m != "refine") throw UsageError("--method: grid or refine (got '" + m + "')");
+        if (m == "refine") o.ida.method = studies::IdaOptions::Method::refine;
+    }
+    const bool refine = o.ida.method == studies::IdaOptions::Method::refine;
+    for (const char* flag : {"--width", "--robust-width"})
+        if (a.values.count(flag) && !refine) throw UsageError(std::string(flag) + " goes with --method refine");
+    if (a.values.count("--width")) {
+        o.ida.width = number("--width", a.values.at("--width"));
+        if (!(o.ida.width >= 1e-7 && o.ida.width <= 1e-1)) throw UsageError("--width: must be in [1e-7, 0.1] (in ln q)");
+    }
+    if (a.values.count("--robust-width")) {
+        o.ida.robust_width = number("--robust-width", a.values.at("--robust-width"));
+        if (!(o.ida.robust_width >= 1e-7 && o.ida.robust_width <= 1))
+            throw UsageError("--robust-width: must be in [1e-7, 1] (in ln q)");
+    }
     const Bootstrap b = bootstrap_options(a);
     o.resamples = b.resamples;
     o.seed = b.seed;
@@ -81,6 +98,45 @@ std::string point_text(const Ida& ida) {
     if (!ida.point.collapsed) return "censored at q_max = " + g7(ida.point.q);
     if (!ida.intervals.front().has_lower) return "q = " + g7(ida.point.q) + " (collapse from the grid's lowest q)";
     return "q = " + g7(ida.point.q) + " (" + point_check_text(ida) + ")";
+}
+
+bool refined(const studies::FragilityStudyOptions& o) { return o.ida.method == studies::IdaOptions::Method::refine; }
+
+// The refine method's note: its width, its guarantee and the capacity the fit takes.
+std::string refine_note(const studies::FragilityStudyOptions& o) {
+    return "w = " + g7(o.ida.width) + " in ln q: every island and gap wider than w in ln q found, except above q = "
+           "(pi/2 - alpha)/alpha where the margin's guarantee does not hold; islands narrower than w may be missed; "
+           "first robust collapse: the start of the first interval wider than " + g7(o.ida.robust_width) +
+           " in ln q; the lognormal fit takes the first overturning";
+}
+
+std::string robust_text(const studies::IdaPoint& p) {
+    return p.collapsed ? "q = " + g7(p.q) : "censored at q_max = " + g7(p.q);
+}
+
+// The bands of q that overturn at all, each as [from, to]:share.
+std::string bands_text(const Ida& ida) {
+    std::string text;
+    for (const studies::IdaBand& b : ida.bands)
+        if (b.share > 0) text += (text.empty() ? "[" : " [") + g7(b.from) + ", " + g7(b.to) + "]:" + g7(b.share);
+    return text.empty() ? "none" : text;
+}
+
+std::string first_overturning_text(const Ida& ida) {
+    if (!ida.first_overturning.collapsed) return "censored at q_max = " + g7(ida.first_overturning.q);
+    const IdaInterval& in = ida.intervals.front();
+    if (!in.has_lower) return "q = " + g7(ida.first_overturning.q) + " (the grid's lowest q)";
+    return "q = " + g7(ida.first_overturning.q) + " in [" + g7(in.lower.safe) + ", " + g7(in.lower.collapse) + "] (" +
+           point_check_text(ida) + ")";
+}
+
+std::string refine_line(const Ida& ida) {
+    std::string text = "first overturning " + first_overturning_text(ida) + "; first robust collapse " +
+                       robust_text(ida.first_robust_collapse) + "; overturned share (q band:share) " + bands_text(ida) +
+                       "; " + std::to_string(ida.samples) + " runs with margins" +
+                       (ida.with_margins ? "" : " (no margins: every interval split to w)");
+    if (std::isfinite(ida.unguaranteed_from)) text += "; unguaranteed from q = " + g7(ida.unguaranteed_from);
+    return text;
 }
 
 std::string fit_text(const BlockFragility& f) {
@@ -109,11 +165,14 @@ void print_text(const std::vector<std::string>& files, const studies::FragilityS
                 const std::vector<BlockFragility>& study) {
     std::printf("fragility of %zu record(s)\n  model: %s\n  grid: %s\n", files.size(), o.ida.describe_model().c_str(),
                 grid_note(o).c_str());
+    if (refined(o)) std::printf("  refine: %s\n", refine_note(o).c_str());
     for (const BlockFragility& f : study) {
         std::printf("alpha = %g, p = %g rad/s:\n", f.block.alpha, f.block.p);
-        for (std::size_t k = 0; k < files.size(); ++k)
+        for (std::size_t k = 0; k < files.size(); ++k) {
             std::printf("  %s: %s; overturns for q in %s\n", files[k].c_str(), point_text(f.idas[k]).c_str(),
                         interval_list(f.idas[k]).c_str());
+            if (refined(o)) std::printf("    %s\n", refine_line(f.idas[k]).c_str());
+        }
         std::printf("  %s\n  empirical (q:share): %s\n", fit_text(f).c_str(), empirical_text(f).c_str());
     }
 }
@@ -136,12 +195,42 @@ std::string fit_json(const BlockFragility& f) {
            ", \"median\": " + range_json(f.interval.median) + ", \"beta\": " + range_json(f.interval.beta) + "}}";
 }
 
+std::string point_json(const studies::IdaPoint& p) {
+    return "{\"q\": " + json_number(p.q) + ", \"collapsed\": " + (p.collapsed ? "true" : "false");
+}
+
+// The refine method's fields of a record (issue 39): first_overturning with
+// its bracket and check, first_robust_collapse, every band's overturned share.
+std::string refine_json(const Ida& ida) {
+    const bool bracketed = ida.first_overturning.collapsed && ida.intervals.front().has_lower;
+    std::string text = ", \"first_overturning\": " + point_json(ida.first_overturning) +
+                       ", \"bracket\": " + bracket_json(bracketed, bracketed ? ida.intervals.front().lower : studies::Bracket{}) +
+                       ", \"check\": " +
+                       (bracketed ? "{\"confirmation\": " +
+                                        json_string(studies::confirmation_name(ida.intervals.front().lower_check.confirmation)) +
+                                        ", \"detail\": " + json_string(ida.intervals.front().lower_check.detail) + "}"
+                                  : std::string("null")) +
+                       "}, \"first_robust_collapse\": " + point_json(ida.first_robust_collapse) + "}, \"bands\": [";
+    for (std::size_t i = 0; i < ida.bands.size(); ++i)
+        text += std::string(i ? ", " : "") + "{\"from\": " + json_number(ida.bands[i].from) +
+                ", \"to\": " + json_number(ida.bands[i].to) + ", \"share\": " + json_number(ida.bands[i].share) + "}";
+    return text + "], \"method\": \"refine\", \"samples\": " + std::to_string(ida.samples) +
+           ", \"accepted\": " + std::to_string(ida.accepted) + ", \"at_width\": " + std::to_string(ida.at_width) +
+           ", \"with_margins\": " + (ida.with_margins ? "true" : "false") +
+           ", \"unguaranteed_from\": " + json_number(ida.unguaranteed_from);
+}
+
 void print_json(const std::vector<std::string>& files, const studies::FragilityStudyOptions& o,
                 const std::vector<BlockFragility>& study) {
     std::ostringstream js;
     js << "{\"model\": " << json_string(o.ida.describe_model()) << ", \"grid\": {\"q_min\": " << json_number(o.ida.q_min)
        << ", \"q_max\": " << json_number(o.ida.q_max) << ", \"points\": " << o.ida.points
-       << ", \"rel_tol\": " << json_number(o.ida.rel_tol) << ", \"note\": " << json_string(grid_note(o)) << "}, \"blocks\": [";
+       << ", \"rel_tol\": " << json_number(o.ida.rel_tol) << ", \"note\": " << json_string(grid_note(o));
+    if (refined(o))
+        js << ", \"method\": \"refine\", \"width\": " << json_number(o.ida.width)
+           << ", \"robust_width\": " << json_number(o.ida.robust_width) << ", \"fit_capacity\": \"first_overturning\""
+           << ", \"refine_note\": " << json_string(refine_note(o));
+    js << "}, \"blocks\": [";
     for (std::size_t b = 0; b < study.size(); ++b) {
         const BlockFragility& f = study[b];
         js << (b ? ", " : "") << "{\"alpha\": " << json_number(f.block.alpha) << ", \"p\": " << json_number(f.block.p)
@@ -163,7 +252,9 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
                    << ", \"lower\": " << bracket_json(in.has_lower, in.lower)
                    << ", \"upper\": " << bracket_json(in.has_upper, in.upper) << "}";
             }
-            js << "]}";
+            js << "]";
+            if (refined(o)) js << refine_json(ida);
+            js << "}";
         }
         js << "], \"fit\": " << fit_json(f) << ", \"no_fit\": " << (f.fitted ? "null" : json_string(f.no_fit))
            << ", \"empirical\": [";
@@ -178,7 +269,13 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
 
 void write_csv(const std::string& csv, const std::vector<std::string>& files, const studies::FragilityStudyOptions& o,
                const std::vector<BlockFragility>& study) {
-    harness::Table t({"alpha", "p", "file", "q", "collapsed", "intervals"});
+    std::vector<std::string> columns = {"alpha", "p", "file", "q", "collapsed", "intervals"};
+    if (refined(o))
+        for (const char* c : {"first_overturning", "first_overturning_safe", "first_overturning_collapse",
+                              "first_overturning_check", "first_robust_collapse", "first_robust_collapsed", "bands",
+                              "samples", "with_margins", "unguaranteed_from"})
+            columns.push_back(c);
+    harness::Table t(columns);
     t.note("command", "rocking fragility");
     t.note("model", o.ida.describe_model());
     t.note("solver", dynamics::solver_name(o.ida.model.solver.kind));
@@ -188,15 +285,36 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
     t.note("grid", grid_note(o));
     t.note("columns", "q: the first collapse q, or q_max where collapsed is false (censored); intervals: every "
                       "overturning interval in q, '+' where it runs to q_max");
+    if (refined(o)) {
+        t.note("refine", refine_note(o));
+        t.note("refine columns",
+               "first_overturning: the lowest interval's start (= q), its bracket (first_overturning_safe, "
+               "first_overturning_collapse; empty at the grid's end or censored) and check; first_robust_collapse: "
+               "the start of the first interval wider than the robust width, or q_max where first_robust_collapsed "
+               "is false; bands: each step of the main grid that overturns at all, [from, to]:share of it in ln q; "
+               "samples: runs with escape margins; unguaranteed_from: empty where the guarantee holds to q_max");
+    }
     for (const BlockFragility& f : study) {
         const std::string block = "alpha " + g7(f.block.alpha) + ", p " + g7(f.block.p);
         t.note("fit at " + block, fit_text(f));
         t.note("empirical at " + block, empirical_text(f));
     }
     for (const BlockFragility& f : study)
-        for (std::size_t k = 0; k < files.size(); ++k)
-            t.row().add(f.block.alpha).add(f.block.p).add(files[k]).add(f.idas[k].point.q)
-                .add(f.idas[k].point.collapsed).add(interval_list(f.idas[k]));
+        for (std::size_t k = 0; k < files.size(); ++k) {
+            const Ida& ida = f.idas[k];
+            auto& row = t.row().add(f.block.alpha).add(f.block.p).add(files[k]).add(ida.point.q)
+                            .add(ida.point.collapsed).add(interval_list(ida));
+            if (!refined(o)) continue;
+            const bool bracketed = ida.first_overturning.collapsed && ida.intervals.front().has_lower;
+            row.add(ida.first_overturning.q);
+            if (bracketed) row.add(ida.intervals.front().lower.safe).add(ida.intervals.front().lower.collapse)
+                               .add(point_check_text(ida));
+            else row.add(std::string()).add(std::string()).add(std::string());
+            row.add(ida.first_robust_collapse.q).add(ida.first_robust_collapse.collapsed).add(bands_text(ida))
+                .add(std::to_string(ida.samples)).add(ida.with_margins);
+            if (std::isfinite(ida.unguaranteed_from)) row.add(ida.unguaranteed_from);
+            else row.add(std::string());
+        }
     write_output(t, csv);
 }
 
@@ -215,7 +333,8 @@ Command command_from(int argc, char** argv, bool mpi) {
     int first = 0;
     c.files = file_arguments(count, args.data(), first, kUsage);
     c.args = parse(count, args.data(), first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
-                                               "--dt", "--jobs", "--output", "--rows"});
+                                               "--dt", "--jobs", "--output", "--rows", "--method", "--width",
+                                               "--robust-width"});
     const Args& a = c.args;
     const std::vector<double> alphas = list_in(a, "--alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange);
     const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
@@ -241,6 +360,7 @@ std::string description(const Command& c) {
     std::string text = "# rocking fragility: the IDAs of " + std::to_string(c.files.size()) + " record(s) x " +
                        std::to_string(c.blocks.size()) + " block(s)\n# model: " + c.study.ida.describe_model() +
                        "\n# grid: " + grid_note(c.study) + "\n";
+    if (refined(c.study)) text += "# refine: " + refine_note(c.study) + "\n";
     for (std::size_t k = 0; k < c.files.size(); ++k)
         text += "# record " + std::to_string(k) + ": " + c.files[k] + "\n";
     return text;

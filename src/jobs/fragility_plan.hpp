@@ -7,7 +7,11 @@
 // collapsed, simulations, check_simulations, point_confirmation, point_detail
 // (the first collapse's bracket check), intervals ("from|to|lower_safe|
 // lower_collapse|upper_safe|upper_collapse" each, ';' between; a bracket's
-// cells empty where the interval meets the grid's end), error.  Numbers in
+// cells empty where the interval meets the grid's end), robust_q and
+// robust_collapsed (the first robust collapse), bands ("from|to|share" each,
+// ';' between), refined, samples, accepted, at_width, with_margins,
+// unguaranteed_from (issue 39's fields of studies::Ida; the first overturning
+// is q, the first collapse, for both methods), error.  Numbers in
 // %.17g, which read back to the same double, so that the study is the same
 // bit for bit whether its IDAs came from memory or from a file.  The grid's
 // points of each IDA are not kept: the command prints none of them.
