@@ -20,17 +20,14 @@
 #include "dynamics/simulate.hpp"
 #include "records/record.hpp"
 #include "records/synthetic.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::dynamics;
 
 namespace {
 
-#ifndef ROCKING_SOURCE_DIR
-#define ROCKING_SOURCE_DIR "."
-#endif
-const std::string kNorcia =
-    std::string(ROCKING_SOURCE_DIR) + "/../shared/records/esm/IT.NRC..HGE.D.20161030.064018.C.ACC.ASC";
+const std::string kNorcia = rocking::testing::shared_record("esm/IT.NRC..HGE.D.20161030.064018.C.ACC.ASC");
 
 Model block(double alpha, double p) {
     Model m;

@@ -19,17 +19,14 @@
 #include "studies/overturning_set.hpp"
 #include "studies/scaled_input.hpp"
 #include "two_pulses_truth.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
 
 namespace {
 
-#ifndef ROCKING_SOURCE_DIR
-#define ROCKING_SOURCE_DIR "."
-#endif
-const std::string kNorcia =
-    std::string(ROCKING_SOURCE_DIR) + "/../shared/records/esm/IT.NRC..HGE.D.20161030.064018.C.ACC.ASC";
+const std::string kNorcia = rocking::testing::shared_record("esm/IT.NRC..HGE.D.20161030.064018.C.ACC.ASC");
 
 IdaOptions refine(double width) {
     IdaOptions o;

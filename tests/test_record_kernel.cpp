@@ -22,11 +22,7 @@ using namespace rocking::dynamics;
 
 namespace {
 
-#ifndef ROCKING_SOURCE_DIR
-#define ROCKING_SOURCE_DIR "."
-#endif
-const std::string kNorcia =
-    std::string(ROCKING_SOURCE_DIR) + "/../shared/records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC";
+const std::string kNorcia = rocking::testing::shared_record("esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC");
 
 // A broadband "record" with quiet stretches: decaying sines under an
 // envelope, sampled at dt.

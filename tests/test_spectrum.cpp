@@ -18,6 +18,7 @@
 #include "studies/scaled_input.hpp"
 #include "studies/spectrum.hpp"
 #include "two_pulses_truth.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
@@ -382,7 +383,7 @@ TEST(Spectrum, OnARealRecordEveryFlagIsWhatTheProbeAndTheSecondSolverSee) {
     // boundary's label is checked here by rerunning the probe and the second
     // solver at its two ends.  Fails with the probe taken out (flagged
     // boundaries then read "confirmed" or "disagrees").
-    const std::string path = std::string(ROCKING_SOURCE_DIR) + "/../shared/records/esm/IT.AQK..HNE.D.20090406.013240.C.ACC.ASC";
+    const std::string path = rocking::testing::shared_record("esm/IT.AQK..HNE.D.20090406.013240.C.ACC.ASC");
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared records folder absent: " << path;
     const records::Record r = records::read_any(path);
     const dynamics::SampledInput input(r.in_g(9.81), r.dt, r.name);

@@ -15,7 +15,17 @@
 
 #include "pulse/pulse_train.hpp"
 
+#ifndef ROCKING_SOURCE_DIR
+#define ROCKING_SOURCE_DIR "."
+#endif
+
 namespace rocking::testing {
+
+// A record of the shared folder beside the checkout, ../shared/records/RELATIVE
+// (the tests that need one skip, saying so, where it is absent).
+inline std::string shared_record(const std::string& relative) {
+    return std::string(ROCKING_SOURCE_DIR) + "/../shared/records/" + relative;
+}
 
 inline std::string write_temp(const std::string& folder, const std::string& name, const std::string& text) {
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / folder;
