@@ -8,13 +8,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "narrow_islands_truth.hpp"
 #include "records/collapse.hpp"
+#include "records/record.hpp"
 #include "studies/ida.hpp"
 #include "studies/scaled_input.hpp"
 #include "studies/spectrum.hpp"
@@ -223,4 +227,74 @@ TEST(OverturningTruth, TodaysDefaultGridsMissBothIslands) {
     if (ida.point.collapsed) {
         EXPECT_GT(ida.point.q, NarrowIslandInQ::upper);
     }
+}
+
+namespace {
+
+struct ScanIsland {
+    double from, to;
+};
+
+// expected/overturning_set/<name>: the dense scan's islands (from, to).
+std::vector<ScanIsland> scan_islands(const std::string& name) {
+    std::ifstream f(std::string(ROCKING_SOURCE_DIR) + "/expected/overturning_set/" + name);
+    EXPECT_TRUE(f.good()) << name;
+    std::vector<ScanIsland> out;
+    std::string line;
+    bool header = true;
+    while (std::getline(f, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        if (header) {
+            EXPECT_EQ(line.rfind("island,from,to,", 0), 0u) << name << ": columns";
+            header = false;
+            continue;
+        }
+        std::istringstream row(line);
+        std::string island, from, to;
+        std::getline(row, island, ',');
+        std::getline(row, from, ',');
+        std::getline(row, to, ',');
+        out.push_back({std::stod(from), std::stod(to)});
+    }
+    return out;
+}
+
+// The scan's islands that no interval of a grid method touches.
+template <class Interval>
+int missed(const std::vector<ScanIsland>& truth, const std::vector<Interval>& found) {
+    int n = 0;
+    for (const ScanIsland& t : truth) n += misses(found, t.from, t.to);
+    return n;
+}
+
+const char* const kNorcia = "/../shared/records/esm/IT.NRC..HGE.D.20161030.064018.C.ACC.ASC";
+
+}  // namespace
+
+TEST(OverturningTruth, TodaysIdaAndSpectrumMissIslandsOfTheDenseScan) {
+    // Issue 39's example, IT.NRC HGE 2016-10-30, alpha 0.1 (Table 1's model):
+    // the dense scans of expected/overturning_set (10^5 points by a second
+    // implementation, each boundary bisected to 1e-10) hold islands on
+    // q in [1.3190, 1.3215] (p 2.5) and p in [1.183, 1.186] that today's
+    // default IDA and spectrum do not report: their first collapse lies above
+    // the scan's first overturning.  Fails (rightly: update it) once the
+    // default studies find them.  Skipped without the shared records.
+    const std::string path = std::string(ROCKING_SOURCE_DIR) + kNorcia;
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared records folder absent: " << path;
+    const records::Record r = records::read_any(path);
+    const dynamics::SampledInput input(r.in_g(9.81), r.dt, r.name);
+
+    const std::vector<ScanIsland> in_q = scan_islands("ida_islands.csv");
+    ASSERT_FALSE(in_q.empty());
+    const Ida ida = incremental_dynamic_analysis(input, 0.1, 2.5, IdaOptions{});
+    ASSERT_TRUE(ida.point.collapsed);
+    EXPECT_GT(ida.point.q, in_q.front().from * (1 + 1e-6)) << "today's IDA finds the first overturning";
+    EXPECT_GT(missed(in_q, ida.intervals), 0) << "today's IDA finds every island of the scan in q";
+
+    const std::vector<ScanIsland> in_p = scan_islands("spectrum_islands.csv");
+    ASSERT_FALSE(in_p.empty());
+    const Spectrum s = rocking_spectrum(input, 0.1, SpectrumOptions{});
+    ASSERT_FALSE(s.intervals.empty());
+    EXPECT_GT(s.intervals.front().from, in_p.front().from * (1 + 1e-6)) << "today's spectrum finds the first overturning";
+    EXPECT_GT(missed(in_p, s.intervals), 0) << "today's spectrum finds every island of the scan in p";
 }
