@@ -6,6 +6,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "dynamics/escape_margin.hpp"
+#include "studies/overturning_set.hpp"
 #include "studies/scaled_input.hpp"
 #include "studies/search_alpha.hpp"
 
@@ -36,7 +38,13 @@ double SpectrumOptions::step() const { return log_step(p_min, p_max, points); }
 std::string SpectrumOptions::describe_grid() const {
     char text[400];
     const double r = step();
-    if (offset_grid)
+    if (method == Method::refine)
+        std::snprintf(text, sizeof text,
+                      "refined from %d p log-spaced from %g to %g rad/s (x%.6g) down to %g in ln p where the flights' "
+                      "escape margins (slopes by a second run at p (1 + %g)) do not clear an interval; islands "
+                      "narrower than %g in ln p may be missed",
+                      points, p_min, p_max, r, width, slope_step, width);
+    else if (offset_grid)
         std::snprintf(text, sizeof text,
                       "%d p log-spaced from %g to %g rad/s (x%.6g), and %d more offset by half a step (x%.6g); "
                       "islands narrower than half a step (x%.6g) may be missed",
@@ -79,6 +87,10 @@ void check_options(double alpha, const SpectrumOptions& o) {
     // Below 1e-15 the bisection would stall on neighbouring doubles.
     if (!(o.rel_tol >= 1e-15 && o.rel_tol <= 0.1)) throw std::invalid_argument("spectrum: rel_tol must be in [1e-15, 0.1]");
     if (!(o.probe > 0 && o.probe <= 1e-3)) throw std::invalid_argument("spectrum: the probe must be in (0, 1e-3]");
+    if (!(o.width > 0 && o.width <= 0.1)) throw std::invalid_argument("spectrum: the width must be in (0, 0.1]");
+    if (!(o.slope_step >= 1e-12 && o.slope_step <= 1e-6))
+        throw std::invalid_argument("spectrum: the slope step must be in [1e-12, 1e-6]");
+    if (!(o.robust_width > 0)) throw std::invalid_argument("spectrum: the robust width must be > 0");
 }
 
 SpectrumPoint run_point(const GroundInput& input, double alpha, const GridPoint& at, const SpectrumOptions& o) {
@@ -144,6 +156,126 @@ std::vector<Interval> intervals_of(const std::vector<SpectrumPoint>& pts, const 
     return out;
 }
 
+dynamics::Model model_at(double alpha, double p, const records::CollapseOptions& m) {
+    dynamics::Model model;
+    model.equation = m.equation;
+    model.restitution = m.housner_restitution ? dynamics::housner_restitution(alpha) : m.restitution;
+    model.block = dynamics::Block::from_p(p, alpha);
+    return model;
+}
+
+// One sample of the refine method at p: the run with each flight's escape
+// margin, as records::collapses_at runs it (the same model and options: the
+// observer changes no outcome, EscapeMargin.TheObserverChangesNoOutcome),
+// and a second at p (1 + slope_step) whose margins, matched by index, give
+// dXi_j / d ln p by their difference.  The outcome only without the record
+// kernel, or where the two runs differ in outcome or number of flights.
+class PSampler {
+public:
+    PSampler(const GroundInput& input, double alpha, const SpectrumOptions& o) : input_(input), alpha_(alpha), o_(o) {
+        sim_.solver = o.model.solver;
+        sim_.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
+        record_ = dynamic_cast<const dynamics::SampledInput*>(&input);
+        if (!record_ || o.model.criterion != dynamics::Criterion::overturning ||
+            !dynamics::record_kernel_applies(model_at(alpha, o.p_min, o.model), *record_, sim_))
+            record_ = nullptr;
+    }
+    bool with_margins() const { return record_ != nullptr; }
+    bool collapses(double p) const { return records::collapses_at(input_, alpha_, p, o_.model); }
+    MarginSample operator()(double p) const {
+        MarginSample s;
+        if (!record_) {
+            s.collapse = collapses(p);
+            return s;
+        }
+        std::vector<dynamics::FlightMargin> at_p, at_p2;
+        s.collapse = run(p, at_p);
+        const double p2 = p * (1 + o_.slope_step);
+        if (run(p2, at_p2) != s.collapse || at_p2.size() != at_p.size()) return s;
+        const double d = std::log(p2 / p);
+        s.has_margins = true;
+        for (std::size_t j = 0; j < at_p.size(); ++j) {
+            s.xi.push_back(at_p[j].xi);
+            s.slope.push_back((at_p2[j].xi - at_p[j].xi) / d);
+        }
+        return s;
+    }
+
+private:
+    bool run(double p, std::vector<dynamics::FlightMargin>& flights) const {
+        const dynamics::Model model = model_at(alpha_, p, o_.model);
+        const dynamics::RestOfInput rest(*record_, p);
+        dynamics::FlightMargins margins(model, rest, 1.0);
+        const bool c = dynamics::simulate_with_margins(model, *record_, sim_, margins).collapse(o_.model.criterion, alpha_);
+        flights = margins.flights();
+        return c;
+    }
+
+    const GroundInput& input_;
+    double alpha_;
+    const SpectrumOptions& o_;
+    dynamics::SimulationOptions sim_;
+    const dynamics::SampledInput* record_ = nullptr;
+};
+
+// The first overturning and the first robust collapse, both methods alike.
+void summarise(Spectrum& s, const SpectrumOptions& o) {
+    s.first_overturning = s.first_robust_collapse = SpectrumFirst{o.p_max, false};
+    if (!s.intervals.empty()) s.first_overturning = SpectrumFirst{s.intervals.front().from, true};
+    for (const Interval& in : s.intervals)
+        if (std::log(in.to / in.from) > o.robust_width) {
+            s.first_robust_collapse = SpectrumFirst{in.from, true};
+            break;
+        }
+}
+
+// The refine method: studies/overturning_set.hpp over [p_min, p_max] from
+// the main grid, its boundaries checked as the grid's.
+void refined_spectrum(Spectrum& s, const GroundInput& input, double alpha, const SpectrumOptions& o) {
+    s.refined = true;
+    const PSampler sampler(input, alpha, o);
+    s.with_margins = sampler.with_margins();
+    RefineOptions ro;
+    ro.width = o.width;
+    ro.coarse = o.points;
+    ro.rel_tol = o.rel_tol;
+    // The turn-back bound of the IDA, q > (pi/2 - alpha)/alpha, on the input's own q.
+    if (input.peak() / alpha > (M_PI / 2 - alpha) / alpha) ro.guarantee_below = 0;
+    const RefinedSet set =
+        refine_set([&sampler](double p) { return sampler(p); }, [&sampler](double p) { return sampler.collapses(p); },
+                   o.p_min, o.p_max, ro);
+    const std::vector<GridPoint> coarse = log_grid(o.p_min, o.p_max, o.points, false, {});
+    for (const GridPoint& at : coarse) s.points.push_back(run_point(input, alpha, at, o));
+    s.samples = set.samples;
+    s.simulations = static_cast<long>(coarse.size()) + set.bisection_runs + (s.with_margins ? 2 : 1) * set.samples;
+    s.accepted = set.accepted;
+    s.at_width = set.at_width;
+    s.unguaranteed_from = set.unguaranteed_from;
+
+    std::vector<Boundary> boundaries;
+    for (const Bracket& br : set.brackets) {
+        Boundary b;
+        b.p_safe = br.safe;
+        b.p_collapse = br.collapse;
+        boundaries.push_back(b);
+    }
+    s.boundaries = static_cast<int>(boundaries.size());
+    if (o.confirm && !boundaries.empty()) {
+        const auto up = scaled(input, 1 + o.probe), down = scaled(input, 1 - o.probe);
+        for (Boundary& b : boundaries) confirm(b, input, *up, *down, alpha, o, s);
+    }
+    for (const Span& span : set.spans) {
+        Interval in;
+        in.from = span.from;
+        in.to = span.to;
+        in.has_lower = span.lower >= 0;
+        in.has_upper = span.upper >= 0;
+        if (in.has_lower) in.lower = boundaries[span.lower];
+        if (in.has_upper) in.upper = boundaries[span.upper];
+        s.intervals.push_back(in);
+    }
+}
+
 }  // namespace
 
 Spectrum rocking_spectrum(const GroundInput& input, double alpha, const SpectrumOptions& o) {
@@ -154,6 +286,11 @@ Spectrum rocking_spectrum(const GroundInput& input, double alpha, const Spectrum
     threshold.equation = o.model.equation;
     threshold.block = dynamics::Block::from_p(1.0, alpha);
     s.lifts = input.peak() > threshold.uplift_threshold();
+    if (o.method == SpectrumOptions::Method::refine) {
+        refined_spectrum(s, input, alpha, o);
+        summarise(s, o);
+        return s;
+    }
 
     const std::vector<GridPoint> ps = log_grid(o.p_min, o.p_max, o.points, o.offset_grid, o.extra_points);
     for (const GridPoint& at : ps) s.points.push_back(run_point(input, alpha, at, o));
@@ -170,6 +307,7 @@ Spectrum rocking_spectrum(const GroundInput& input, double alpha, const Spectrum
         for (Boundary& b : boundaries) confirm(b, input, *up, *down, alpha, o, s);
     }
     s.intervals = intervals_of(s.points, boundaries);
+    summarise(s, o);
     return s;
 }
 

@@ -10,6 +10,7 @@
 // (docs/spectrum.md).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,20 @@ struct SpectrumOptions {
     double rel_tol = 1e-6;             // boundaries bisected until (p_hi - p_lo) / p_hi <= rel_tol
     bool confirm = true;               // the conditioning probe and the second solver at every boundary
     double probe = 1e-13;              // the probe: the input scaled by 1 + probe and 1 - probe
+    // The method (issue 39).  grid: the grids above.  refine: the overturning
+    // set to a width w in ln p (studies/overturning_set.hpp, docs/
+    // overturning_set.md section 3) from the main grid (`points`, no offset
+    // grid, no extra points), each sample a run with each flight's escape
+    // margin Xi_j plus a second run at p (1 + slope_step) for dXi_j / d ln p
+    // (flights matched by index; a sample whose two runs differ in outcome or
+    // in number of flights carries its outcome only).  Without the record
+    // kernel (another input, solver, equation or criterion) every interval is
+    // split to w.
+    enum class Method { grid, refine };
+    Method method = Method::grid;
+    double width = 1e-5;         // w, in ln p (refine)
+    double slope_step = 1e-9;    // the second run's relative step in p (refine)
+    double robust_width = 5e-3;  // an interval wider than this in ln p is a robust collapse
     // The second solver, on the model of `model`: GSL rk8pd at rtol = atol =
     // 1e-13 alpha, as Table 1's bracket check (reproduce/scenes/records_analysis.cpp).
     dynamics::SolverOptions check_solver = rk8pd_check();
@@ -73,6 +88,13 @@ struct Interval {
     Boundary lower, upper;
 };
 
+// The start of the first interval of collapse of some kind, or p_max and
+// found false (censored) without one.
+struct SpectrumFirst {
+    double p = 0;
+    bool found = false;
+};
+
 struct Spectrum {
     double alpha = 0;
     bool lifts = false;                 // the input exceeds the uplift threshold at all
@@ -81,11 +103,26 @@ struct Spectrum {
     int boundaries = 0;
     long simulations = 0;        // the first solver's: grid, bisection and probe
     long check_simulations = 0;  // the second solver's
+    // Issue 39, both methods: the first overturning (the start of the first
+    // interval) and the first robust collapse (of the first interval wider
+    // than robust_width in ln p).
+    SpectrumFirst first_overturning, first_robust_collapse;
+    // The refine method's: `points` are then its coarse grid's, each run in full.
+    bool refined = false;
+    long samples = 0;           // samples with margins (each two runs, of `simulations`)
+    long accepted = 0;          // intervals accepted by the margins
+    long at_width = 0;          // intervals split down to w with one outcome at both ends
+    bool with_margins = false;  // false: the record kernel does not run this model (every interval split to w)
+    // The input's q = PGA / (alpha g) above (pi/2 - alpha)/alpha: an
+    // overturning run need not have a flight with Xi > 0 (the guarantee stops
+    // at p_min), else +inf.
+    double unguaranteed_from = std::numeric_limits<double>::infinity();
 };
 
 // Throws std::invalid_argument for options out of range (points < 2,
 // p_min not > 0, p_max not > p_min, rel_tol not in [1e-15, 0.1], probe not
-// in (0, 1e-3]) and whatever simulate() throws.
+// in (0, 1e-3], width not in (0, 0.1], slope_step not in [1e-12, 1e-6],
+// robust_width not > 0) and whatever simulate() throws.
 Spectrum rocking_spectrum(const dynamics::GroundInput& input, double alpha, const SpectrumOptions& options);
 
 }  // namespace rocking::studies
