@@ -22,10 +22,14 @@
 #include "studies/scaled_input.hpp"
 #include "harness/table.hpp"
 #include "narrow_islands_truth.hpp"
+#include "overturning_truths.hpp"
 #include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
+using rocking::testing::restitution_zero;
+using rocking::testing::scan_islands;
+using rocking::testing::ScanIsland;
 
 namespace {
 
@@ -38,12 +42,6 @@ IdaOptions refine(double width) {
     return o;
 }
 
-records::CollapseOptions restitution_zero() {
-    records::CollapseOptions o;
-    o.housner_restitution = false;
-    o.restitution = 0.0;
-    return o;
-}
 
 // Whether [lo, hi] lies in bracket [a, b] (either order) widened by tol relative.
 bool holds(double a, double b, long double lo, long double hi, double tol) {
@@ -173,32 +171,6 @@ struct Norcia {
 
 namespace {
 
-// An island of expected/overturning_set/ida_islands.csv: its ends (the
-// brackets' overturning ends) and the brackets, each 1e-10 wide.
-struct ScanIsland {
-    double from, to, from_safe, to_safe;
-};
-
-std::vector<ScanIsland> read_scan_islands(const std::string& path) {
-    const harness::CsvFile f = harness::read_csv(path);
-    auto column = [&](const std::string& name) {
-        for (std::size_t k = 0; k < f.columns.size(); ++k)
-            if (f.columns[k] == name) return k;
-        throw std::runtime_error(path + ": no column " + name);
-    };
-    const std::size_t from = column("from"), to = column("to"), from_safe = column("from_safe"),
-                      from_collapse = column("from_collapse"), to_collapse = column("to_collapse"),
-                      to_safe = column("to_safe"), from_check = column("from_check"), to_check = column("to_check");
-    std::vector<ScanIsland> out;
-    for (const auto& row : f.rows) {
-        EXPECT_EQ(row[from], row[from_collapse]);
-        EXPECT_EQ(row[to], row[to_collapse]);
-        EXPECT_EQ(row[from_check], "agreed");
-        EXPECT_EQ(row[to_check], "agreed");
-        out.push_back({std::stod(row[from]), std::stod(row[to]), std::stod(row[from_safe]), std::stod(row[to_safe])});
-    }
-    return out;
-}
 
 }  // namespace
 
@@ -219,8 +191,7 @@ TEST(OverturningSearch, EveryIslandOfTheNorciaDenseScanWiderThanWIsFound) {
     // every interval it reports must be one of the scan's: its brackets
     // holding a start and an end of the scan's islands, to 1e-6.
     if (!std::filesystem::exists(kNorcia)) GTEST_SKIP() << "shared records folder absent: " << kNorcia;
-    const std::vector<ScanIsland> scan =
-        read_scan_islands(std::string(ROCKING_SOURCE_DIR) + "/expected/overturning_set/ida_islands.csv");
+    const std::vector<ScanIsland> scan = scan_islands("ida_islands.csv");
     ASSERT_EQ(scan.size(), 12u);
     const Norcia c(records::read_esm(kNorcia));
     const double lo = 1.3190, hi = 1.3215, tol = 1e-6;

@@ -20,10 +20,14 @@
 #include "records/collapse.hpp"
 #include "records/record.hpp"
 #include "studies/spectrum.hpp"
+#include "overturning_truths.hpp"
 #include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
+using rocking::testing::restitution_zero;
+using rocking::testing::scan_islands;
+using rocking::testing::ScanIsland;
 using rocking::testing::NarrowIslandInP;
 
 namespace {
@@ -35,42 +39,9 @@ SpectrumOptions refine(double width) {
     return o;
 }
 
-records::CollapseOptions restitution_zero() {
-    records::CollapseOptions o;
-    o.housner_restitution = false;
-    o.restitution = 0.0;
-    return o;
-}
 
 bool meets(double a, double b, double c, double d) { return a <= d && c <= b; }
 
-struct ScanIsland {
-    double from, to;
-};
-
-// expected/overturning_set/spectrum_islands.csv: the dense scan's islands (from, to).
-std::vector<ScanIsland> scan_islands() {
-    std::ifstream f(std::string(ROCKING_SOURCE_DIR) + "/expected/overturning_set/spectrum_islands.csv");
-    EXPECT_TRUE(f.good());
-    std::vector<ScanIsland> out;
-    std::string line;
-    bool header = true;
-    while (std::getline(f, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        if (header) {
-            EXPECT_EQ(line.rfind("island,from,to,", 0), 0u) << "columns";
-            header = false;
-            continue;
-        }
-        std::istringstream row(line);
-        std::string island, from, to;
-        std::getline(row, island, ',');
-        std::getline(row, from, ',');
-        std::getline(row, to, ',');
-        out.push_back({std::stod(from), std::stod(to)});
-    }
-    return out;
-}
 
 }  // namespace
 
@@ -159,7 +130,7 @@ TEST(OverturningSpectrum, EveryIslandOfNorciaWiderThanWIsFoundAndNoneInvented) {
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared records folder absent: " << path;
     const records::Record r = records::read_any(path);
     const dynamics::SampledInput input(r.in_g(9.81), r.dt, r.name);
-    const std::vector<ScanIsland> truth = scan_islands();
+    const std::vector<ScanIsland> truth = scan_islands("spectrum_islands.csv");
     ASSERT_EQ(truth.size(), 18u);
     const double lo = 1.183, hi = 1.186, step = std::log(hi / lo) / (100000 - 1);
     for (const double w : {1e-5, 1e-6}) {

@@ -22,20 +22,18 @@
 #include "studies/ida.hpp"
 #include "studies/scaled_input.hpp"
 #include "studies/spectrum.hpp"
+#include "overturning_truths.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
+using rocking::testing::restitution_zero;
+using rocking::testing::scan_islands;
+using rocking::testing::ScanIsland;
 using rocking::testing::NarrowIslandInP;
 using rocking::testing::NarrowIslandInQ;
 
 namespace {
 
-records::CollapseOptions restitution_zero() {
-    records::CollapseOptions o;
-    o.housner_restitution = false;
-    o.restitution = 0.0;
-    return o;
-}
 
 // The boundary of a boolean inside [lo, hi] (outcomes differ at the ends),
 // bisected in long double until the bracket is 1e-15 relative.
@@ -231,33 +229,6 @@ TEST(OverturningTruth, TodaysDefaultGridsMissBothIslands) {
 
 namespace {
 
-struct ScanIsland {
-    double from, to;
-};
-
-// expected/overturning_set/<name>: the dense scan's islands (from, to).
-std::vector<ScanIsland> scan_islands(const std::string& name) {
-    std::ifstream f(std::string(ROCKING_SOURCE_DIR) + "/expected/overturning_set/" + name);
-    EXPECT_TRUE(f.good()) << name;
-    std::vector<ScanIsland> out;
-    std::string line;
-    bool header = true;
-    while (std::getline(f, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        if (header) {
-            EXPECT_EQ(line.rfind("island,from,to,", 0), 0u) << name << ": columns";
-            header = false;
-            continue;
-        }
-        std::istringstream row(line);
-        std::string island, from, to;
-        std::getline(row, island, ',');
-        std::getline(row, from, ',');
-        std::getline(row, to, ',');
-        out.push_back({std::stod(from), std::stod(to)});
-    }
-    return out;
-}
 
 // The scan's islands that no interval of a grid method touches.
 template <class Interval>
