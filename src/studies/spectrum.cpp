@@ -132,18 +132,10 @@ void confirm(Boundary& b, const GroundInput& input, const GroundInput& up, const
     b.detail = c.detail;
 }
 
-// The intervals of collapse from the grid's outcomes and its refined boundaries.
-std::vector<Interval> intervals_of(const std::vector<SpectrumPoint>& pts, const std::vector<Boundary>& boundaries) {
-    std::vector<double> ps;
-    std::vector<bool> collapse;
-    for (const SpectrumPoint& pt : pts) {
-        ps.push_back(pt.p);
-        collapse.push_back(pt.collapse);
-    }
-    std::vector<Bracket> brackets;
-    for (const Boundary& b : boundaries) brackets.push_back({b.p_safe, b.p_collapse});
+// The intervals of collapse of the spans, each end's boundary attached.
+std::vector<Interval> intervals_of(const std::vector<Span>& spans, const std::vector<Boundary>& boundaries) {
     std::vector<Interval> out;
-    for (const Span& span : spans_of(ps, collapse, brackets)) {
+    for (const Span& span : spans) {
         Interval in;
         in.from = span.from;
         in.to = span.to;
@@ -154,6 +146,19 @@ std::vector<Interval> intervals_of(const std::vector<SpectrumPoint>& pts, const 
         out.push_back(in);
     }
     return out;
+}
+
+// The intervals of collapse from the grid's outcomes and its refined boundaries.
+std::vector<Interval> intervals_of(const std::vector<SpectrumPoint>& pts, const std::vector<Boundary>& boundaries) {
+    std::vector<double> ps;
+    std::vector<bool> collapse;
+    for (const SpectrumPoint& pt : pts) {
+        ps.push_back(pt.p);
+        collapse.push_back(pt.collapse);
+    }
+    std::vector<Bracket> brackets;
+    for (const Boundary& b : boundaries) brackets.push_back({b.p_safe, b.p_collapse});
+    return intervals_of(spans_of(ps, collapse, brackets), boundaries);
 }
 
 dynamics::Model model_at(double alpha, double p, const records::CollapseOptions& m) {
@@ -264,16 +269,7 @@ void refined_spectrum(Spectrum& s, const GroundInput& input, double alpha, const
         const auto up = scaled(input, 1 + o.probe), down = scaled(input, 1 - o.probe);
         for (Boundary& b : boundaries) confirm(b, input, *up, *down, alpha, o, s);
     }
-    for (const Span& span : set.spans) {
-        Interval in;
-        in.from = span.from;
-        in.to = span.to;
-        in.has_lower = span.lower >= 0;
-        in.has_upper = span.upper >= 0;
-        if (in.has_lower) in.lower = boundaries[span.lower];
-        if (in.has_upper) in.upper = boundaries[span.upper];
-        s.intervals.push_back(in);
-    }
+    s.intervals = intervals_of(set.spans, boundaries);
 }
 
 }  // namespace
