@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "batch/pool.hpp"
+#include "test_util.hpp"
 
 using namespace rocking::batch;
 
@@ -32,13 +33,6 @@ std::uint64_t busy(std::size_t i) {
     return h;
 }
 
-// This process's address space in bytes (/proc/self/statm's first field, in pages).
-std::size_t address_space() {
-    std::size_t pages = 0;
-    std::ifstream("/proc/self/statm") >> pages;
-    return pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-}
-
 }  // namespace
 
 // Issue 38: --jobs 1500 for 5 jobs started 1500 threads, each with its
@@ -47,8 +41,7 @@ std::size_t address_space() {
 // them all (run in a child: the limit is the process's).
 TEST(Batch, NoMoreThreadsStartThanJobs) {
     const auto child = [&] {
-        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
-        setrlimit(RLIMIT_AS, &limit);
+        rocking::testing::limit_address_space();
         for (std::size_t n : {1, 3, 5}) {
             std::vector<std::size_t> delivered;
             try {
@@ -70,8 +63,7 @@ TEST(Batch, NoMoreThreadsStartThanJobs) {
 TEST(Batch, ThreadsThatCannotStartAreSaidBeforeAnyJobRuns) {
     // The child's work, out of the macro (whose arguments cannot hold commas).
     const auto child = [&] {
-        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
-        setrlimit(RLIMIT_AS, &limit);  // room for about 25 stacks of 8 MiB
+        rocking::testing::limit_address_space();
         std::atomic<int> ran{0};
         try {
             run_ordered<int>(

@@ -560,15 +560,6 @@ TEST(BatchEngine, CollectGivesEveryRowOnceInOrderInMemoryOrAfterAResume) {
     EXPECT_EQ(rows, expected) << "a resume of the finished file";
 }
 
-namespace {
-
-std::size_t address_space() {
-    std::size_t pages = 0;
-    std::ifstream("/proc/self/statm") >> pages;
-    return pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-}
-
-}  // namespace
 
 // Issue 38, item 7: --jobs 1500 for 5 jobs started 1500 threads, and under a
 // memory limit failed for threads it never needed.  Here, under room for
@@ -577,8 +568,7 @@ TEST(BatchEngine, TheEngineStartsNoMoreThreadsThanJobsLeft) {
     const std::string dir = temp_dir();
     const BatchPlan plan = synthetic_plan(5);
     const auto child = [&] {
-        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
-        setrlimit(RLIMIT_AS, &limit);
+        rocking::testing::limit_address_space();
         EngineOptions o;
         o.quiet = true;
         o.threads = 1500;
@@ -607,8 +597,7 @@ TEST(BatchEngine, ThreadsThatCannotStartLeaveNoResumeStateBehind) {
     const std::string state_before = slurp(dir + "/resumed.csv.partial.state");
     // The child's work, out of the macro (whose arguments cannot hold commas).
     const auto child = [&] {
-        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
-        setrlimit(RLIMIT_AS, &limit);
+        rocking::testing::limit_address_space();
         EngineOptions o;
         o.quiet = true;
         o.threads = 1500;
@@ -733,8 +722,7 @@ TEST(BatchEngine, UnderRanksThreadsThatCannotStartEndEveryRankWithStatus2AndNoFi
     const std::string dir = temp_dir();
     const BatchPlan plan = synthetic_plan(2000);
     const auto child = [&] {
-        const rlimit limit{address_space() + (std::size_t{200} << 20), RLIM_INFINITY};
-        setrlimit(RLIMIT_AS, &limit);
+        rocking::testing::limit_address_space();
         EngineOptions o;
         o.quiet = true;
         o.threads = 1500;

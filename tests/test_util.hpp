@@ -4,6 +4,8 @@
 #pragma once
 
 #include <stdlib.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -20,6 +22,16 @@
 #endif
 
 namespace rocking::testing {
+
+// Caps this process's address space at what it holds now plus `headroom`
+// bytes (200 MiB: room for about 25 thread stacks of 8 MiB), so that threads
+// beyond it cannot start.  For a child of EXPECT_EXIT: the limit is the process's.
+inline void limit_address_space(std::size_t headroom = std::size_t{200} << 20) {
+    std::size_t pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    const rlimit limit{pages * static_cast<std::size_t>(sysconf(_SC_PAGESIZE)) + headroom, RLIM_INFINITY};
+    setrlimit(RLIMIT_AS, &limit);
+}
 
 // A record of the shared folder beside the checkout, ../shared/records/RELATIVE
 // (the tests that need one skip, saying so, where it is absent).
