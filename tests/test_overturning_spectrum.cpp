@@ -170,6 +170,21 @@ TEST(OverturningSpectrum, EveryIslandOfNorciaWiderThanWIsFoundAndNoneInvented) {
             }
         EXPECT_GE(s.first_overturning.p, truth.front().from * (1 - 1e-6));
         EXPECT_LE(s.first_overturning.p, first_wide);
+        // Each band's overturned share against the scan's: they may differ by
+        // the islands narrower than w (missed) and the bisection's 1e-6 at
+        // each boundary, no more.
+        ASSERT_EQ(s.bands.size(), 2u);
+        for (const studies::Band& b : s.bands) {
+            double covered = 0, narrow = 0;
+            for (const ScanIsland& t : truth) {
+                const double a = std::max(b.from, t.from), z = std::min(b.to, t.to);
+                if (z > a) covered += std::log(z / a);
+                if (z > a && !(std::log(t.to / t.from) > w)) narrow += std::log(z / a);
+            }
+            const double span = std::log(b.to / b.from);
+            EXPECT_NEAR(b.share, covered / span, (narrow + 2e-6 * truth.size() + 2 * step) / span)
+                << "band [" << b.from << ", " << b.to << "]";
+        }
         std::printf("Norcia p in [%.3f, %.3f], w %g: scan %zu islands (%d wider than w); refine %zu intervals, %ld samples, "
                     "%ld runs, %ld accepted, %ld at w, first overturning %.9g (scan %.9g), first robust %s %.9g\n",
                     lo, hi, w, truth.size(), wide, s.intervals.size(), s.samples, s.simulations, s.accepted, s.at_width,

@@ -160,19 +160,13 @@ private:
 
 // The three numbers of issue 39 from the intervals, both methods alike.
 void summarise(Ida& ida, const IdaOptions& o) {
-    ida.point = ida.intervals.empty() ? IdaPoint{o.q_max, false} : IdaPoint{ida.intervals.front().from, true};
-    ida.first_overturning = ida.point;
-    ida.first_robust_collapse = IdaPoint{o.q_max, false};
-    for (const IdaInterval& in : ida.intervals)
-        if (std::log(in.to / in.from) > o.robust_width) {
-            ida.first_robust_collapse = IdaPoint{in.from, true};
-            break;
-        }
     std::vector<Span> spans;
     for (const IdaInterval& in : ida.intervals) spans.push_back(Span{in.from, in.to, -1, -1});
-    const std::vector<GridPoint> steps = log_grid(o.q_min, o.q_max, o.points, false, {});
-    for (std::size_t k = 1; k < steps.size(); ++k)
-        ida.bands.push_back({steps[k - 1].x, steps[k].x, covered_share(spans, steps[k - 1].x, steps[k].x)});
+    const SetSummary s = summarise_set(spans, o.q_min, o.q_max, o.points, o.robust_width);
+    ida.point = IdaPoint{s.first_overturning, s.overturns};
+    ida.first_overturning = ida.point;
+    ida.first_robust_collapse = IdaPoint{s.first_robust_collapse, s.robustly};
+    ida.bands = s.bands;
 }
 
 void check_brackets(Ida& ida, const GroundInput& input, double alpha, double p, const IdaOptions& o) {

@@ -24,6 +24,7 @@
 #include "records/collapse.hpp"
 #include "studies/fragility.hpp"
 #include "studies/intervals.hpp"
+#include "studies/overturning_set.hpp"
 
 namespace rocking::studies {
 
@@ -73,9 +74,7 @@ struct IdaGridPoint {
 
 // A band of q (a step of the main grid) and the share of it, in ln q, that
 // the intervals cover.
-struct IdaBand {
-    double from = 0, to = 0, share = 0;
-};
+using IdaBand = Band;
 
 struct Ida {
     double alpha = 0, p = 0;

@@ -103,4 +103,23 @@ double covered_share(const std::vector<Span>& spans, double from, double to) {
     return covered / std::log(to / from);
 }
 
+SetSummary summarise_set(const std::vector<Span>& spans, double lo, double hi, int points, double robust_width) {
+    SetSummary out;
+    out.first_overturning = out.first_robust_collapse = hi;
+    if (!spans.empty()) {
+        out.first_overturning = spans.front().from;
+        out.overturns = true;
+    }
+    for (const Span& s : spans)
+        if (std::log(s.to / s.from) > robust_width) {
+            out.first_robust_collapse = s.from;
+            out.robustly = true;
+            break;
+        }
+    const std::vector<GridPoint> steps = log_grid(lo, hi, points, false, {});
+    for (std::size_t k = 1; k < steps.size(); ++k)
+        out.bands.push_back({steps[k - 1].x, steps[k].x, covered_share(spans, steps[k - 1].x, steps[k].x)});
+    return out;
+}
+
 }  // namespace rocking::studies

@@ -83,4 +83,22 @@ RefinedSet refine_set(const std::function<MarginSample(double)>& sample, const s
 // The share of [from, to] (in ln x) that the spans cover.
 double covered_share(const std::vector<Span>& spans, double from, double to);
 
+// A band of x (a step of a study's main grid) and the share of it, in ln x,
+// that the set of collapse covers: how much of the neighbourhood overturns.
+struct Band {
+    double from = 0, to = 0, share = 0;
+};
+
+// The three numbers of issue 39 for a set of collapse over [lo, hi] whose
+// main grid has `points` log-spaced points: the first overturning (the first
+// span's start), the first robust collapse (the start of the first span wider
+// than robust_width in ln x), each at hi and not found without one, and every
+// step's band.  Spans in increasing x.
+struct SetSummary {
+    double first_overturning = 0, first_robust_collapse = 0;
+    bool overturns = false, robustly = false;
+    std::vector<Band> bands;
+};
+SetSummary summarise_set(const std::vector<Span>& spans, double lo, double hi, int points, double robust_width);
+
 }  // namespace rocking::studies

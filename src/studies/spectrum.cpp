@@ -223,15 +223,15 @@ private:
     const dynamics::SampledInput* record_ = nullptr;
 };
 
-// The first overturning and the first robust collapse, both methods alike.
+// The three numbers of issue 39 from the intervals, both methods alike; the
+// bands are the main grid's steps.
 void summarise(Spectrum& s, const SpectrumOptions& o) {
-    s.first_overturning = s.first_robust_collapse = SpectrumFirst{o.p_max, false};
-    if (!s.intervals.empty()) s.first_overturning = SpectrumFirst{s.intervals.front().from, true};
-    for (const Interval& in : s.intervals)
-        if (std::log(in.to / in.from) > o.robust_width) {
-            s.first_robust_collapse = SpectrumFirst{in.from, true};
-            break;
-        }
+    std::vector<Span> spans;
+    for (const Interval& in : s.intervals) spans.push_back(Span{in.from, in.to, -1, -1});
+    const SetSummary sum = summarise_set(spans, o.p_min, o.p_max, o.points, o.robust_width);
+    s.first_overturning = SpectrumFirst{sum.first_overturning, sum.overturns};
+    s.first_robust_collapse = SpectrumFirst{sum.first_robust_collapse, sum.robustly};
+    s.bands = sum.bands;
 }
 
 // The refine method: studies/overturning_set.hpp over [p_min, p_max] from

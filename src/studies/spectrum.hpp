@@ -17,6 +17,7 @@
 #include "dynamics/ground_input.hpp"
 #include "records/collapse.hpp"
 #include "studies/intervals.hpp"
+#include "studies/overturning_set.hpp"
 
 namespace rocking::studies {
 
@@ -104,9 +105,11 @@ struct Spectrum {
     long simulations = 0;        // the first solver's: grid, bisection and probe
     long check_simulations = 0;  // the second solver's
     // Issue 39, both methods: the first overturning (the start of the first
-    // interval) and the first robust collapse (of the first interval wider
-    // than robust_width in ln p).
+    // interval), the first robust collapse (of the first interval wider than
+    // robust_width in ln p) and the overturned share of each main-grid step in
+    // ln p.  With the grid method they hold only what its grids saw.
     SpectrumFirst first_overturning, first_robust_collapse;
+    std::vector<Band> bands;
     // The refine method's: `points` are then its coarse grid's, each run in full.
     bool refined = false;
     long samples = 0;           // samples with margins (each two runs, of `simulations`)
