@@ -51,6 +51,46 @@ std::unique_ptr<dynamics::SampledInput> input_of(const records::Record& r) {
     return std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name);
 }
 
+// How a study finds its set of collapse (issue 39), as the command line's
+// --method, --width and --robust-width (cli::method_options), in ln of the
+// study's parameter `unit` ("q" or "p").
+struct MethodChoice {
+    bool refine = false;
+    double width = 1e-5, robust_width = 5e-3;
+};
+
+MethodChoice method_argument(const Text& method_given, const std::optional<Real>& width_given,
+                             const std::optional<Real>& robust_width_given, const std::string& unit) {
+    MethodChoice m;
+    const std::string method = string_argument(method_given, "method");
+    if (method != "grid" && method != "refine") refuse("method: grid or refine (got '" + method + "')");
+    m.refine = method == "refine";
+    const std::optional<double> width = number(width_given, "width"), robust_width = number(robust_width_given, "robust_width");
+    if (width && !m.refine) refuse("width goes with method='refine'");
+    if (robust_width && !m.refine) refuse("robust_width goes with method='refine'");
+    if (width) {
+        if (!(*width >= 1e-7 && *width <= 1e-1)) refuse("width: must be in [1e-7, 0.1] (in ln " + unit + ")");
+        m.width = *width;
+    }
+    if (robust_width) {
+        if (!(*robust_width >= 1e-7 && *robust_width <= 1)) refuse("robust_width: must be in [1e-7, 1] (in ln " + unit + ")");
+        m.robust_width = *robust_width;
+    }
+    return m;
+}
+
+py::list bands_list(const std::vector<studies::Band>& bands) {
+    py::list out;
+    for (const studies::Band& b : bands) {
+        py::dict band = result();
+        band["from"] = b.from;
+        band["to"] = b.to;
+        band["share"] = b.share;
+        out.append(band);
+    }
+    return out;
+}
+
 // ---- rocking spectrum ----
 
 using Study = jobs::SpectrumStudy;
@@ -67,7 +107,8 @@ py::object boundary(const studies::Interval& in, bool lower) {
 }
 
 py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min, const Real& p_max, const Whole& points,
-                  const std::optional<Whole>& jobs, const py::kwargs& extra) {
+                  const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
+                  const std::optional<Real>& robust_width_given, const py::kwargs& extra) {
     no_other_keywords(extra, "spectrum", "spectrum");
     const std::vector<double> alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 20);
     studies::refuse_repeated_values("alpha", alphas);
@@ -79,6 +120,10 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     if (!(o.p_min >= 0.01 && o.p_min <= 1000)) refuse("p_min: must be in [0.01, 1000] rad/s");
     if (!(o.p_max >= 0.01 && o.p_max <= 1000)) refuse("p_max: must be in [0.01, 1000] rad/s");
     if (!(o.p_max > o.p_min)) refuse("p_max: must be above p_min (" + g7(o.p_min) + " rad/s)");
+    const MethodChoice m = method_argument(method_given, width_given, robust_width_given, "p");
+    if (m.refine) o.method = studies::SpectrumOptions::Method::refine;
+    o.width = m.width;
+    o.robust_width = m.robust_width;
     const int threads = jobs_argument(jobs);
     const RecordPtr r = record_argument(record, "record");
     std::vector<Study> found;
@@ -104,10 +149,18 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     grid["p_max"] = o.p_max;
     grid["points"] = o.points;
     grid["step"] = o.step();
-    grid["offset_grid"] = true;
-    grid["islands_missed_below_ratio"] = std::sqrt(o.step());
-    grid["note"] = o.describe_grid() + "; Table 1's bracket of each alpha added as extra points";
+    grid["offset_grid"] = !m.refine;
+    grid["islands_missed_below_ratio"] = m.refine ? std::exp(o.width) : std::sqrt(o.step());
+    grid["note"] = o.describe_grid() + (m.refine ? "; Table 1's search beside it (its bracket is not added: an island of "
+                                                   "it narrower than w may be missing from the set)"
+                                                 : "; Table 1's bracket of each alpha added as extra points");
     out["grid"] = grid;
+    if (m.refine) {
+        out["method"] = "refine";
+        out["width"] = o.width;
+        out["robust_width"] = o.robust_width;
+        out["refine_note"] = o.describe_guarantee();
+    }
     out["rel_tol"] = o.rel_tol;
     out["refinement"] = o.describe_refinement();
     out["t_overturn_null"] =
@@ -128,6 +181,25 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
             intervals.append(i);
         }
         d["intervals"] = intervals;
+        if (sp.refined) {
+            // As rocking spectrum --json's refine fields.
+            const bool bracketed = sp.first_overturning.found && sp.intervals.front().has_lower;
+            py::dict first = result();
+            first["p"] = sp.first_overturning.p;
+            first["found"] = sp.first_overturning.found;
+            first["boundary"] = bracketed ? boundary(sp.intervals.front(), true) : py::none();
+            d["first_overturning"] = first;
+            py::dict robust = result();
+            robust["p"] = sp.first_robust_collapse.p;
+            robust["found"] = sp.first_robust_collapse.found;
+            d["first_robust_collapse"] = robust;
+            d["bands"] = bands_list(sp.bands);
+            d["samples"] = sp.samples;
+            d["accepted"] = sp.accepted;
+            d["at_width"] = sp.at_width;
+            d["with_margins"] = sp.with_margins;
+            d["unguaranteed_from"] = none_if_nan(sp.unguaranteed_from);
+        }
         py::dict t1 = result();
         t1["found"] = s.table1.found;
         t1["p"] = null_or(s.table1.found, s.table1.p);
@@ -538,12 +610,16 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const st
 void init_studies(py::module_& m) {
     using namespace py::literals;
     m.def("spectrum", gsl_checked(&spectrum), "record"_a, py::kw_only(), "alpha"_a, "p_min"_a = 0.3, "p_max"_a = 30.0,
-          "points"_a = 200, "jobs"_a = py::none(),
+          "points"_a = 200, "jobs"_a = py::none(), "method"_a = "grid", "width"_a = py::none(),
+          "robust_width"_a = py::none(),
           R"(`rocking spectrum --json`: for each alpha (a number or a list), the overturning intervals in p
 (rad/s), each end bisected to 1e-6 and checked, beside Table 1's first collapse, and the grid: each
 spectrum's points as arrays (p, grid, max_theta, final_rotation, peak_rotation, overturning,
-t_overturn with NaN for null).  jobs: threads (default: the cores this process may use).  An
-alpha given twice is refused.  Releases the GIL.)");
+t_overturn with NaN for null).  jobs: threads (default: the cores this process may use).
+method='refine' (width=w in ln p, default 1e-5; robust_width, default 5e-3) finds every island
+wider than w and adds first_overturning (p, found, boundary), first_robust_collapse, bands (from,
+to, share), samples, accepted, at_width, with_margins and unguaranteed_from, as --method refine
+does.  An alpha given twice is refused.  Releases the GIL.)");
     m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a, "p"_a, "q_max"_a = 20.0, "points"_a = 100,
           "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(), "method"_a = "grid",
           "width"_a = py::none(), "robust_width"_a = py::none(),

@@ -117,6 +117,29 @@ def test_fragility_refine_is_rocking_fragility_refine(tmp_path):
         rq.fragility([record], alpha=0.1, p=2, method="refine", width=1.0)
 
 
+def test_spectrum_refine_is_rocking_spectrum_refine(tmp_path):
+    """method="refine" (issue 39): every field of `rocking spectrum --method refine --json`, the first
+    overturning and its boundary, the first robust collapse, the bands and the counts."""
+    path = tmp_path / "s3.txt"
+    cli("record", "synth", "--stochastic", 3, "--dt", 0.01, "--duration", 20, "--output", path)
+    expected = cli("spectrum", path, "--unit", "m/s2", "--alpha", "0.1,0.15", "--p-min", 1, "--p-max", 6, "--points", 20,
+                   "--method", "refine", "--width", 1e-3, "--robust-width", 1e-2)
+    record = rq.read_record(str(path), unit="m/s2")
+    for jobs in (1, 2):
+        got = rq.spectrum(record, alpha=[0.1, 0.15], p_min=1, p_max=6, points=20, method="refine", width=1e-3,
+                          robust_width=1e-2, jobs=jobs)
+        check_spectrum(got, expected)
+    s = expected["spectra"][0]
+    assert s["first_overturning"]["p"] < s["table1"]["p"]  # islands below Table 1's p
+    assert expected["method"] == "refine" and len(s["bands"]) == 19
+    with pytest.raises(ValueError, match="^width goes with method='refine'"):
+        rq.spectrum(record, alpha=0.1, width=1e-3)
+    with pytest.raises(ValueError, match=r"^method: grid or refine \(got 'dense'\)"):
+        rq.spectrum(record, alpha=0.1, method="dense")
+    with pytest.raises(ValueError, match=r"^robust_width: must be in \[1e-7, 1\] \(in ln p\)"):
+        rq.spectrum(record, alpha=0.1, method="refine", robust_width=2.0)
+
+
 def test_study_arguments_are_checked():
     r = rq.record_synth(pulse=(0.6, 0.8, 0.4, 2.2), dt=0.01, duration=12)
     with pytest.raises(ValueError, match=r"^alpha: each must be in \(0, 0.7\)"):

@@ -140,6 +140,27 @@ Bootstrap bootstrap_options(const Args& a) {
     return b;
 }
 
+MethodChoice method_options(const Args& a, const std::string& unit) {
+    MethodChoice m;
+    if (a.values.count("--method")) {
+        const std::string& name = a.values.at("--method");
+        if (name != "grid" && name != "refine") throw UsageError("--method: grid or refine (got '" + name + "')");
+        m.refine = name == "refine";
+    }
+    for (const char* flag : {"--width", "--robust-width"})
+        if (a.values.count(flag) && !m.refine) throw UsageError(std::string(flag) + " goes with --method refine");
+    if (a.values.count("--width")) {
+        m.width = number("--width", a.values.at("--width"));
+        if (!(m.width >= 1e-7 && m.width <= 1e-1)) throw UsageError("--width: must be in [1e-7, 0.1] (in ln " + unit + ")");
+    }
+    if (a.values.count("--robust-width")) {
+        m.robust_width = number("--robust-width", a.values.at("--robust-width"));
+        if (!(m.robust_width >= 1e-7 && m.robust_width <= 1))
+            throw UsageError("--robust-width: must be in [1e-7, 1] (in ln " + unit + ")");
+    }
+    return m;
+}
+
 int jobs_option(const Args& a) {
     if (!a.values.count("--jobs")) return batch::default_threads();
     try {

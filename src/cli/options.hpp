@@ -55,6 +55,16 @@ struct Bootstrap {
     std::uint64_t seed = 0;
 };
 Bootstrap bootstrap_options(const Args& a);
+// How a study finds its set of collapse (issue 39): --method grid (the
+// default) or refine, with refine's --width W (default 1e-5) and
+// --robust-width R (default 5e-3), both in ln of the study's parameter
+// (`unit`: "q" or "p"), refused with the grid and out of [1e-7, 0.1] and
+// [1e-7, 1].
+struct MethodChoice {
+    bool refine = false;
+    double width = 1e-5, robust_width = 5e-3;
+};
+MethodChoice method_options(const Args& a, const std::string& unit);
 // The batch engine's threads: --jobs N (1 to 4096), by default the cores
 // this process may use.  The results do not depend on it.
 int jobs_option(const Args& a);

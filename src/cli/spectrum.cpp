@@ -22,6 +22,7 @@
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
 #include "cli/options.hpp"
+#include "cli/set_words.hpp"
 #include "harness/plot_file.hpp"
 #include "harness/table.hpp"
 #include "jobs/spectrum_plan.hpp"
@@ -40,7 +41,7 @@ using studies::SpectrumOptions;
 
 const char* kUsage =
     "usage: rocking spectrum FILE --alpha A[,A...] [--p-min P] [--p-max P] [--points N] [--unit U [--dt DT]] "
-    "[--jobs N] [--output CSV] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]";
+    "[--method grid|refine [--width W] [--robust-width R]] [--jobs N] [--output CSV] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]";
 
 using Study = jobs::SpectrumStudy;
 
@@ -74,12 +75,22 @@ SpectrumOptions grid_from(const Args& a) {
     if (!(o.p_max > o.p_min))
         throw UsageError("--p-max: must be above --p-min (" + g7(o.p_min) + " rad/s)");
     if (a.values.count("--points")) o.points = integer("--points", a.values.at("--points"), 2, 100000);
+    const MethodChoice m = method_options(a, "p");
+    if (m.refine) o.method = SpectrumOptions::Method::refine;
+    o.width = m.width;
+    o.robust_width = m.robust_width;
     return o;
 }
 
+bool refined(const SpectrumOptions& o) { return o.method == SpectrumOptions::Method::refine; }
+
 std::string grid_text(const SpectrumOptions& o) {
+    if (refined(o))
+        return o.describe_grid() + "; Table 1's search beside it (its bracket is not added: an island of it narrower "
+                                   "than w may be missing from the set)";
     return o.describe_grid() + "; Table 1's bracket of each alpha added as extra points";
 }
+
 
 // How a boundary stands, in words: its check, and what the probe or the
 // second solver saw where it is not confirmed.
@@ -106,8 +117,13 @@ std::string table1_text(const records::CollapseResult& c) {
 std::string table1_remark(const Study& s) {
     if (!s.table1.found || s.spectrum.intervals.empty()) return "";
     std::string text;
+    if (s.spectrum.refined) {
+        bool inside = false;
+        for (const Interval& in : s.spectrum.intervals) inside = inside || (s.table1.p >= in.from && s.table1.p <= in.to);
+        if (!inside) text = "; it lies in no interval of the refined set (its island is narrower than w)";
+    }
     for (const Interval& in : s.spectrum.intervals) {
-        if (s.table1.p < in.from || s.table1.p > in.to) continue;
+        if (s.spectrum.refined || s.table1.p < in.from || s.table1.p > in.to) continue;
         bool gridded = false;
         for (const studies::SpectrumPoint& pt : s.spectrum.points)
             gridded = gridded || (pt.grid != studies::GridKind::extra && pt.p >= in.from && pt.p <= in.to);
@@ -120,12 +136,38 @@ std::string table1_remark(const Study& s) {
     return text;
 }
 
+// The first overturning with its bracket and check, the first robust
+// collapse and the overturned share of each band, in words.
+std::string refine_lines(const Spectrum& sp) {
+    std::string text = "  first overturning: ";
+    if (!sp.first_overturning.found) text += "none up to p_max";
+    else {
+        const Interval& in = sp.intervals.front();
+        text += "p = " + g7(sp.first_overturning.p) +
+                (in.has_lower ? " in [" + g7(in.lower.p_safe) + ", " + g7(in.lower.p_collapse) + "] (" + standing(in.lower) + ")"
+                              : std::string(" (the grid's lowest p)"));
+    }
+    text += "\n  first robust collapse: " +
+            (sp.first_robust_collapse.found ? "p = " + g7(sp.first_robust_collapse.p) : std::string("none up to p_max")) +
+            "\n  overturned share (p band:share): " + bands_text(sp.bands) + "\n  " + std::to_string(sp.samples) +
+            " runs with margins, " + std::to_string(sp.accepted) + " intervals accepted by them, " +
+            std::to_string(sp.at_width) + " split to w" +
+            (sp.with_margins ? "" : " (no margins for this model: every interval split to w)");
+    if (std::isfinite(sp.unguaranteed_from)) text += "; the guarantee does not hold (the record's q is above the turn-back bound)";
+    return text + "\n";
+}
+
+// The refine method may find hundreds of islands: the text shows the first
+// ones, --json and --output every one.
+constexpr std::size_t kIntervalsShown = 20;
+
 void print_text(const std::string& path, const records::Record& r, const SpectrumOptions& o,
                 const std::vector<Study>& studies) {
     std::printf("%s: rocking spectrum of %s (%zu samples, dt = %g s, PGA %.4f g)\n", r.name.c_str(), path.c_str(),
                 r.accel.size(), r.dt, r.pga() / dynamics::kGravity);
     std::printf("  model: %s\n  grid: %s\n  %s\n", o.describe_model().c_str(), grid_text(o).c_str(),
                 o.describe_refinement().c_str());
+    if (refined(o)) std::printf("  refine: %s\n", o.describe_guarantee().c_str());
     for (const Study& s : studies) {
         const Spectrum& sp = s.spectrum;
         if (!sp.lifts)
@@ -135,8 +177,15 @@ void print_text(const std::string& path, const records::Record& r, const Spectru
             std::printf("alpha = %g: no overturning for p from %g to %g rad/s on the grid\n", sp.alpha, o.p_min, o.p_max);
         else {
             std::printf("alpha = %g: overturns for p (rad/s) in\n", sp.alpha);
-            for (const Interval& in : sp.intervals) std::printf("  %s\n", interval_text(in).c_str());
+            for (std::size_t i = 0; i < sp.intervals.size(); ++i) {
+                if (sp.refined && i == kIntervalsShown) {
+                    std::printf("  ... %zu more intervals (--json or --output lists every one)\n", sp.intervals.size() - i);
+                    break;
+                }
+                std::printf("  %s\n", interval_text(sp.intervals[i]).c_str());
+            }
         }
+        if (sp.refined) std::printf("%s", refine_lines(sp).c_str());
         std::printf("  Table 1's search (p from 0.3 by x1.01, the first collapse): %s%s\n", table1_text(s.table1).c_str(),
                     table1_remark(s).c_str());
         std::printf("  %ld simulations, %ld by the second solver\n", sp.simulations, sp.check_simulations);
@@ -159,6 +208,20 @@ std::string table1_json(const records::CollapseResult& c) {
            ", \"below_range\": " + (c.below_range() ? "true" : "false") + "}";
 }
 
+// The refine method's fields of one alpha (issue 39).
+std::string refine_json(const Spectrum& sp) {
+    const bool bracketed = sp.first_overturning.found && sp.intervals.front().has_lower;
+    return ", \"first_overturning\": {\"p\": " + json_number(sp.first_overturning.p) +
+           ", \"found\": " + (sp.first_overturning.found ? "true" : "false") +
+           ", \"boundary\": " + (bracketed ? boundary_json(sp.intervals.front(), true) : std::string("null")) +
+           "}, \"first_robust_collapse\": {\"p\": " + json_number(sp.first_robust_collapse.p) +
+           ", \"found\": " + (sp.first_robust_collapse.found ? "true" : "false") + "}, \"bands\": " +
+           bands_json(sp.bands) + ", \"samples\": " + std::to_string(sp.samples) +
+           ", \"accepted\": " + std::to_string(sp.accepted) + ", \"at_width\": " + std::to_string(sp.at_width) +
+           ", \"with_margins\": " + (sp.with_margins ? "true" : "false") +
+           ", \"unguaranteed_from\": " + json_number(sp.unguaranteed_from);
+}
+
 void print_json(const std::string& path, const records::Record& r, const SpectrumOptions& o,
                 const std::vector<Study>& studies) {
     std::ostringstream js;
@@ -167,9 +230,14 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
        << ", \"pga_g\": " << json_number(r.pga() / dynamics::kGravity) << ", \"model\": " << json_string(o.describe_model())
        << ", \"grid\": {\"p_min\": " << json_number(o.p_min) << ", \"p_max\": " << json_number(o.p_max)
        << ", \"points\": " << o.points << ", \"step\": " << json_number(o.step())
-       << ", \"offset_grid\": true, \"islands_missed_below_ratio\": " << json_number(std::sqrt(o.step()))
+       << ", \"offset_grid\": " << (refined(o) ? "false" : "true") << ", \"islands_missed_below_ratio\": "
+       << json_number(refined(o) ? std::exp(o.width) : std::sqrt(o.step()))
        << ", \"note\": " << json_string(grid_text(o)) << "}, \"rel_tol\": " << json_number(o.rel_tol)
-       << ", \"refinement\": " << json_string(o.describe_refinement())
+       << ", \"refinement\": " << json_string(o.describe_refinement());
+    if (refined(o))
+        js << ", \"method\": \"refine\", \"width\": " << json_number(o.width) << ", \"robust_width\": " << json_number(o.robust_width)
+           << ", \"refine_note\": " << json_string(o.describe_guarantee());
+    js
        << ", \"t_overturn_null\": \"the block does not overturn, or is taken to overturn by its energy after 200/p of "
           "free rocking\", \"spectra\": [";
     for (std::size_t k = 0; k < studies.size(); ++k) {
@@ -181,7 +249,9 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
             js << (i ? ", " : "") << "{\"from\": " << json_number(in.from) << ", \"to\": " << json_number(in.to)
                << ", \"lower\": " << boundary_json(in, true) << ", \"upper\": " << boundary_json(in, false) << "}";
         }
-        js << "], \"table1\": " << table1_json(studies[k].table1) << ", \"simulations\": " << sp.simulations
+        js << "]";
+        if (sp.refined) js << refine_json(sp);
+        js << ", \"table1\": " << table1_json(studies[k].table1) << ", \"simulations\": " << sp.simulations
            << ", \"check_simulations\": " << sp.check_simulations << ", \"points\": [";
         for (std::size_t i = 0; i < sp.points.size(); ++i) {
             const studies::SpectrumPoint& pt = sp.points[i];
@@ -217,9 +287,16 @@ void write_csv(const std::string& csv, const std::string& path, const records::R
     t.note("refinement", o.describe_refinement());
     t.note("columns", "p in rad/s; max |theta|/alpha during the input; collapse under each criterion; t_overturn in s, "
                       "'-' where the block does not overturn or is taken to overturn by its energy");
+    if (refined(o)) t.note("refine", o.describe_guarantee());
     for (const Study& s : studies) {
         t.note("intervals at alpha " + g7(s.spectrum.alpha), intervals_note(s.spectrum));
         t.note("Table 1's p at alpha " + g7(s.spectrum.alpha), table1_text(s.table1));
+        if (!s.spectrum.refined) continue;
+        const Spectrum& sp = s.spectrum;
+        t.note("first overturning at alpha " + g7(sp.alpha), sp.first_overturning.found ? g7(sp.first_overturning.p) : "none");
+        t.note("first robust collapse at alpha " + g7(sp.alpha),
+               sp.first_robust_collapse.found ? g7(sp.first_robust_collapse.p) : "none");
+        t.note("overturned share at alpha " + g7(sp.alpha), bands_text(sp.bands));
     }
     for (const Study& s : studies)
         for (const studies::SpectrumPoint& pt : s.spectrum.points) {
@@ -353,7 +430,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     const int count = static_cast<int>(args.size());
     c.path = file_argument(count, args.data(), 2, kUsage);
     c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--jobs",
-                                           "--output", "--png", "--rows"});
+                                           "--output", "--png", "--rows", "--method", "--width", "--robust-width"});
     const Args& a = c.args;
     if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
     c.alphas = alphas_from(a.values.at("--alpha"));

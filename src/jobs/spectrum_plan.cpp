@@ -20,8 +20,9 @@ using studies::SpectrumPoint;
 
 const char kColumns[] =
     "job,alpha,lifts,simulations,check_simulations,boundaries,table1_found,table1_p,table1_p_safe,table1_simulations,"
-    "intervals,points,error\n";
-constexpr std::size_t kCells = 13;
+    "intervals,points,first_overturning_p,overturns,first_robust_p,robustly,bands,refined,samples,accepted,at_width,"
+    "with_margins,unguaranteed_from,error\n";
+constexpr std::size_t kCells = 24, kError = kCells - 1;
 constexpr std::size_t kIntervalFields = 10, kPointFields = 8;
 
 std::string yes_no(bool v) { return v ? "yes" : "no"; }
@@ -86,7 +87,7 @@ std::string points_cell(const std::vector<SpectrumPoint>& points) {
 // An empty error cell would read as a row that did not fail.
 std::string failed_row(std::size_t job, double alpha, const std::string& error) {
     const std::string said = error.empty() ? "failed without a message" : one_line(error);
-    return std::to_string(job) + "," + format_number(alpha) + ",,,,,,,,,,," + batch::csv_cell(said);
+    return std::to_string(job) + "," + format_number(alpha) + "," + std::string(kCells - 3, ',') + batch::csv_cell(said);
 }
 
 // alpha as the user gave it (0.1, not %.17g's 0.10000000000000001): the
@@ -155,6 +156,23 @@ std::vector<Interval> intervals_of(const std::string& cell, const std::string& w
     return out;
 }
 
+// from|to|share;... for every band of the main grid.
+std::string bands_cell(const std::vector<studies::Band>& bands) {
+    std::string text;
+    for (const studies::Band& b : bands)
+        text += (text.empty() ? "" : ";") + format_number(b.from) + "|" + format_number(b.to) + "|" + format_number(b.share);
+    return text;
+}
+
+std::vector<studies::Band> bands_of(const std::string& cell, const std::string& where) {
+    std::vector<studies::Band> out;
+    for (const std::string& item : items_of(cell)) {
+        const std::vector<std::string> f = fields_of(item, 3, "a band", where);
+        out.push_back({number_of(f[0], where), number_of(f[1], where), number_of(f[2], where)});
+    }
+    return out;
+}
+
 std::vector<SpectrumPoint> points_of(const std::string& cell, const std::string& where) {
     std::vector<SpectrumPoint> out;
     for (const std::string& item : items_of(cell)) {
@@ -181,7 +199,8 @@ std::string digest_of(const batch::BatchPlan& plan, const SpectrumJobs& jobs) {
     const studies::SpectrumOptions& g = jobs.grid;
     identity.update(format_number(g.p_min) + "," + format_number(g.p_max) + "," + std::to_string(g.points) + "," +
                     bit(g.offset_grid) + "," + format_number(g.rel_tol) + "," + bit(g.confirm) + "," +
-                    format_number(g.probe) + ";");
+                    format_number(g.probe) + ";" + bit(g.method == studies::SpectrumOptions::Method::refine) + "," +
+                    format_number(g.width) + "," + format_number(g.robust_width) + "," + format_number(g.slope_step) + ";");
     identity.update(g.describe_grid() + g.describe_model() + g.describe_refinement());
     return identity.hex();
 }
@@ -221,7 +240,12 @@ std::string study_row(std::size_t job, const SpectrumStudy& study) {
            std::to_string(s.simulations) + "," + std::to_string(s.check_simulations) + "," +
            std::to_string(s.boundaries) + "," + yes_no(t.found) + "," + format_number(t.p) + "," +
            format_number(t.p_safe) + "," + std::to_string(t.simulations) + "," +
-           batch::csv_cell(intervals_cell(s.intervals)) + "," + batch::csv_cell(points_cell(s.points)) + ",";
+           batch::csv_cell(intervals_cell(s.intervals)) + "," + batch::csv_cell(points_cell(s.points)) + "," +
+           format_number(s.first_overturning.p) + "," + yes_no(s.first_overturning.found) + "," +
+           format_number(s.first_robust_collapse.p) + "," + yes_no(s.first_robust_collapse.found) + "," +
+           bands_cell(s.bands) + "," + yes_no(s.refined) + "," + std::to_string(s.samples) + "," +
+           std::to_string(s.accepted) + "," + std::to_string(s.at_width) + "," + yes_no(s.with_margins) + "," +
+           format_number(s.unguaranteed_from) + ",";
 }
 
 SpectrumStudy study_from_row(const std::string& row, std::size_t job, const SpectrumJobs& jobs) {
@@ -242,7 +266,7 @@ SpectrumStudy study_from_row(const std::string& row, std::size_t job, const Spec
     s.alpha = number_of(c[1], where);
     if (s.alpha != jobs.alphas[job])
         throw std::runtime_error(where + ": alpha " + c[1] + " where the study has " + format_number(jobs.alphas[job]));
-    if (!c[12].empty()) throw std::runtime_error("the spectrum at alpha " + shortest(s.alpha) + ": " + c[12]);
+    if (!c[kError].empty()) throw std::runtime_error("the spectrum at alpha " + shortest(s.alpha) + ": " + c[kError]);
     s.lifts = yes_no_of(c[2], where);
     s.simulations = whole_of(c[3], where);
     s.check_simulations = whole_of(c[4], where);
@@ -254,6 +278,15 @@ SpectrumStudy study_from_row(const std::string& row, std::size_t job, const Spec
     t.simulations = static_cast<int>(whole_of(c[9], where));
     s.intervals = intervals_of(c[10], where);
     s.points = points_of(c[11], where);
+    s.first_overturning = {number_of(c[12], where), yes_no_of(c[13], where)};
+    s.first_robust_collapse = {number_of(c[14], where), yes_no_of(c[15], where)};
+    s.bands = bands_of(c[16], where);
+    s.refined = yes_no_of(c[17], where);
+    s.samples = whole_of(c[18], where);
+    s.accepted = whole_of(c[19], where);
+    s.at_width = whole_of(c[20], where);
+    s.with_margins = yes_no_of(c[21], where);
+    s.unguaranteed_from = number_of(c[22], where);
     return study;
 }
 

@@ -3,11 +3,14 @@
 // and the PNG), so that the spectra run on threads, on the ranks of an MPI
 // run and from a resumed rows file alike, and rank 0 prints from the rows.
 //
-// A row, 13 cells: job, alpha, lifts (yes|no), simulations,
+// A row, 24 cells: job, alpha, lifts (yes|no), simulations,
 // check_simulations, boundaries, table1_found (yes|no), table1_p,
 // table1_p_safe, table1_simulations (Table 1's search as it came, p_safe 0
 // included: CollapseResult::below_range() is read from found and p_safe),
-// intervals, points, error.
+// intervals, points, then issue 39's: first_overturning_p, overturns
+// (yes|no), first_robust_p, robustly (yes|no), bands, refined (yes|no),
+// samples, accepted, at_width, with_margins (yes|no), unguaranteed_from
+// ("inf" where the guarantee holds throughout), and error.
 //   intervals: ';' between intervals, each 10 fields split by '|':
 //     from|to|lower_p_safe|lower_p_collapse|lower_confirmation|lower_detail|
 //     upper_p_safe|upper_p_collapse|upper_confirmation|upper_detail
@@ -18,8 +21,9 @@
 //     p|grid (main, offset or extra)|max_theta|final_rotation|peak_rotation|
 //     overturning|collapse|t_overturn, the criteria as 1 or 0, t_overturn
 //     "nan" where the block does not overturn or is taken to by its energy.
+//   bands: ';' between the main grid's steps, each from|to|share.
 //   error: empty, or the failed job's message on one line, every cell from
-//     lifts to points then empty.
+//     lifts to unguaranteed_from then empty.
 // Numbers in %.17g (harness::format_number), which read back to the same
 // double, so that the output is the same bit for bit whether the spectra
 // came from memory, from a file or from another rank.  The intervals and

@@ -68,6 +68,13 @@ std::string SpectrumOptions::describe_model() const {
     return text + ", free rocking after the input followed";
 }
 
+std::string SpectrumOptions::describe_guarantee() const {
+    return "w = " + short_number(width) + " in ln p: every island and gap wider than w in ln p found, except where "
+           "the record's q = PGA/(alpha g) is above (pi/2 - alpha)/alpha (the margin's guarantee does not hold); "
+           "islands narrower than w may be missed; first robust collapse: the start of the first interval wider than " +
+           short_number(robust_width) + " in ln p";
+}
+
 std::string SpectrumOptions::describe_refinement() const {
     std::string text = "boundaries bisected to " + short_number(rel_tol) + " relative";
     if (!confirm) return text + "; not checked";

@@ -59,6 +59,8 @@ struct SpectrumOptions {
     // The model, restitution, criterion and solver; the refinement and its checks.
     std::string describe_model() const;
     std::string describe_refinement() const;
+    // The refine method's width, guarantee and robust width, in words.
+    std::string describe_guarantee() const;
     double step() const;  // the main grid's ratio between neighbours
 };
 

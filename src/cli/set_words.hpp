@@ -1,0 +1,19 @@
+// The overturning set of a refined study in words and in JSON (issue 39):
+// the bands of the main grid that overturn at all, and each band's share.
+// One wording for `rocking spectrum` (ln p) and `rocking fragility` (ln q).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "studies/overturning_set.hpp"
+
+namespace rocking::cli {
+
+// "[from, to]:share ..." for every band whose share is above 0, or "none".
+std::string bands_text(const std::vector<studies::Band>& bands);
+
+// [{"from": f, "to": t, "share": s}, ...] for every band, zeros included.
+std::string bands_json(const std::vector<studies::Band>& bands);
+
+}  // namespace rocking::cli
