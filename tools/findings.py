@@ -561,7 +561,8 @@ def _c7(d):
        title="θ passes α before t_fin: the collapse condition is not the first time θ reaches α",
        where="Section 1; Section 2, before eq. 6; eqs. 11, 21 (θ(t_fin) = α)",
        printed="\"Under this assumption, rotation increases without impact and without reversal of motion\" "
-               "(Section 1); \"the proposed model assumes that the block undergoes a rotation θ equal to its slenderness α at the "
+               "(Section 1); \"the proposed model assumes that the block undergoes a rotation θ equal to its "
+               "slenderness α at the "
                "end of the used seismic input (t = tfin in Figure 3). [...] Then, this condition can be regarded as a "
                "state of unstable equilibrium.\"",
        measured="at the collapse q of each closed form, the highest θ/α before t_fin and the smallest x of the grid "
@@ -651,10 +652,11 @@ def _f5b(d):
     label = "fails beyond the paper's range" if all(int(r["failures"]) > 0 for r in rows) else \
         "holds beyond the paper's range"
     return dict(label=label,
-                notes=[f"The paper's upper limit x = 0.8 is its p ≈ 1.6 s⁻¹ at H = 1 m times its longest to = 0.5 s; "
+                notes=[f"The paper's upper limit x = 0.8 is its p ≈ 1.6 s⁻¹ at H = 1 m times its longest "
+                       "to = 0.5 s; "
                        f"its own eqs. 2 and 4 give p = {g(min(p1), 3)}-{g(max(p1), 3)} rad/s at H = 1 m (F6d), so "
                        f"the same premises reach x = {g(min(x_own), 3)}-{g(max(x_own), 3)}. "
-                       + (f"That range includes the first collapses of "
+                       + ("That range includes the first collapses of "
                           + ", ".join(f"case {r['case']} (x = {g(r['smallest_x_failing'], 3)})" for r in inside)
                           + ": beyond the range the paper states, inside the one its own premises imply."
                           if inside else "No collapse here lies inside that range.")],
@@ -778,7 +780,7 @@ def _f6b(d):
     return dict(label=label,
                 verdict="the reduction at H = 1 m (half-height), α = 0.25 is " + "; ".join(
                     f"{pct(r['computed'], 5)} at to = {to(r)} s" for r in rows)
-                        + f": the largest, at the longest to, is the paper's \"approximately 16%\".",
+                        + ": the largest, at the longest to, is the paper's \"approximately 16%\".",
                 evidence=[ev(C6F, "rows `about 16% less at H = 1 m and alpha = 0.25 (to = ...)`", "computed",
                              ", ".join(g(r["computed"]) for r in rows))])
 
@@ -1172,7 +1174,8 @@ def _f11b(d):
                         f"{n} records on at least one block: far from \"nearly all\" conservative. Only "
                         + ", ".join(f"to_{k}" for k in sorted(safe))
                         + f" are conservative in every case and every record (0 of {n}: the bootstrap interval is "
-                        f"[0, 0], which says only that no record with a non-conservative case was drawn; Clopper-Pearson's "
+                        f"[0, 0], which says only that no record with a non-conservative case was drawn; "
+                        "Clopper-Pearson's "
                         f"{g(100 * level, 2)} % bound for 0 of {n} records is {pct(zero_bound)}), and "
                         f"to_{worst['k']} is the worst ({worst['non_conservative']} of {worst['cases']} cases, "
                         f"{worst['records_with_any']} of {n} records).",
