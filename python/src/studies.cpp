@@ -178,26 +178,69 @@ py::object bracket(bool has, const studies::Bracket& b) {
 
 py::array_t<double> range(const studies::Range& r) { return to_array({r.lo, r.hi}); }
 
-py::object fit(const BlockFragility& f) {
-    if (!f.fitted) return py::none();
+py::object bootstrap_dict(bool bootstrapped, const studies::BootstrapInterval& interval) {
+    if (!bootstrapped) return py::none();
+    py::dict b = result();
+    b["resamples"] = interval.resamples;
+    b["seed"] = interval.seed;
+    b["level"] = interval.level;
+    b["median"] = range(interval.median);
+    b["beta"] = range(interval.beta);
+    return std::move(b);
+}
+
+py::object lognormal(bool fitted, const studies::LognormalFragility& fit, bool bootstrapped,
+                     const studies::BootstrapInterval& interval) {
+    if (!fitted) return py::none();
     py::dict d = result();
-    d["median"] = f.fit.median;
-    d["beta"] = f.fit.beta;
-    d["collapsed"] = f.fit.collapsed;
-    d["censored"] = f.fit.censored;
-    if (!f.bootstrapped) {
-        d["bootstrap"] = py::none();
-    } else {
-        py::dict b = result();
-        b["resamples"] = f.interval.resamples;
-        b["seed"] = f.interval.seed;
-        b["level"] = f.interval.level;
-        b["median"] = range(f.interval.median);
-        b["beta"] = range(f.interval.beta);
-        d["bootstrap"] = b;
-    }
-    d["log_likelihood"] = f.fit.log_likelihood;
+    d["median"] = fit.median;
+    d["beta"] = fit.beta;
+    d["collapsed"] = fit.collapsed;
+    d["censored"] = fit.censored;
+    d["bootstrap"] = bootstrap_dict(bootstrapped, interval);
+    d["log_likelihood"] = fit.log_likelihood;
     return std::move(d);
+}
+
+py::object fit(const BlockFragility& f) { return lognormal(f.fitted, f.fit, f.bootstrapped, f.interval); }
+
+py::dict fit_entry(const py::object& fit, bool fitted, const std::string& no_fit) {
+    py::dict d = result();
+    d["fit"] = fit;
+    d["no_fit"] = fitted ? py::object(py::none()) : py::object(text(no_fit));
+    return d;
+}
+
+// The refine method's three fits, each named by its capacity, and the stripes, as
+// rocking fragility --json's "fits" and "stripes" (issue 39, item 3).
+void add_three_ways(py::dict& b, const BlockFragility& f) {
+    py::dict fits = result();
+    fits["first_overturning"] = fit_entry(fit(f), f.fitted, f.no_fit);
+    const studies::CapacityFit& r = f.robust;
+    fits["first_robust_collapse"] =
+        fit_entry(lognormal(r.fitted, r.fit, r.bootstrapped, r.interval), r.fitted, r.no_fit);
+    const studies::StripeFit& s = f.stripes;
+    py::object stripe_fit = py::none();
+    if (s.fitted) {
+        py::dict d = result();
+        d["median"] = s.fit.median;
+        d["beta"] = s.fit.beta;
+        d["stripes"] = s.stripes.size();
+        d["records"] = s.shares.share.size();
+        d["bootstrap"] = bootstrap_dict(s.bootstrapped, s.interval);
+        d["log_likelihood"] = s.fit.log_likelihood;
+        stripe_fit = std::move(d);
+    }
+    fits["stripes"] = fit_entry(stripe_fit, s.fitted, s.no_fit);
+    b["fits"] = fits;
+    std::vector<double> q, share;
+    for (const studies::Stripe& st : s.stripes) q.push_back(st.q), share.push_back(st.overturned / st.records);
+    py::dict stripes = result();
+    stripes["q"] = to_array(q);
+    stripes["from"] = to_array(s.shares.from);
+    stripes["to"] = to_array(s.shares.to);
+    stripes["share"] = to_array(share);
+    b["stripes"] = stripes;
 }
 
 int bootstrap_argument(const std::optional<Whole>& bootstrap_given, const std::optional<Whole>& seed_given,
@@ -223,7 +266,11 @@ std::string refine_note(const studies::FragilityStudyOptions& o) {
            " in ln q: every island and gap wider than w in ln q found, except above q = (pi/2 - alpha)/alpha where "
            "the margin's guarantee does not hold; islands narrower than w may be missed; first robust collapse: the "
            "start of the first interval wider than " + g7(o.ida.robust_width) +
-           " in ln q; the lognormal fit takes the first overturning";
+           " in ln q; three lognormal fits, each named by its capacity: the first overturning (conservative; the "
+           "block's fit and empirical curve), the first robust collapse, and the multiple-stripe fit of the "
+           "overturned shares (a stripe at the geometric middle of each step of the main grid, its neighbourhood "
+           "the step, half-width " + g7(studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points)) +
+           " in ln q; binomial likelihood on n records x mean share)";
 }
 
 py::dict point_dict(const studies::IdaPoint& p) {
@@ -338,6 +385,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         grid["width"] = o.ida.width;
         grid["robust_width"] = o.ida.robust_width;
         grid["fit_capacity"] = "first_overturning";
+        grid["stripe_half_width"] = studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points);
         grid["refine_note"] = refine_note(o);
     }
     out["grid"] = grid;
@@ -386,6 +434,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         empirical["q"] = to_array(q);
         empirical["share"] = to_array(share);
         b["empirical"] = empirical;
+        if (f.three_ways) add_three_ways(b, f);
         blocks_out.append(b);
     }
     out["blocks"] = blocks_out;
@@ -552,7 +601,9 @@ overturning intervals in q = PGA/(alpha g), the first collapse q or a censored p
 fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).
 method='refine' (width=w in ln q, default 1e-5; robust_width, default 5e-3) adds each record's
 first_overturning (bracket, check), first_robust_collapse, bands (from, to, share), samples,
-with_margins and unguaranteed_from, as --method refine does; the fit takes the first overturning.
+with_margins and unguaranteed_from, as --method refine does; the block's fit takes the first overturning,
+and each block's fits (first_overturning, first_robust_collapse, stripes: fit and no_fit) and stripes
+(arrays q, from, to, share) fit the capacity three ways.
 An alpha, a p or a record (by its step and samples) given twice is refused.  Releases the GIL.)");
     m.def("eq27", gsl_checked(&eq27), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = py::none(),
           "p_max"_a = py::none(),

@@ -54,6 +54,10 @@ double term(const Stripe& s, double u) {
 
 }  // namespace
 
+double stripe_half_width(double q_min, double q_max, int points) {
+    return std::log(q_max / q_min) / (2.0 * (points - 1));
+}
+
 StripeShares stripe_shares(const std::vector<std::vector<Span>>& sets, double q_min, double q_max, int points) {
     if (sets.empty()) throw std::invalid_argument("stripes: no record");
     if (points < 2) throw std::invalid_argument("stripes: the grid needs at least 2 points");
@@ -66,7 +70,7 @@ StripeShares stripe_shares(const std::vector<std::vector<Span>>& sets, double q_
         out.to.push_back(grid[k].x);
         out.q.push_back(std::sqrt(grid[k - 1].x * grid[k].x));
     }
-    out.half_width = std::log(q_max / q_min) / (2.0 * (points - 1));
+    out.half_width = stripe_half_width(q_min, q_max, points);
     for (const std::vector<Span>& set : sets) {
         std::vector<double> row;
         for (std::size_t j = 0; j < out.q.size(); ++j) row.push_back(covered_share(set, out.from[j], out.to[j]));

@@ -54,6 +54,9 @@ struct StripeShares {
     double half_width = 0;                   // h of (S3)
 };
 
+// h of (S3).  Expects 0 < q_min < q_max, points >= 2.
+double stripe_half_width(double q_min, double q_max, int points);
+
 // The stripes of (S3) and, for each record's overturning set in q (`sets`,
 // one per record, spans in increasing q), its share of each neighbourhood:
 //     s_rj = |set_r intersected with [from_j, to_j]| / ln(to_j / from_j),   lengths in ln q   (S4)
