@@ -7,6 +7,7 @@
 
 #include "batch/pool.hpp"
 #include "common.hpp"
+#include "fragility_fits.hpp"
 #include "dynamics/ground_input.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
@@ -174,73 +175,6 @@ py::object bracket(bool has, const studies::Bracket& b) {
     d["q_safe"] = b.safe;
     d["q_collapse"] = b.collapse;
     return std::move(d);
-}
-
-py::array_t<double> range(const studies::Range& r) { return to_array({r.lo, r.hi}); }
-
-py::object bootstrap_dict(bool bootstrapped, const studies::BootstrapInterval& interval) {
-    if (!bootstrapped) return py::none();
-    py::dict b = result();
-    b["resamples"] = interval.resamples;
-    b["seed"] = interval.seed;
-    b["level"] = interval.level;
-    b["median"] = range(interval.median);
-    b["beta"] = range(interval.beta);
-    return std::move(b);
-}
-
-py::object lognormal(bool fitted, const studies::LognormalFragility& fit, bool bootstrapped,
-                     const studies::BootstrapInterval& interval) {
-    if (!fitted) return py::none();
-    py::dict d = result();
-    d["median"] = fit.median;
-    d["beta"] = fit.beta;
-    d["collapsed"] = fit.collapsed;
-    d["censored"] = fit.censored;
-    d["bootstrap"] = bootstrap_dict(bootstrapped, interval);
-    d["log_likelihood"] = fit.log_likelihood;
-    return std::move(d);
-}
-
-py::object fit(const BlockFragility& f) { return lognormal(f.fitted, f.fit, f.bootstrapped, f.interval); }
-
-py::dict fit_entry(const py::object& fit, bool fitted, const std::string& no_fit) {
-    py::dict d = result();
-    d["fit"] = fit;
-    d["no_fit"] = fitted ? py::object(py::none()) : py::object(text(no_fit));
-    return d;
-}
-
-// The refine method's three fits, each named by its capacity, and the stripes, as
-// rocking fragility --json's "fits" and "stripes" (issue 39, item 3).
-void add_three_ways(py::dict& b, const BlockFragility& f) {
-    py::dict fits = result();
-    fits["first_overturning"] = fit_entry(fit(f), f.fitted, f.no_fit);
-    const studies::CapacityFit& r = f.robust;
-    fits["first_robust_collapse"] =
-        fit_entry(lognormal(r.fitted, r.fit, r.bootstrapped, r.interval), r.fitted, r.no_fit);
-    const studies::StripeFit& s = f.stripes;
-    py::object stripe_fit = py::none();
-    if (s.fitted) {
-        py::dict d = result();
-        d["median"] = s.fit.median;
-        d["beta"] = s.fit.beta;
-        d["stripes"] = s.stripes.size();
-        d["records"] = s.shares.share.size();
-        d["bootstrap"] = bootstrap_dict(s.bootstrapped, s.interval);
-        d["log_likelihood"] = s.fit.log_likelihood;
-        stripe_fit = std::move(d);
-    }
-    fits["stripes"] = fit_entry(stripe_fit, s.fitted, s.no_fit);
-    b["fits"] = fits;
-    std::vector<double> q, share;
-    for (const studies::Stripe& st : s.stripes) q.push_back(st.q), share.push_back(st.overturned / st.records);
-    py::dict stripes = result();
-    stripes["q"] = to_array(q);
-    stripes["from"] = to_array(s.shares.from);
-    stripes["to"] = to_array(s.shares.to);
-    stripes["share"] = to_array(share);
-    b["stripes"] = stripes;
 }
 
 int bootstrap_argument(const std::optional<Whole>& bootstrap_given, const std::optional<Whole>& seed_given,
@@ -426,7 +360,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
             rows.append(d);
         }
         b["records"] = rows;
-        b["fit"] = fit(f);
+        b["fit"] = block_fit(f);
         b["no_fit"] = f.fitted ? py::object(py::none()) : py::object(text(f.no_fit));
         std::vector<double> q, share;
         for (const studies::EmpiricalPoint& e : f.empirical) q.push_back(e.q), share.push_back(e.share);
@@ -540,7 +474,7 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const st
         d["non_conservative"] = sh.non_conservative;
         d["cases"] = sh.cases;
         d["share"] = sh.share;
-        d["bootstrap"] = boot ? py::object(range(sh.bootstrap)) : py::object(py::none());
+        d["bootstrap"] = boot ? py::object(range_array(sh.bootstrap)) : py::object(py::none());
         d["wilson"] = to_array({sh.wilson.lo, sh.wilson.hi});
         d["records_with_any"] = sh.records_with_any;
         d["records"] = sh.records;
