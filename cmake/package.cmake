@@ -31,6 +31,7 @@ set(ROCKING_PUBLIC_HEADERS
   studies/overturning_set.hpp
   studies/resampling.hpp
   studies/fragility.hpp
+  studies/stripe_fit.hpp
   studies/ida.hpp
   studies/spectrum.hpp
   studies/eq27_at_scale.hpp)

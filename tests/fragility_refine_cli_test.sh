@@ -70,7 +70,7 @@ PY
 check "the text's refine line" "first overturning q = 1.301275 in [" "$rocking" fragility "${refine[@]}"
 check "the text's note" "every island and gap wider than w in ln q found, except above q = (pi/2 - alpha)/alpha where the margin's guarantee does not hold; islands narrower than w may be missed" \
     "$rocking" fragility "${refine[@]}"
-check "the text says what the fit takes" "the lognormal fit takes the first overturning" "$rocking" fragility "${refine[@]}"
+check "the text says what the fits take" "three lognormal fits, each named by its capacity: the first overturning (conservative; the block's fit and empirical curve)" "$rocking" fragility "${refine[@]}"
 # The CSV: the columns, and the grid's CSV without them.
 check "the CSV's columns" "first_overturning,first_overturning_safe,first_overturning_collapse,first_overturning_check,first_robust_collapse,first_robust_collapsed,bands,samples,with_margins,unguaranteed_from" \
     grep -v '^#' "$tmp/r.csv"

@@ -7,6 +7,7 @@
 
 #include "batch/pool.hpp"
 #include "common.hpp"
+#include "fragility_fits.hpp"
 #include "dynamics/ground_input.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
@@ -248,30 +249,6 @@ py::object bracket(bool has, const studies::Bracket& b) {
     return std::move(d);
 }
 
-py::array_t<double> range(const studies::Range& r) { return to_array({r.lo, r.hi}); }
-
-py::object fit(const BlockFragility& f) {
-    if (!f.fitted) return py::none();
-    py::dict d = result();
-    d["median"] = f.fit.median;
-    d["beta"] = f.fit.beta;
-    d["collapsed"] = f.fit.collapsed;
-    d["censored"] = f.fit.censored;
-    if (!f.bootstrapped) {
-        d["bootstrap"] = py::none();
-    } else {
-        py::dict b = result();
-        b["resamples"] = f.interval.resamples;
-        b["seed"] = f.interval.seed;
-        b["level"] = f.interval.level;
-        b["median"] = range(f.interval.median);
-        b["beta"] = range(f.interval.beta);
-        d["bootstrap"] = b;
-    }
-    d["log_likelihood"] = f.fit.log_likelihood;
-    return std::move(d);
-}
-
 int bootstrap_argument(const std::optional<Whole>& bootstrap_given, const std::optional<Whole>& seed_given,
                        std::uint64_t& seed_out) {
     const std::optional<long long> bootstrap = whole(bootstrap_given, "bootstrap"), seed = whole(seed_given, "seed");
@@ -295,7 +272,11 @@ std::string refine_note(const studies::FragilityStudyOptions& o) {
            " in ln q: every island and gap wider than w in ln q found, except above q = (pi/2 - alpha)/alpha where "
            "the margin's guarantee does not hold; islands narrower than w may be missed; first robust collapse: the "
            "start of the first interval wider than " + g7(o.ida.robust_width) +
-           " in ln q; the lognormal fit takes the first overturning";
+           " in ln q; three lognormal fits, each named by its capacity: the first overturning (conservative; the "
+           "block's fit and empirical curve), the first robust collapse, and the multiple-stripe fit of the "
+           "overturned shares (a stripe at the geometric middle of each step of the main grid, its neighbourhood "
+           "the step, half-width " + g7(studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points)) +
+           " in ln q; binomial likelihood on n records x mean share)";
 }
 
 py::dict point_dict(const studies::IdaPoint& p) {
@@ -410,6 +391,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         grid["width"] = o.ida.width;
         grid["robust_width"] = o.ida.robust_width;
         grid["fit_capacity"] = "first_overturning";
+        grid["stripe_half_width"] = studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points);
         grid["refine_note"] = refine_note(o);
     }
     out["grid"] = grid;
@@ -450,7 +432,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
             rows.append(d);
         }
         b["records"] = rows;
-        b["fit"] = fit(f);
+        b["fit"] = block_fit(f);
         b["no_fit"] = f.fitted ? py::object(py::none()) : py::object(text(f.no_fit));
         std::vector<double> q, share;
         for (const studies::EmpiricalPoint& e : f.empirical) q.push_back(e.q), share.push_back(e.share);
@@ -458,6 +440,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         empirical["q"] = to_array(q);
         empirical["share"] = to_array(share);
         b["empirical"] = empirical;
+        if (f.three_ways) add_three_ways(b, f);
         blocks_out.append(b);
     }
     out["blocks"] = blocks_out;
@@ -563,7 +546,7 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const st
         d["non_conservative"] = sh.non_conservative;
         d["cases"] = sh.cases;
         d["share"] = sh.share;
-        d["bootstrap"] = boot ? py::object(range(sh.bootstrap)) : py::object(py::none());
+        d["bootstrap"] = boot ? py::object(range_array(sh.bootstrap)) : py::object(py::none());
         d["wilson"] = to_array({sh.wilson.lo, sh.wilson.hi});
         d["records_with_any"] = sh.records_with_any;
         d["records"] = sh.records;
@@ -628,7 +611,9 @@ overturning intervals in q = PGA/(alpha g), the first collapse q or a censored p
 fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).
 method='refine' (width=w in ln q, default 1e-5; robust_width, default 5e-3) adds each record's
 first_overturning (bracket, check), first_robust_collapse, bands (from, to, share), samples,
-with_margins and unguaranteed_from, as --method refine does; the fit takes the first overturning.
+with_margins and unguaranteed_from, as --method refine does; the block's fit takes the first overturning,
+and each block's fits (first_overturning, first_robust_collapse, stripes: fit and no_fit) and stripes
+(arrays q, from, to, share) fit the capacity three ways.
 An alpha, a p or a record (by its step and samples) given twice is refused.  Releases the GIL.)");
     m.def("eq27", gsl_checked(&eq27), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = py::none(),
           "p_max"_a = py::none(),

@@ -51,8 +51,11 @@ def test_spectrum_on_a_shared_record(records):
 def check_fragility(got, expected):
     assert_same(without(got, "blocks"), without(expected, "blocks"))
     for k, (g, e) in enumerate(zip(got.blocks, expected["blocks"])):
-        assert_same(without(g, "empirical"), without(e, "empirical"), "blocks[%d]" % k)
+        assert_same(without(g, "empirical", "stripes"), without(e, "empirical", "stripes"), "blocks[%d]" % k)
         assert_columns(g.empirical, e["empirical"], "blocks[%d].empirical" % k)
+        assert ("stripes" in g) == ("stripes" in e), "blocks[%d]: stripes in one only" % k
+        if "stripes" in e:
+            assert_columns(g.stripes, e["stripes"], "blocks[%d].stripes" % k)
     assert len(got.blocks) == len(expected["blocks"])
 
 
@@ -108,6 +111,11 @@ def test_fragility_refine_is_rocking_fragility_refine(tmp_path):
         check_fragility(got, expected)
     first = expected["blocks"][1]["records"][0]
     assert first["first_overturning"]["q"] < first["first_robust_collapse"]["q"]  # an island below the robust collapse
+    # The capacity three ways (issue 39, item 3): each block's fits by name and its stripes.
+    for block in expected["blocks"]:
+        assert sorted(block["fits"]) == ["first_overturning", "first_robust_collapse", "stripes"]
+        assert len(block["stripes"]) == 19
+    assert expected["grid"]["stripe_half_width"] > 0
     assert expected["grid"]["method"] == "refine"
     with pytest.raises(ValueError, match="^width goes with method='refine'"):
         rq.fragility([record], alpha=0.1, p=2, width=1e-3)

@@ -102,12 +102,16 @@ std::string point_text(const Ida& ida) {
 
 bool refined(const studies::FragilityStudyOptions& o) { return o.ida.method == studies::IdaOptions::Method::refine; }
 
-// The refine method's note: its width, its guarantee and the capacity the fit takes.
+// The refine method's note: its width, its guarantee and the capacities the three fits take.
 std::string refine_note(const studies::FragilityStudyOptions& o) {
     return "w = " + g7(o.ida.width) + " in ln q: every island and gap wider than w in ln q found, except above q = "
            "(pi/2 - alpha)/alpha where the margin's guarantee does not hold; islands narrower than w may be missed; "
            "first robust collapse: the start of the first interval wider than " + g7(o.ida.robust_width) +
-           " in ln q; the lognormal fit takes the first overturning";
+           " in ln q; three lognormal fits, each named by its capacity: the first overturning (conservative; the "
+           "block's fit and empirical curve), the first robust collapse, and the multiple-stripe fit of the "
+           "overturned shares (a stripe at the geometric middle of each step of the main grid, its neighbourhood "
+           "the step, half-width " + g7(studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points)) +
+           " in ln q; binomial likelihood on n records x mean share)";
 }
 
 std::string robust_text(const studies::IdaPoint& p) {
@@ -139,15 +143,44 @@ std::string refine_line(const Ida& ida) {
     return text;
 }
 
+std::string bootstrap_text(const studies::BootstrapInterval& b) {
+    return g7(100 * b.level) + " % bootstrap (" + std::to_string(b.resamples) + " resamples, seed " +
+           std::to_string(b.seed) + "): median [" + g7(b.median.lo) + ", " + g7(b.median.hi) + "], beta [" +
+           g7(b.beta.lo) + ", " + g7(b.beta.hi) + "]";
+}
+
+std::string lognormal_text(const studies::LognormalFragility& fit, bool bootstrapped,
+                           const studies::BootstrapInterval& interval) {
+    std::string text = "lognormal median q = " + g7(fit.median) + ", beta = " + g7(fit.beta) + " (" +
+                       std::to_string(fit.collapsed) + " overturned, " + std::to_string(fit.censored) + " censored)";
+    return bootstrapped ? text + "; " + bootstrap_text(interval) : text;
+}
+
 std::string fit_text(const BlockFragility& f) {
-    if (!f.fitted) return "no fit: " + f.no_fit;
-    std::string text = "lognormal median q = " + g7(f.fit.median) + ", beta = " + g7(f.fit.beta) + " (" +
-                       std::to_string(f.fit.collapsed) + " overturned, " + std::to_string(f.fit.censored) + " censored)";
-    if (f.bootstrapped)
-        text += "; " + g7(100 * f.interval.level) + " % bootstrap (" + std::to_string(f.interval.resamples) +
-                " resamples, seed " + std::to_string(f.interval.seed) + "): median [" + g7(f.interval.median.lo) + ", " +
-                g7(f.interval.median.hi) + "], beta [" + g7(f.interval.beta.lo) + ", " + g7(f.interval.beta.hi) + "]";
-    return text;
+    return f.fitted ? lognormal_text(f.fit, f.bootstrapped, f.interval) : "no fit: " + f.no_fit;
+}
+
+// The refine method's fits on the robust collapse and on the stripes (issue 39, item 3).
+std::string robust_fit_text(const BlockFragility& f) {
+    const studies::CapacityFit& c = f.robust;
+    return c.fitted ? lognormal_text(c.fit, c.bootstrapped, c.interval) : "no fit: " + c.no_fit;
+}
+
+std::string stripe_fit_text(const BlockFragility& f) {
+    const studies::StripeFit& s = f.stripes;
+    if (!s.fitted) return "no fit: " + s.no_fit;
+    const std::string text = "lognormal median q = " + g7(s.fit.median) + ", beta = " + g7(s.fit.beta) + " (" +
+                             std::to_string(s.stripes.size()) + " stripes x " + std::to_string(s.shares.share.size()) +
+                             " records)";
+    return s.bootstrapped ? text + "; " + bootstrap_text(s.interval) : text;
+}
+
+// Each stripe's mean overturned share (z_j / n_j), where above 0.
+std::string stripes_text(const BlockFragility& f) {
+    std::string text;
+    for (const studies::Stripe& s : f.stripes.stripes)
+        if (s.overturned > 0) text += (text.empty() ? "" : " ") + g7(s.q) + ":" + g7(s.overturned / s.records);
+    return text.empty() ? "none" : text;
 }
 
 std::string empirical_text(const BlockFragility& f) {
@@ -173,7 +206,15 @@ void print_text(const std::vector<std::string>& files, const studies::FragilityS
                         interval_list(f.idas[k]).c_str());
             if (refined(o)) std::printf("    %s\n", refine_line(f.idas[k]).c_str());
         }
-        std::printf("  %s\n  empirical (q:share): %s\n", fit_text(f).c_str(), empirical_text(f).c_str());
+        if (!f.three_ways) {
+            std::printf("  %s\n  empirical (q:share): %s\n", fit_text(f).c_str(), empirical_text(f).c_str());
+            continue;
+        }
+        std::printf("  fit on the first overturning (conservative): %s\n  empirical (q:share): %s\n",
+                    fit_text(f).c_str(), empirical_text(f).c_str());
+        std::printf("  fit on the first robust collapse: %s\n", robust_fit_text(f).c_str());
+        std::printf("  multiple-stripe fit: %s\n  stripes (q:mean overturned share, where above 0): %s\n",
+                    stripe_fit_text(f).c_str(), stripes_text(f).c_str());
     }
 }
 
@@ -184,15 +225,46 @@ std::string bracket_json(bool has, const studies::Bracket& b) {
 
 std::string range_json(const studies::Range& r) { return "[" + json_number(r.lo) + ", " + json_number(r.hi) + "]"; }
 
+std::string bootstrap_json(bool bootstrapped, const studies::BootstrapInterval& b) {
+    if (!bootstrapped) return "null";
+    return "{\"resamples\": " + std::to_string(b.resamples) + ", \"seed\": " + std::to_string(b.seed) +
+           ", \"level\": " + json_number(b.level) + ", \"median\": " + range_json(b.median) +
+           ", \"beta\": " + range_json(b.beta) + "}";
+}
+
+std::string lognormal_json(const studies::LognormalFragility& fit, bool bootstrapped,
+                           const studies::BootstrapInterval& interval) {
+    return "{\"median\": " + json_number(fit.median) + ", \"beta\": " + json_number(fit.beta) +
+           ", \"collapsed\": " + std::to_string(fit.collapsed) + ", \"censored\": " + std::to_string(fit.censored) +
+           ", \"bootstrap\": " + bootstrap_json(bootstrapped, interval) + "}";
+}
+
 std::string fit_json(const BlockFragility& f) {
-    if (!f.fitted) return "null";
-    std::string text = "{\"median\": " + json_number(f.fit.median) + ", \"beta\": " + json_number(f.fit.beta) +
-                       ", \"collapsed\": " + std::to_string(f.fit.collapsed) +
-                       ", \"censored\": " + std::to_string(f.fit.censored) + ", \"bootstrap\": ";
-    if (!f.bootstrapped) return text + "null}";
-    return text + "{\"resamples\": " + std::to_string(f.interval.resamples) + ", \"seed\": " +
-           std::to_string(f.interval.seed) + ", \"level\": " + json_number(f.interval.level) +
-           ", \"median\": " + range_json(f.interval.median) + ", \"beta\": " + range_json(f.interval.beta) + "}}";
+    return f.fitted ? lognormal_json(f.fit, f.bootstrapped, f.interval) : "null";
+}
+
+std::string no_fit_json(bool fitted, const std::string& why) { return fitted ? "null" : json_string(why); }
+
+// The refine method's three fits, each named by its capacity, and the stripes (issue 39, item 3).
+std::string three_ways_json(const BlockFragility& f) {
+    const studies::CapacityFit& r = f.robust;
+    const studies::StripeFit& s = f.stripes;
+    std::string text = ", \"fits\": {\"first_overturning\": {\"fit\": " + fit_json(f) +
+                       ", \"no_fit\": " + no_fit_json(f.fitted, f.no_fit) + "}, \"first_robust_collapse\": {\"fit\": " +
+                       (r.fitted ? lognormal_json(r.fit, r.bootstrapped, r.interval) : "null") +
+                       ", \"no_fit\": " + no_fit_json(r.fitted, r.no_fit) + "}, \"stripes\": {\"fit\": ";
+    if (s.fitted)
+        text += "{\"median\": " + json_number(s.fit.median) + ", \"beta\": " + json_number(s.fit.beta) +
+                ", \"stripes\": " + std::to_string(s.stripes.size()) + ", \"records\": " +
+                std::to_string(s.shares.share.size()) + ", \"bootstrap\": " + bootstrap_json(s.bootstrapped, s.interval) + "}";
+    else
+        text += "null";
+    text += ", \"no_fit\": " + no_fit_json(s.fitted, s.no_fit) + "}}, \"stripes\": [";
+    for (std::size_t j = 0; j < s.stripes.size(); ++j)
+        text += std::string(j ? ", " : "") + "{\"q\": " + json_number(s.stripes[j].q) + ", \"from\": " +
+                json_number(s.shares.from[j]) + ", \"to\": " + json_number(s.shares.to[j]) +
+                ", \"share\": " + json_number(s.stripes[j].overturned / s.stripes[j].records) + "}";
+    return text + "]";
 }
 
 std::string point_json(const studies::IdaPoint& p) {
@@ -229,6 +301,7 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
     if (refined(o))
         js << ", \"method\": \"refine\", \"width\": " << json_number(o.ida.width)
            << ", \"robust_width\": " << json_number(o.ida.robust_width) << ", \"fit_capacity\": \"first_overturning\""
+           << ", \"stripe_half_width\": " << json_number(studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points))
            << ", \"refine_note\": " << json_string(refine_note(o));
     js << "}, \"blocks\": [";
     for (std::size_t b = 0; b < study.size(); ++b) {
@@ -261,7 +334,9 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
         for (std::size_t i = 0; i < f.empirical.size(); ++i)
             js << (i ? ", " : "") << "{\"q\": " << json_number(f.empirical[i].q)
                << ", \"share\": " << json_number(f.empirical[i].share) << "}";
-        js << "]}";
+        js << "]";
+        if (f.three_ways) js << three_ways_json(f);
+        js << "}";
     }
     js << "]}\n";
     std::cout << js.str();
@@ -293,11 +368,18 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
                "the start of the first interval wider than the robust width, or q_max where first_robust_collapsed "
                "is false; bands: each step of the main grid that overturns at all, [from, to]:share of it in ln q; "
                "samples: runs with escape margins; unguaranteed_from: empty where the guarantee holds to q_max");
+        t.note("refine fits", "fit at: the fit on the first overturning (conservative); first robust collapse fit at, "
+                              "stripe fit at: the other two capacities; stripes at: each stripe's q and mean overturned "
+                              "share (q:share), where above 0");
     }
     for (const BlockFragility& f : study) {
         const std::string block = "alpha " + g7(f.block.alpha) + ", p " + g7(f.block.p);
         t.note("fit at " + block, fit_text(f));
         t.note("empirical at " + block, empirical_text(f));
+        if (!f.three_ways) continue;
+        t.note("first robust collapse fit at " + block, robust_fit_text(f));
+        t.note("stripe fit at " + block, stripe_fit_text(f));
+        t.note("stripes at " + block, stripes_text(f));
     }
     for (const BlockFragility& f : study)
         for (std::size_t k = 0; k < files.size(); ++k) {

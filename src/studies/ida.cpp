@@ -259,6 +259,36 @@ void fit_block(BlockFragility& f, const FragilityStudyOptions& o) {
     }
 }
 
+void fit_capacity(CapacityFit& c, const FragilityStudyOptions& o) {
+    c.no_fit = why_no_maximum(c.points);
+    if (!c.no_fit.empty()) return;
+    c.fit = fit_lognormal(c.points);
+    c.fitted = true;
+    if (o.resamples > 0) {
+        c.interval = bootstrap(c.points, o.resamples, o.seed, o.level);
+        c.bootstrapped = true;
+    }
+}
+
+void fit_stripe_set(StripeFit& s, const std::vector<Ida>& idas, const FragilityStudyOptions& o) {
+    std::vector<std::vector<Span>> sets;
+    for (const Ida& ida : idas) {
+        std::vector<Span> set;
+        for (const IdaInterval& in : ida.intervals) set.push_back(Span{in.from, in.to, -1, -1});
+        sets.push_back(std::move(set));
+    }
+    s.shares = stripe_shares(sets, o.ida.q_min, o.ida.q_max, o.ida.points);
+    s.stripes = stripes_of(s.shares);
+    s.no_fit = why_no_stripe_maximum(s.stripes);
+    if (!s.no_fit.empty()) return;
+    s.fit = fit_stripes(s.stripes);
+    s.fitted = true;
+    if (o.resamples > 0) {
+        s.interval = bootstrap_stripes(s.shares, o.resamples, o.seed, o.level);
+        s.bootstrapped = true;
+    }
+}
+
 }  // namespace
 
 BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, const FragilityStudyOptions& o) {
@@ -268,6 +298,12 @@ BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, c
     f.idas = std::move(idas);
     f.empirical = empirical_curve(f.points);
     fit_block(f, o);
+    if (o.ida.method == IdaOptions::Method::refine && !f.idas.empty()) {
+        f.three_ways = true;
+        for (const Ida& ida : f.idas) f.robust.points.push_back(ida.first_robust_collapse);
+        fit_capacity(f.robust, o);
+        fit_stripe_set(f.stripes, f.idas, o);
+    }
     return f;
 }
 

@@ -25,6 +25,7 @@
 #include "studies/fragility.hpp"
 #include "studies/intervals.hpp"
 #include "studies/overturning_set.hpp"
+#include "studies/stripe_fit.hpp"
 
 namespace rocking::studies {
 
@@ -123,6 +124,28 @@ struct FragilityStudyOptions {
     int threads = 1;
 };
 
+// A lognormal fit of one capacity's points (fit_lognormal, bootstrap), or why
+// ln L has none.
+struct CapacityFit {
+    std::vector<IdaPoint> points;
+    bool fitted = false;
+    std::string no_fit;  // why not fitted (why_no_maximum)
+    LognormalFragility fit;
+    bool bootstrapped = false;
+    BootstrapInterval interval;
+};
+
+// The multiple-stripe fit (stripe_fit.hpp) of the IDAs' overturning sets, or why not.
+struct StripeFit {
+    StripeShares shares;
+    std::vector<Stripe> stripes;
+    bool fitted = false;
+    std::string no_fit;  // why not fitted (why_no_stripe_maximum)
+    StripeFragility fit;
+    bool bootstrapped = false;
+    BootstrapInterval interval;
+};
+
 struct BlockFragility {
     BlockShape block;
     std::vector<Ida> idas;            // one per input, in the inputs' order
@@ -133,14 +156,27 @@ struct BlockFragility {
     bool bootstrapped = false;
     BootstrapInterval interval;
     std::vector<EmpiricalPoint> empirical;
+    // With the refine method (issue 39) the capacity three ways: the fit
+    // above takes the first overturning (its points are the first
+    // overturnings); `robust` the first robust collapses; `stripes` the
+    // multiple-stripe fit of the overturned shares (docs/fragility.md,
+    // "Three capacities").  Empty with the grid method.
+    bool three_ways = false;
+    CapacityFit robust;
+    StripeFit stripes;
 };
 
 // One block's fragility from its IDAs (one per input, in the inputs' order):
 // their points, the empirical curve and, where ln L has a maximum
-// (why_no_maximum), the lognormal fit with its bootstrap interval.
+// (why_no_maximum), the lognormal fit with its bootstrap interval; with the
+// refine method (options.ida.method) also the fit on the first robust
+// collapses and the multiple-stripe fit on the main grid's stripes
+// (stripe_shares of options.ida's q_min, q_max and points), each with its
+// bootstrap at the same resamples, seed and level.
 // fragility_study's second half, for a front end that ran the IDAs elsewhere
-// (rocking fragility on the batch engine's ranks).  Throws what fit_lognormal
-// and bootstrap throw on points that have a maximum.
+// (rocking fragility on the batch engine's ranks).  Throws what fit_lognormal,
+// bootstrap, fit_stripes and bootstrap_stripes throw on data that have a
+// maximum.
 BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, const FragilityStudyOptions& options);
 
 // For each block, the IDA of every input, the lognormal fit of their points
