@@ -301,15 +301,7 @@ void add_refine_fields(py::dict& d, const Ida& ida) {
     }
     d["first_overturning"] = first;
     d["first_robust_collapse"] = point_dict(ida.first_robust_collapse);
-    py::list bands;
-    for (const studies::IdaBand& b : ida.bands) {
-        py::dict band = result();
-        band["from"] = b.from;
-        band["to"] = b.to;
-        band["share"] = b.share;
-        bands.append(band);
-    }
-    d["bands"] = bands;
+    d["bands"] = bands_list(ida.bands);
     d["method"] = "refine";
     d["samples"] = ida.samples;
     d["accepted"] = ida.accepted;
@@ -334,21 +326,10 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     if (points_given < 2 || points_given > 10000) refuse("points: must be between 2 and 10000");
     o.ida.points = static_cast<int>(points_given);
     // As rocking fragility's --method, --width and --robust-width.
-    const std::string method = string_argument(method_given, "method");
-    if (method != "grid" && method != "refine") refuse("method: grid or refine (got '" + method + "')");
-    const bool refine = method == "refine";
-    if (refine) o.ida.method = studies::IdaOptions::Method::refine;
-    const std::optional<double> width = number(width_given, "width"), robust_width = number(robust_width_given, "robust_width");
-    if (width && !refine) refuse("width goes with method='refine'");
-    if (robust_width && !refine) refuse("robust_width goes with method='refine'");
-    if (width) {
-        if (!(*width >= 1e-7 && *width <= 1e-1)) refuse("width: must be in [1e-7, 0.1] (in ln q)");
-        o.ida.width = *width;
-    }
-    if (robust_width) {
-        if (!(*robust_width >= 1e-7 && *robust_width <= 1)) refuse("robust_width: must be in [1e-7, 1] (in ln q)");
-        o.ida.robust_width = *robust_width;
-    }
+    const MethodChoice m = method_argument(method_given, width_given, robust_width_given, "q");
+    if (m.refine) o.ida.method = studies::IdaOptions::Method::refine;
+    o.ida.width = m.width;
+    o.ida.robust_width = m.robust_width;
     o.resamples = bootstrap_argument(bootstrap, seed, o.seed);
     if (o.resamples < 0 || o.resamples > 100000) refuse("bootstrap: must be between 0 and 100000");
     o.threads = jobs_argument(jobs);
@@ -386,7 +367,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     grid["note"] = o.ida.describe_grid() +
                    "; q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold; " +
                    o.ida.describe_checks();
-    if (refine) {
+    if (m.refine) {
         grid["method"] = "refine";
         grid["width"] = o.ida.width;
         grid["robust_width"] = o.ida.robust_width;
@@ -428,7 +409,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
                 intervals.append(i);
             }
             d["intervals"] = intervals;
-            if (refine) add_refine_fields(d, ida);
+            if (m.refine) add_refine_fields(d, ida);
             rows.append(d);
         }
         b["records"] = rows;

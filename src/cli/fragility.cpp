@@ -20,6 +20,7 @@
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
 #include "cli/options.hpp"
+#include "cli/set_words.hpp"
 #include "harness/table.hpp"
 #include "jobs/fragility_plan.hpp"
 #include "studies/ida.hpp"
@@ -56,23 +57,10 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     // Beyond 1e4 the scaled record reaches thousands of g: no physical input.
     if (!(o.ida.q_max > o.ida.q_min && o.ida.q_max <= 1e4)) throw UsageError("--q-max: must be in (1, 10000]");
     if (a.values.count("--points")) o.ida.points = integer("--points", a.values.at("--points"), 2, 10000);
-    if (a.values.count("--method")) {
-        const std::string& m = a.values.at("--method");
-        if (m != "grid" && m != "refine") throw UsageError("--method: grid or refine (got '" + m + "')");
-        if (m == "refine") o.ida.method = studies::IdaOptions::Method::refine;
-    }
-    const bool refine = o.ida.method == studies::IdaOptions::Method::refine;
-    for (const char* flag : {"--width", "--robust-width"})
-        if (a.values.count(flag) && !refine) throw UsageError(std::string(flag) + " goes with --method refine");
-    if (a.values.count("--width")) {
-        o.ida.width = number("--width", a.values.at("--width"));
-        if (!(o.ida.width >= 1e-7 && o.ida.width <= 1e-1)) throw UsageError("--width: must be in [1e-7, 0.1] (in ln q)");
-    }
-    if (a.values.count("--robust-width")) {
-        o.ida.robust_width = number("--robust-width", a.values.at("--robust-width"));
-        if (!(o.ida.robust_width >= 1e-7 && o.ida.robust_width <= 1))
-            throw UsageError("--robust-width: must be in [1e-7, 1] (in ln q)");
-    }
+    const MethodChoice m = method_options(a, "q");
+    if (m.refine) o.ida.method = studies::IdaOptions::Method::refine;
+    o.ida.width = m.width;
+    o.ida.robust_width = m.robust_width;
     const Bootstrap b = bootstrap_options(a);
     o.resamples = b.resamples;
     o.seed = b.seed;
@@ -118,14 +106,6 @@ std::string robust_text(const studies::IdaPoint& p) {
     return p.collapsed ? "q = " + g7(p.q) : "censored at q_max = " + g7(p.q);
 }
 
-// The bands of q that overturn at all, each as [from, to]:share.
-std::string bands_text(const Ida& ida) {
-    std::string text;
-    for (const studies::IdaBand& b : ida.bands)
-        if (b.share > 0) text += (text.empty() ? "[" : " [") + g7(b.from) + ", " + g7(b.to) + "]:" + g7(b.share);
-    return text.empty() ? "none" : text;
-}
-
 std::string first_overturning_text(const Ida& ida) {
     if (!ida.first_overturning.collapsed) return "censored at q_max = " + g7(ida.first_overturning.q);
     const IdaInterval& in = ida.intervals.front();
@@ -136,7 +116,7 @@ std::string first_overturning_text(const Ida& ida) {
 
 std::string refine_line(const Ida& ida) {
     std::string text = "first overturning " + first_overturning_text(ida) + "; first robust collapse " +
-                       robust_text(ida.first_robust_collapse) + "; overturned share (q band:share) " + bands_text(ida) +
+                       robust_text(ida.first_robust_collapse) + "; overturned share (q band:share) " + bands_text(ida.bands) +
                        "; " + std::to_string(ida.samples) + " runs with margins" +
                        (ida.with_margins ? "" : " (no margins: every interval split to w)");
     if (std::isfinite(ida.unguaranteed_from)) text += "; unguaranteed from q = " + g7(ida.unguaranteed_from);
@@ -282,11 +262,8 @@ std::string refine_json(const Ida& ida) {
                                         json_string(studies::confirmation_name(ida.intervals.front().lower_check.confirmation)) +
                                         ", \"detail\": " + json_string(ida.intervals.front().lower_check.detail) + "}"
                                   : std::string("null")) +
-                       "}, \"first_robust_collapse\": " + point_json(ida.first_robust_collapse) + "}, \"bands\": [";
-    for (std::size_t i = 0; i < ida.bands.size(); ++i)
-        text += std::string(i ? ", " : "") + "{\"from\": " + json_number(ida.bands[i].from) +
-                ", \"to\": " + json_number(ida.bands[i].to) + ", \"share\": " + json_number(ida.bands[i].share) + "}";
-    return text + "], \"method\": \"refine\", \"samples\": " + std::to_string(ida.samples) +
+                       "}, \"first_robust_collapse\": " + point_json(ida.first_robust_collapse) + "}, \"bands\": " + bands_json(ida.bands);
+    return text + ", \"method\": \"refine\", \"samples\": " + std::to_string(ida.samples) +
            ", \"accepted\": " + std::to_string(ida.accepted) + ", \"at_width\": " + std::to_string(ida.at_width) +
            ", \"with_margins\": " + (ida.with_margins ? "true" : "false") +
            ", \"unguaranteed_from\": " + json_number(ida.unguaranteed_from);
@@ -392,7 +369,7 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
             if (bracketed) row.add(ida.intervals.front().lower.safe).add(ida.intervals.front().lower.collapse)
                                .add(point_check_text(ida));
             else row.add(std::string()).add(std::string()).add(std::string());
-            row.add(ida.first_robust_collapse.q).add(ida.first_robust_collapse.collapsed).add(bands_text(ida))
+            row.add(ida.first_robust_collapse.q).add(ida.first_robust_collapse.collapsed).add(bands_text(ida.bands))
                 .add(std::to_string(ida.samples)).add(ida.with_margins);
             if (std::isfinite(ida.unguaranteed_from)) row.add(ida.unguaranteed_from);
             else row.add(std::string());
