@@ -106,6 +106,20 @@ TEST(OverturningSpectrum, TheNarrowIslandInPIsBracketedWhereTheGridMissesIt) {
     EXPECT_GT(island.upper.p_safe, upper);
     EXPECT_TRUE(s.first_overturning.found);
     EXPECT_EQ(s.first_overturning.p, island.lower.p_collapse);
+    // Stopped at the first sample that overturns: the same first overturning,
+    // the same boundary, for fewer samples, and nothing claimed above it.
+    SpectrumOptions first = o;
+    first.first_only = true;
+    const Spectrum f = rocking_spectrum(P::input(), P::alpha, first);
+    ASSERT_TRUE(f.first_overturning.found);
+    EXPECT_EQ(f.first_overturning.p, s.first_overturning.p);
+    ASSERT_EQ(f.intervals.size(), 1u);
+    EXPECT_EQ(f.intervals[0].lower.p_safe, island.lower.p_safe);
+    EXPECT_EQ(f.intervals[0].lower.confirmation, Confirmation::confirmed);
+    EXPECT_LT(f.samples, s.samples);
+    EXPECT_TRUE(f.bands.empty());
+    EXPECT_FALSE(f.first_robust_collapse.found);
+    EXPECT_LE(f.points.back().p, f.intervals[0].to);
     ASSERT_TRUE(s.first_robust_collapse.found);
     EXPECT_NEAR(s.first_robust_collapse.p, grid.first_robust_collapse.p, 1e-6 * grid.first_robust_collapse.p);
     // Every other interval is the chain's: overturning at its middle.

@@ -47,6 +47,7 @@ struct Search {
 
     // [a, b] with its ends sampled; appends the samples strictly inside and b.
     void refine(double a, const MarginSample& A, double b, const MarginSample& B) {
+        if (out.stopped) return;
         const double d = std::log(b / a);
         if (accept_interval(A, B, d, o)) {
             ++out.accepted;
@@ -61,6 +62,7 @@ struct Search {
         }
         out.xs.push_back(b);
         out.collapse.push_back(B.collapse);
+        out.stopped = o.first_only && B.collapse;
     }
 };
 
@@ -80,7 +82,8 @@ RefinedSet refine_set(const std::function<MarginSample(double)>& sample, const s
     MarginSample prev = search.at(grid.front().x);
     out.xs.push_back(grid.front().x);
     out.collapse.push_back(prev.collapse);
-    for (std::size_t k = 1; k < grid.size(); ++k) {
+    out.stopped = o.first_only && prev.collapse;
+    for (std::size_t k = 1; k < grid.size() && !out.stopped; ++k) {
         MarginSample next = search.at(grid[k].x);
         search.refine(grid[k - 1].x, prev, grid[k].x, next);
         prev = std::move(next);

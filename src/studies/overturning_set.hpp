@@ -54,6 +54,10 @@ struct RefineOptions {
     double consistency = 0.5;   // tangents borne out within this share of the smaller margin
     double rel_tol = 1e-6;      // each change of outcome bisected to this, relative
     double guarantee_below = std::numeric_limits<double>::infinity();
+    // Stop at the first sample that collapses: where only the first
+    // overturning is wanted (Table 1's p), the range above it is not searched.
+    // The last span then ends at that sample, not where the set ends.
+    bool first_only = false;
 };
 
 struct RefinedSet {
@@ -65,6 +69,7 @@ struct RefinedSet {
     long bisection_runs = 0;        // runs of the plain outcome
     long accepted = 0;              // intervals accepted by the margins
     long at_width = 0;              // intervals left at spacing <= w, same outcome at both ends
+    bool stopped = false;           // first_only: stopped at a sample that collapses
     // Where the guarantee stops (guarantee_below within the range), else +inf.
     double unguaranteed_from = std::numeric_limits<double>::infinity();
 };

@@ -251,15 +251,17 @@ void refined_spectrum(Spectrum& s, const GroundInput& input, double alpha, const
     ro.width = o.width;
     ro.coarse = o.points;
     ro.rel_tol = o.rel_tol;
+    ro.first_only = o.first_only;
     // The turn-back bound of the IDA, q > (pi/2 - alpha)/alpha, on the input's own q.
     if (input.peak() / alpha > (M_PI / 2 - alpha) / alpha) ro.guarantee_below = 0;
     const RefinedSet set =
         refine_set([&sampler](double p) { return sampler(p); }, [&sampler](double p) { return sampler.collapses(p); },
                    o.p_min, o.p_max, ro);
     const std::vector<GridPoint> coarse = log_grid(o.p_min, o.p_max, o.points, false, {});
-    for (const GridPoint& at : coarse) s.points.push_back(run_point(input, alpha, at, o));
+    for (const GridPoint& at : coarse)
+        if (!set.stopped || at.x <= set.xs.back()) s.points.push_back(run_point(input, alpha, at, o));
     s.samples = set.samples;
-    s.simulations = static_cast<long>(coarse.size()) + set.bisection_runs + (s.with_margins ? 2 : 1) * set.samples;
+    s.simulations = static_cast<long>(s.points.size()) + set.bisection_runs + (s.with_margins ? 2 : 1) * set.samples;
     s.accepted = set.accepted;
     s.at_width = set.at_width;
     s.unguaranteed_from = set.unguaranteed_from;
@@ -292,6 +294,10 @@ Spectrum rocking_spectrum(const GroundInput& input, double alpha, const Spectrum
     if (o.method == SpectrumOptions::Method::refine) {
         refined_spectrum(s, input, alpha, o);
         summarise(s, o);
+        if (o.first_only) {
+            s.bands.clear();
+            s.first_robust_collapse = SpectrumFirst{o.p_max, false};
+        }
         return s;
     }
 

@@ -50,6 +50,11 @@ struct SpectrumOptions {
     double width = 1e-5;         // w, in ln p (refine)
     double slope_step = 1e-9;    // the second run's relative step in p (refine)
     double robust_width = 5e-3;  // an interval wider than this in ln p is a robust collapse
+    // refine: stop at the first sample that overturns (RefineOptions::
+    // first_only): the first overturning only, as Table 1's search wants it.
+    // The spectrum then ends there: its last interval is cut at that sample,
+    // its points stop there, no bands and no first robust collapse.
+    bool first_only = false;
     // The second solver, on the model of `model`: GSL rk8pd at rtol = atol =
     // 1e-13 alpha, as Table 1's bracket check (reproduce/scenes/records_analysis.cpp).
     dynamics::SolverOptions check_solver = rk8pd_check();
