@@ -70,6 +70,26 @@ check "end line"             "# end: $jobs jobs, 0 failed"      tail -1 "$tmp/r1
 if $py "$(dirname "$0")/batch_compare.py" "$tmp/r1.csv" "$rocking" "$tmp"
 then echo "ok: the rows agree with simulate, collapse, fragility and spectrum"; else echo "FAIL: a row differs from its single command"; fail=1; fi
 
+# ---- Issue 39: the method columns.  A manifest without them has no robust
+# columns (the results of before); one with them: each ida and spectrum row,
+# grid or refine (w 1e-3), with the first robust collapse and the bands, a
+# refine row equal to fragility and spectrum --method refine, and a width on
+# a grid row refused in its row (exit 3), the manifest's line named.
+check_not "no method, no robust columns" "robust_collapse" grep -v '^#' "$tmp/r1.csv"
+printf '%s\n' "id,kind,record,unit,record_dt,alpha,p,points,q_max,p_min,p_max,method,width,robust_width" \
+    "g1,ida,records/sine1.txt,g,0.01,0.08,2.5,60,12,,,,," \
+    "r1,ida,records/sine1.txt,g,0.01,0.08,2.5,60,12,,,refine,1e-3," \
+    "r2,ida,records/pulse.txt,m/s2,,0.12,1,,8,,,refine,1e-3,1e-2" \
+    "r3,spectrum,records/sine1.5.txt,g,0.01,0.1,,20,,1,6,refine,1e-3,1e-2" \
+    "g2,spectrum,records/sine1.5.txt,g,0.01,0.1,,20,,1,6,grid,," >"$tmp/refine.csv"
+"$rocking" batch "$tmp/refine.csv" --output "$tmp/refine_r.csv" 2>/dev/null
+check "method columns run"   "robust_collapse,q_robust,p_robust,bands,error" grep '^line,' "$tmp/refine_r.csv"
+if $py "$(dirname "$0")/batch_compare.py" "$tmp/refine_r.csv" "$rocking" "$tmp" --kinds ida,spectrum
+then echo "ok: the refine rows agree with fragility and spectrum --method refine"; else echo "FAIL: a refine row differs from its command"; fail=1; fi
+printf '%s\n' "kind,record,unit,record_dt,alpha,p,method,width" "ida,records/sine1.txt,g,0.01,0.1,2,grid,1e-3" >"$tmp/badw.csv"
+check  "width on a grid row" "manifest line 2: width: goes with method refine" "$rocking" batch "$tmp/badw.csv"
+status "width on a grid row" 3                                   "$rocking" batch "$tmp/badw.csv"
+
 # ---- The rows do not depend on the order the jobs run in, nor on their neighbours.
 $py - "$tmp/m.csv" "$tmp/reversed.csv" <<'PY'
 import sys

@@ -5,7 +5,9 @@ Every row of RESULTS is rerun by the command that runs its study alone
 (simulate --record, collapse, fragility for an ida row, spectrum), with the
 options its manifest cells give, from the manifest's folder DIR, and each
 figure of the row must equal the command's JSON as a double: both are %.17g
-of the same computation, or the batch computes something else.
+of the same computation, or the batch computes something else.  A row with
+method refine (issue 39) is rerun with --method refine and its widths, and
+its first robust collapse and bands checked against the command's.
 
     batch_compare.py RESULTS ROCKING DIR [--kinds simulate,collapse,ida,spectrum]
 """
@@ -15,13 +17,28 @@ wanted = set(sys.argv[5].split(",")) if len(sys.argv) > 5 and sys.argv[4] == "--
 rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
 for r in rows:  # the manifest's columns it does not have: empty, as the batch takes them
     for k in ("unit", "record_dt", "p", "height", "half_height", "scaling", "model", "restitution", "criterion",
-              "points", "q_max"):
+              "points", "q_max", "method", "width", "robust_width"):
         r.setdefault(k, "")
 def run(*args):
     return json.loads(subprocess.run([rocking, *args], capture_output=True, text=True, check=True, cwd=tmp).stdout)
 def record_args(r, dt_flag):
     a = [] if not r["unit"] else ["--unit", r["unit"]]
     return a + ([dt_flag, r["record_dt"]] if r["record_dt"] else [])
+def method_args(r):
+    if r["method"] != "refine": return []
+    return ["--method", "refine"] + (["--width", r["width"]] if r["width"] else []) + \
+        (["--robust-width", r["robust_width"]] if r["robust_width"] else [])
+def same_capacities(r, j, x, found):
+    # The refine method's JSON holds the first robust collapse and every band; the row the bands that overturn.
+    if r["method"] != "refine": return
+    robust = j["first_robust_collapse"]
+    assert (r["robust_collapse"] == "yes") == robust[found], (r, robust)
+    same(x + "_robust", r[x + "_robust"], robust[x] if robust[found] else None)
+    bands = [b for b in j["bands"] if b["share"] > 0]
+    cells = [c.split("|") for c in r["bands"].split(";")] if r["bands"] else []
+    assert len(cells) == len(bands), (r["bands"], bands)
+    for c, b in zip(cells, bands):
+        for v, key in zip(c, ("from", "to", "share")): same("band " + key, v, b[key])
 def same(what, got, want):
     # Both are %.17g of a double: equal as doubles, or the batch differs from the command.
     if want is None: assert got == "", (what, got)
@@ -52,21 +69,25 @@ for r in rows:
     elif r["kind"] == "ida":
         grid = (["--points", r["points"]] if r["points"] else []) + (["--q-max", r["q_max"]] if r["q_max"] else [])
         j = run("fragility", r["record"], *record_args(r, "--dt"), "--alpha", r["alpha"], "--p", r["p_used"], *grid,
-                "--json")["blocks"][0]["records"][0]
+                *method_args(r), "--json")["blocks"][0]["records"][0]
         assert (r["collapse"] == "yes") == j["collapsed"], (r, j)
         same("q_collapse", r["q_collapse"], j["q"] if j["collapsed"] else None)
         if j["collapsed"]:
             low = j["intervals"][0]["lower"]
             same("q_safe", r["q_safe"], low["q_safe"] if low else None)
         assert int(r["intervals"]) == len(j["intervals"]) and int(r["simulations"]) == j["simulations"], (r, j)
+        same_capacities(r, j, "q", "collapsed")
     elif r["kind"] == "spectrum":
         grid = ["--points", r["points"]] if r["points"] else []
-        j = run("spectrum", r["record"], *record_args(r, "--dt"), "--alpha", r["alpha"], *grid, "--json")["spectra"][0]
+        grid += (["--p-min", r["p_min"]] if r.get("p_min") else []) + (["--p-max", r["p_max"]] if r.get("p_max") else [])
+        j = run("spectrum", r["record"], *record_args(r, "--dt"), "--alpha", r["alpha"], *grid, *method_args(r),
+                "--json")["spectra"][0]
         assert int(r["intervals"]) == len(j["intervals"]) and int(r["simulations"]) == j["simulations"], (r, j)
         if j["intervals"]:
             first = j["intervals"][0]
             same("p_collapse", r["p_collapse"], first["from"])
             same("p_safe", r["p_safe"], first["lower"]["p_safe"] if first["lower"] else None)
+        same_capacities(r, j, "p", "found")
 assert kinds == wanted, kinds
 assert any(r["collapse"] == "yes" for r in rows) and any(r["collapse"] == "no" for r in rows)
 print(len(rows), "rows agree")

@@ -117,6 +117,86 @@ for k in range(11):
 PY
 then echo "ok: json"; else echo "FAIL: json"; fail=1; fi
 
+# --method refine (issue 39): the shares under each capacity.  The options
+# refused as fragility refuses them; --method grid is today's output, byte for
+# byte; at --width 1e-3 every verdict of every block recomputed under both
+# capacities from fragility --method refine's first overturning and first
+# robust collapse, the first overturning's share never below the robust
+# one's and above it for some k (the premise: the capacities differ here), and
+# the robust bootstrap recomputed from its per-record counts with the same
+# seed as the first overturning's (the same draws).
+check "method unknown"    "--method: grid or refine (got 'dense')"       "${run[@]}" "${small[@]}" --method dense
+status "method unknown"   2                                              "${run[@]}" "${small[@]}" --method dense
+check "width with grid"   "--width goes with --method refine"            "${run[@]}" "${small[@]}" --width 1e-3
+check "robust width with grid" "--robust-width goes with --method refine" "${run[@]}" "${small[@]}" --method grid --robust-width 1e-2
+check "width range"       "--width: must be in [1e-7, 0.1] (in ln q)"    "${run[@]}" "${small[@]}" --method refine --width 0.2
+check "robust width range" "--robust-width: must be in [1e-7, 1] (in ln q)" "${run[@]}" "${small[@]}" --method refine --robust-width 0
+status "width range"      2                                              "${run[@]}" "${small[@]}" --method refine --width 0.2
+"${run[@]}" "${small[@]}" --method grid --json --bootstrap 300 --seed 11 >"$tmp/eg.json"
+if cmp -s "$tmp/e.json" "$tmp/eg.json"; then echo "ok: --method grid is the default's bytes"; else echo "FAIL: --method grid differs from the default"; fail=1; fi
+refine=(--method refine --width 1e-3)
+"${run[@]}" "${small[@]}" "${refine[@]}" --json --bootstrap 300 --seed 11 >"$tmp/r.json"
+"${run[@]}" "${small[@]}" "${refine[@]}" --bootstrap 300 --seed 11 >"$tmp/r.txt"
+"${run[@]}" "${small[@]}" "${refine[@]}" --bootstrap 300 --seed 11 --output "$tmp/r.csv" >/dev/null
+"$rocking" fragility "${files[@]}" --unit g --dt 0.01 --alpha 0.1,0.2 --p 1,2,4 "${refine[@]}" --json >"$tmp/rf.json"
+for text in "refine: w = 0.001 in ln q" "capacity: first overturning: the lowest q" "capacity: first robust collapse: the start" \
+            "cases censored (no robust collapse up to q_max = 20)"; do
+    if grep -qF "$text" "$tmp/r.txt"; then echo "ok: refine text: $text"; else echo "FAIL: refine text: $text"; fail=1; fi
+done
+for note in "# refine: w = 0.001" "# capacity: first overturning" "# robust capacity: first robust collapse" \
+            "# robust censored: " "# robust share to_5: " "robust_censored,robust_nc_to1,"; do
+    if grep -qF "$note" "$tmp/r.csv"; then echo "ok: refine csv: $note"; else echo "FAIL: refine csv: $note"; fail=1; fi
+done
+if $py - "$tmp/r.json" "$tmp/rf.json" "$tmp/info.jsonl" "$rocking" "$(dirname "$0")/../expected/fragility" <<'PY'
+import json, subprocess, sys
+sys.path.insert(0, sys.argv[5])
+from independent import GslMt19937, percentile
+def bad(c): raise ValueError(c)
+e = json.load(open(sys.argv[1]), parse_constant=bad)
+frag = json.load(open(sys.argv[2]), parse_constant=bad)["blocks"]
+infos = [json.loads(line) for line in open(sys.argv[3])]
+assert e["method"] == "refine" and e["width"] == 0.001 and e["robust_width"] == 0.005, e
+assert e["capacity"] == "first_overturning" and "some q below" in e["capacity_note"], e
+robust = e["first_robust_collapse"]
+assert "robust width" in robust["capacity_note"], robust
+q27 = {}
+def eq27(x):
+    if x not in q27:
+        q27[x] = json.loads(subprocess.run([sys.argv[4], "q", "--case", "2", "--pulses", "6", "--x", repr(x), "--json"],
+                                           capture_output=True, text=True, check=True).stdout)["q"]
+    return q27[x]
+differ = 0
+for study, key in ((e, "first_overturning"), (robust, "first_robust_collapse")):
+    assert len(study["map"]) == 6
+    for cell in study["map"]:
+        block = next(b for b in frag if b["alpha"] == cell["alpha"] and b["p"] == cell["p"])
+        censored = sum(not r[key]["collapsed"] for r in block["records"])
+        assert cell["censored"] == censored, (key, cell, censored)
+        for k in range(11):
+            count = sum(r[key]["collapsed"] and r[key]["q"] < eq27(cell["p"] * info["to"][k])
+                        for r, info in zip(block["records"], infos))
+            assert cell["non_conservative"][k] == count, (key, k + 1, cell, count)
+    for k, s in enumerate(study["shares"]):
+        assert s["non_conservative"] == sum(m["non_conservative"][k] for m in study["map"]), (key, s)
+assert robust["censored"] == sum(m["censored"] for m in robust["map"])
+for f, r in zip(e["shares"], robust["shares"]):
+    assert f["non_conservative"] >= r["non_conservative"], (f, r)
+    differ += f["non_conservative"] > r["non_conservative"]
+assert differ > 0, "the premise: the two capacities give other verdicts on these records"
+# Both bootstraps from one seed: the same draws of the 3 records.
+for study in (e, robust):
+    counts = [r["non_conservative"] for r in study["by_record"]]
+    rng, boot = GslMt19937(11), [[] for _ in range(11)]
+    for _ in range(300):
+        drawn = [counts[rng.uniform_int(3)] for _ in range(3)]
+        for k in range(11):
+            boot[k].append(sum(c[k] for c in drawn) / 18)
+    for k, s in enumerate(study["shares"]):
+        want = [percentile(boot[k], 0.05), percentile(boot[k], 0.95)]
+        assert all(abs(a - b) <= 1e-15 for a, b in zip(s["bootstrap"], want)), (s, want)
+PY
+then echo "ok: refine json"; else echo "FAIL: refine json"; fail=1; fi
+
 # CSV: one row per block, the notes naming model, solver, inputs, grids and the rule.
 "${run[@]}" "${small[@]}" --output "$tmp/m.csv" --bootstrap 50 --seed 2 >/dev/null
 for note in "# command: rocking eq27" "# model: linearised" "# solver: exact" "# inputs: $tmp/sine0.7.txt" \

@@ -113,6 +113,12 @@ done
 mpi 3 eq27 "${study[@]}" --jobs 2 --output np3.csv >np3.txt 2>/dev/null
 same "eq27 text on 3 ranks of 2 threads = one process" np3.txt ref.txt
 same "eq27 CSV on 3 ranks of 2 threads = one process" np3.csv ref.csv
+# --method refine: each row carries both capacities, the same bytes on ranks.
+"$rocking" eq27 "${study[@]}" --method refine --width 1e-3 --json >refine.json
+mpi 2 eq27 "${study[@]}" --method refine --width 1e-3 --json >np2r.json 2>/dev/null
+same "eq27 --method refine JSON on 2 ranks = one process" np2r.json refine.json
+if grep -qF '"first_robust_collapse": {' refine.json; then echo "ok: eq27 --method refine has both capacities"
+else echo "FAIL: eq27 --method refine without the robust collapse's shares"; fail=1; fi
 mpi 2 eq27 sine1.txt "${plain[@]}" --alpha 0.1,0.1 >/dev/null 2>err.txt
 code=$?
 if [[ $code == 2 && $(said err.txt "--alpha: 0.1 is given twice") == 1 ]]; then echo "ok: eq27's bad argument under mpirun, exit 2, said once"

@@ -1,7 +1,7 @@
 // The Python module's shared pieces: results, arrays, records, trains and the
 // options every area parses alike.  Each area is one file (qfactor.cpp,
-// records.cpp, dynamics.cpp, studies.cpp) over the library; module.cpp only
-// calls their init functions.  The names and units are the command line's
+// records.cpp, dynamics.cpp, studies.cpp, eq27.cpp, batch.cpp) over the
+// library; module.cpp only calls their init functions.  The names and units are the command line's
 // (src/cli/*.cpp), so that a result equals the same command's --json.
 #pragma once
 
@@ -189,6 +189,7 @@ void init_qfactor(py::module_& m);
 void init_records(py::module_& m);
 void init_dynamics(py::module_& m);
 void init_studies(py::module_& m);
+void init_eq27(py::module_& m);
 void init_batch(py::module_& m);
 
 }  // namespace rocking::python

@@ -22,6 +22,7 @@ RuntimeError, with the library's message.  Long calls release the GIL.  docs/pyt
     init_records(m);
     init_dynamics(m);
     init_studies(m);
+    init_eq27(m);
     init_batch(m);
     // For the tests (test_hostile.py): an error inside GSL during a call of the module, which no
     // argument of the public functions is known to reach (GSL's gamma inverse at the shape 1e7).

@@ -1,4 +1,4 @@
-// The studies over many runs (rocking spectrum, fragility, eq27):
+// The studies over many runs (rocking spectrum, fragility; eq27 in eq27.cpp):
 // src/studies.  Each runs without the GIL, on `jobs` threads of the batch
 // engine; the results do not depend on them.
 #include <algorithm>
@@ -8,11 +8,11 @@
 #include "batch/pool.hpp"
 #include "common.hpp"
 #include "fragility_fits.hpp"
+#include "study_arguments.hpp"
 #include "dynamics/ground_input.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
 #include "studies/distinct_inputs.hpp"
-#include "studies/eq27_at_scale.hpp"
 #include "studies/ida.hpp"
 #include "studies/spectrum.hpp"
 #include "studies/search_alpha.hpp"
@@ -24,61 +24,7 @@ namespace {
 using studies::BlockFragility;
 using studies::Ida;
 
-std::string g7(double v) { return significant(v, 7); }
-
 py::object null_or(bool has, double v) { return has ? py::object(py::float_(v)) : py::object(py::none()); }
-
-// A list of numbers, or one number, each in (lo, hi): --alpha A[,A...], --p P[,P...].
-std::vector<double> values_in(const py::object& given, const std::string& what, double lo, double hi,
-                              const std::string& range, std::size_t most) {
-    std::vector<double> v;
-    const py::module_ np = py::module_::import("numpy");
-    const bool one = (PyFloat_Check(given.ptr()) || PyLong_Check(given.ptr()) || PyComplex_Check(given.ptr()) ||
-                      py::isinstance(given, np.attr("generic")) ||
-                      (py::isinstance<py::array>(given) && py::reinterpret_borrow<py::array>(given).ndim() == 0));
-    if (given.is_none() || PyBool_Check(given.ptr()) || py::isinstance(given, np.attr("bool_")) ||
-        py::isinstance<py::str>(given) || py::isinstance<py::bytes>(given) || (!one && !py::isinstance<py::iterable>(given)))
-        throw py::type_error(what + ": expected a number or a list of numbers, got " +
-                             std::string(py::str(py::type::of(given).attr("__name__"))));
-    if (one) v = {number(Real{given}, what)};  // a numpy scalar or a 0-d array is one number too
-    else v = real_vector(given, what);
-    if (v.empty() || v.size() > most) refuse(what + ": from 1 to " + std::to_string(most) + " values");
-    for (double x : v)
-        if (!(x > lo && x < hi)) refuse(what + ": each must be in " + range + " (got " + g7(x) + ")");
-    return v;
-}
-
-std::unique_ptr<dynamics::SampledInput> input_of(const records::Record& r) {
-    return std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name);
-}
-
-// How a study finds its set of collapse (issue 39), as the command line's
-// --method, --width and --robust-width (cli::method_options), in ln of the
-// study's parameter `unit` ("q" or "p").
-struct MethodChoice {
-    bool refine = false;
-    double width = 1e-5, robust_width = 5e-3;
-};
-
-MethodChoice method_argument(const Text& method_given, const std::optional<Real>& width_given,
-                             const std::optional<Real>& robust_width_given, const std::string& unit) {
-    MethodChoice m;
-    const std::string method = string_argument(method_given, "method");
-    if (method != "grid" && method != "refine") refuse("method: grid or refine (got '" + method + "')");
-    m.refine = method == "refine";
-    const std::optional<double> width = number(width_given, "width"), robust_width = number(robust_width_given, "robust_width");
-    if (width && !m.refine) refuse("width goes with method='refine'");
-    if (robust_width && !m.refine) refuse("robust_width goes with method='refine'");
-    if (width) {
-        if (!(*width >= 1e-7 && *width <= 1e-1)) refuse("width: must be in [1e-7, 0.1] (in ln " + unit + ")");
-        m.width = *width;
-    }
-    if (robust_width) {
-        if (!(*robust_width >= 1e-7 && *robust_width <= 1)) refuse("robust_width: must be in [1e-7, 1] (in ln " + unit + ")");
-        m.robust_width = *robust_width;
-    }
-    return m;
-}
 
 py::list bands_list(const std::vector<studies::Band>& bands) {
     py::list out;
@@ -249,22 +195,6 @@ py::object bracket(bool has, const studies::Bracket& b) {
     return std::move(d);
 }
 
-int bootstrap_argument(const std::optional<Whole>& bootstrap_given, const std::optional<Whole>& seed_given,
-                       std::uint64_t& seed_out) {
-    const std::optional<long long> bootstrap = whole(bootstrap_given, "bootstrap"), seed = whole(seed_given, "seed");
-    // Out of int's range, as just out of the callers' (which refuse it in their own words).
-    const long long b = bootstrap.value_or(0);
-    const int resamples = b < 0 ? -1 : b > 100000 ? 100001 : static_cast<int>(b);
-    if (seed && !bootstrap) refuse("seed goes with bootstrap");
-    if (resamples > 0 && !seed) refuse("bootstrap needs seed (the interval is reproducible only from a stated seed)");
-    if (seed) {
-        if (*seed < 1 || *seed > 4294967295LL)
-            refuse("seed: the seed must be a whole number from 1 to 4294967295 (got " + std::to_string(*seed) + ")");
-        seed_out = static_cast<std::uint64_t>(*seed);
-    }
-    return resamples;
-}
-
 
 // rocking fragility's refine note (src/cli/fragility.cpp), word for word.
 std::string refine_note(const studies::FragilityStudyOptions& o) {
@@ -326,10 +256,8 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     if (points_given < 2 || points_given > 10000) refuse("points: must be between 2 and 10000");
     o.ida.points = static_cast<int>(points_given);
     // As rocking fragility's --method, --width and --robust-width.
-    const MethodChoice m = method_argument(method_given, width_given, robust_width_given, "q");
-    if (m.refine) o.ida.method = studies::IdaOptions::Method::refine;
-    o.ida.width = m.width;
-    o.ida.robust_width = m.robust_width;
+    method_argument(method_given, width_given, robust_width_given, o.ida);
+    const bool refine = o.ida.method == studies::IdaOptions::Method::refine;
     o.resamples = bootstrap_argument(bootstrap, seed, o.seed);
     if (o.resamples < 0 || o.resamples > 100000) refuse("bootstrap: must be between 0 and 100000");
     o.threads = jobs_argument(jobs);
@@ -367,7 +295,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     grid["note"] = o.ida.describe_grid() +
                    "; q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold; " +
                    o.ida.describe_checks();
-    if (m.refine) {
+    if (refine) {
         grid["method"] = "refine";
         grid["width"] = o.ida.width;
         grid["robust_width"] = o.ida.robust_width;
@@ -409,7 +337,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
                 intervals.append(i);
             }
             d["intervals"] = intervals;
-            if (m.refine) add_refine_fields(d, ida);
+            if (refine) add_refine_fields(d, ida);
             rows.append(d);
         }
         b["records"] = rows;
@@ -425,147 +353,6 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         blocks_out.append(b);
     }
     out["blocks"] = blocks_out;
-    return out;
-}
-
-// ---- rocking eq27 ----
-
-using studies::kEq27NoBootstrap;
-using studies::kEq27Verdict;
-using studies::kEq27WilsonNote;
-
-py::array_t<int> counts(const std::array<int, studies::kHalfPeriods>& c) {
-    py::array_t<int> a(studies::kHalfPeriods);
-    for (int k = 0; k < studies::kHalfPeriods; ++k) a.mutable_at(k) = c[k];
-    return a;
-}
-
-py::dict eq27(const py::object& records_given, const py::object& alpha, const std::optional<Real>& p_min_given,
-              const std::optional<Real>& p_max_given,
-              const Whole& p_points_given, const Real& q_max_given, const std::optional<Whole>& bootstrap,
-              const std::optional<Whole>& seed, const std::optional<Whole>& jobs, const py::kwargs& extra) {
-    no_other_keywords(extra, "eq27", "eq27");
-    const std::optional<double> p_min = number(p_min_given, "p_min"), p_max = number(p_max_given, "p_max");
-    const long long p_points_long = whole(p_points_given, "p_points");
-    const double q_max = number(q_max_given, "q_max");
-    studies::Eq27Options o;
-    if (!alpha.is_none()) o.grid.alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 50);
-    auto bounded = [](double v, const std::string& what, double lo, double hi, const std::string& range) {
-        if (!(v > lo && v <= hi)) refuse(what + ": must be in " + range + " (got " + g7(v) + ")");
-        return v;
-    };
-    // As rocking eq27's --p-min, --p-max: the grid's defaults when not given, and one
-    // p_points is p_min alone unless p_max is given too (then it must be p_min).
-    if (p_min) o.grid.p_min = bounded(*p_min, "p_min", 0.01, 1000, "(0.01, 1000] rad/s");
-    if (p_max) o.grid.p_max = bounded(*p_max, "p_max", 0.01, 1000, "(0.01, 1000] rad/s");
-    if (p_points_long < 1 || p_points_long > 1000) refuse("p_points: must be between 1 and 1000");
-    o.grid.p_points = static_cast<int>(p_points_long);
-    if (o.grid.p_points == 1 && p_min && !p_max) o.grid.p_max = o.grid.p_min;
-    o.grid.check();  // a repeated alpha or p, one p with a range: ValueError in the keywords' names
-    o.ida.q_max = bounded(q_max, "q_max", o.ida.q_min, 1e4, "(1, 10000]");
-    o.bootstrap.resamples = bootstrap_argument(bootstrap, seed, o.bootstrap.seed);
-    if (o.bootstrap.resamples != 0 && (o.bootstrap.resamples < 2 || o.bootstrap.resamples > 100000))
-        refuse("bootstrap: must be 0 or between 2 and 100000");
-    o.threads = jobs_argument(jobs);
-    const std::vector<RecordPtr> recs = record_list(records_given, "records");
-    if (recs.size() > 1000) refuse("records: at most 1000");
-    std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
-    std::vector<studies::Eq27Record> rows;
-    studies::Eq27Study s;
-    {
-        py::gil_scoped_release unlocked;  // the half-periods' CWT too
-        std::vector<std::string> labels;
-        std::vector<const dynamics::SampledInput*> given;
-        for (const RecordPtr& r : recs) {
-            labels.push_back(label_of(*r));
-            inputs.push_back(input_of(*r));
-            refuse_unresolvable_run(o.grid.p_max, inputs.back()->t_end(), "p_max with record " + labels.back());
-            const records::HalfPeriods h = checked_half_periods(*r);
-            if (!(inputs.back()->peak() > 0)) throw std::runtime_error(labels.back() + ": the record never moves (PGA 0)");
-            rows.push_back({inputs.back().get(), h.to});
-            given.push_back(inputs.back().get());
-        }
-        studies::refuse_repeated_records(labels, given);  // as rocking eq27: its cases would count twice
-        s = studies::eq27_at_scale(rows, o);
-    }
-    const bool boot = s.bootstrap.resamples > 0;
-    py::dict out = result();
-    out["model"] = o.ida.describe_model();
-    out["ida"] = o.ida.describe_grid();
-    out["q_max"] = o.ida.q_max;
-    out["blocks"] = o.grid.describe();
-    out["verdict"] = kEq27Verdict;
-    py::dict wilson = result();
-    wilson["level"] = s.level;
-    wilson["note"] = kEq27WilsonNote;
-    out["wilson"] = wilson;
-    out["bootstrap_run"] = boot;
-    if (boot) {
-        py::dict b = result();
-        b["over"] = "records";
-        b["resamples"] = s.bootstrap.resamples;
-        b["seed"] = s.bootstrap.seed;
-        b["level"] = s.bootstrap.level;
-        out["bootstrap"] = b;
-    } else {
-        out["bootstrap"] = py::none();
-        out["bootstrap_note"] = kEq27NoBootstrap;
-    }
-    out["records"] = s.records;
-    py::list files;
-    for (const RecordPtr& r : recs) files.append(file_of(*r));
-    out["files"] = files;
-    out["cases"] = s.cases.size();
-    out["censored"] = s.censored;
-    py::list shares;
-    for (int k = 0; k < studies::kHalfPeriods; ++k) {
-        const studies::Eq27Share& sh = s.shares[k];
-        int blocks_with_any = 0;
-        for (const studies::Eq27Cell& c : s.map) blocks_with_any += c.non_conservative[k] > 0;
-        py::dict d = result();
-        d["k"] = k + 1;
-        d["non_conservative"] = sh.non_conservative;
-        d["cases"] = sh.cases;
-        d["share"] = sh.share;
-        d["bootstrap"] = boot ? py::object(range_array(sh.bootstrap)) : py::object(py::none());
-        d["wilson"] = to_array({sh.wilson.lo, sh.wilson.hi});
-        d["records_with_any"] = sh.records_with_any;
-        d["records"] = sh.records;
-        d["blocks_with_any"] = blocks_with_any;
-        shares.append(d);
-    }
-    out["shares"] = shares;
-    std::vector<std::array<int, studies::kHalfPeriods>> by_record(s.records, std::array<int, studies::kHalfPeriods>{});
-    for (const studies::Eq27Case& c : s.cases)
-        for (int k = 0; k < studies::kHalfPeriods; ++k) by_record[c.record][k] += c.non_conservative[k];
-    py::list records_out;
-    for (std::size_t r = 0; r < by_record.size(); ++r) {
-        py::dict d = result();
-        d["file"] = file_of(*recs[r]);
-        d["non_conservative"] = counts(by_record[r]);
-        records_out.append(d);
-    }
-    out["by_record"] = records_out;
-    py::list map;
-    for (const studies::Eq27Cell& c : s.map) {
-        py::dict d = result();
-        d["alpha"] = c.block.alpha;
-        d["p"] = c.block.p;
-        d["records"] = c.records;
-        d["censored"] = c.censored;
-        d["non_conservative"] = counts(c.non_conservative);
-        map.append(d);
-    }
-    out["map"] = map;
-    // Each case's first collapse q (or q_max, censored), record-major, for a plot of one's own.
-    const std::size_t n = s.cases.size();
-    py::array_t<double> q(n);
-    py::array_t<bool> collapsed(n);
-    for (std::size_t k = 0; k < n; ++k) q.mutable_at(k) = s.cases[k].point.q, collapsed.mutable_at(k) = s.cases[k].point.collapsed;
-    py::dict cases = result();
-    cases["q"] = q;
-    cases["collapsed"] = collapsed;
-    out["case_points"] = cases;
     return out;
 }
 
@@ -596,15 +383,6 @@ with_margins and unguaranteed_from, as --method refine does; the block's fit tak
 and each block's fits (first_overturning, first_robust_collapse, stripes: fit and no_fit) and stripes
 (arrays q, from, to, share) fit the capacity three ways.
 An alpha, a p or a record (by its step and samples) given twice is refused.  Releases the GIL.)");
-    m.def("eq27", gsl_checked(&eq27), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = py::none(),
-          "p_max"_a = py::none(),
-          "p_points"_a = 10, "q_max"_a = 20.0, "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
-          R"(`rocking eq27 --json`: each record's first collapse q on every block of the grid against eq. 27
-at x = p to_k; per to_k the share of non-conservative cases with its Wilson and bootstrap
-intervals, by record and the map over blocks.  p: p_points log-spaced from p_min (default 0.5) to
-p_max (default 10); p_points=1 is p_min alone (p_max, if given, must equal it).  An alpha or a
-record given twice is refused (its cases would count twice), as is a p_max times a record's
-duration the solvers cannot follow.  Releases the GIL.)");
 }
 
 }  // namespace rocking::python

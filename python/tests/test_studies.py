@@ -148,6 +148,35 @@ def test_spectrum_refine_is_rocking_spectrum_refine(tmp_path):
         rq.spectrum(record, alpha=0.1, method="refine", robust_width=2.0)
 
 
+def test_eq27_refine_is_rocking_eq27_refine(synthetic):
+    """method="refine" (issue 39): every field of `rocking eq27 --method refine --json`, the shares
+    under the first overturning and, in first_robust_collapse, under the first robust collapse."""
+    words = ["--alpha", "0.1,0.2", "--p-min", 1, "--p-max", 4, "--p-points", 2, "--q-max", 8, "--unit", "m/s2",
+             "--method", "refine", "--width", 1e-3, "--robust-width", 1e-2]
+    records = [rq.read_record(p, unit="m/s2") for p in synthetic]
+    kwargs = dict(alpha=[0.1, 0.2], p_min=1, p_max=4, p_points=2, q_max=8, method="refine", width=1e-3,
+                  robust_width=1e-2)
+    expected = cli("eq27", *synthetic, *words, "--bootstrap", 30, "--seed", 2)
+    for jobs in (1, 2):
+        got = rq.eq27(records, bootstrap=30, seed=2, jobs=jobs, **kwargs)
+        assert_same(got, expected)
+    assert expected["capacity"] == "first_overturning" and expected["robust_width"] == 0.01
+    robust = got.first_robust_collapse
+    assert len(robust.case_points["q"]) == expected["cases"]
+    # Case by case the first overturning is at or below the robust collapse, and below it somewhere.
+    first_q, robust_q = got.case_points["q"], robust.case_points["q"]
+    assert all(f <= r for f, r in zip(first_q, robust_q)) and any(f < r for f, r in zip(first_q, robust_q))
+    # The grid method's result has no capacities, as the command's.
+    plain = rq.eq27(records, jobs=1, **dict(kwargs, method="grid", width=None, robust_width=None))
+    assert "first_robust_collapse" not in plain and "capacity" not in plain
+    with pytest.raises(ValueError, match="^width goes with method='refine'"):
+        rq.eq27(records, width=1e-3)
+    with pytest.raises(ValueError, match=r"^method: grid or refine \(got 'dense'\)"):
+        rq.eq27(records, method="dense")
+    with pytest.raises(ValueError, match=r"^robust_width: must be in \[1e-7, 1\]"):
+        rq.eq27(records, method="refine", robust_width=2.0)
+
+
 def test_study_arguments_are_checked():
     r = rq.record_synth(pulse=(0.6, 0.8, 0.4, 2.2), dt=0.01, duration=12)
     with pytest.raises(ValueError, match=r"^alpha: each must be in \(0, 0.7\)"):

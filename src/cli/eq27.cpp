@@ -6,7 +6,8 @@
 // map over (alpha, p) as CSV, as text or JSON.  Each (block, record) IDA is
 // a job of the batch engine, fragility's (jobs/fragility_plan.hpp), so that
 // the study runs on threads or on the ranks of an MPI run alike, and rank 0
-// counts the cases from the rows.
+// counts the cases from the rows.  With --method refine (issue 39) the shares
+// under each capacity: the first overturning and the first robust collapse.
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -37,9 +38,13 @@ using studies::kHalfPeriods;
 
 const char* kUsage =
     "usage: rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q] "
-    "[--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] [--output CSV] [--json] [--quiet]";
+    "[--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] "
+    "[--output CSV] [--json] [--quiet]";
 
+using studies::Eq27ByCapacity;
+using studies::kEq27FirstOverturningNote;
 using studies::kEq27NoBootstrap;
+using studies::kEq27RobustCollapseNote;
 using studies::kEq27Verdict;
 using studies::kEq27WilsonNote;
 
@@ -92,6 +97,11 @@ studies::Eq27Options options_from(const Args& a) {
     o.grid = grid_from(a);
     // Beyond 1e4 the scaled record reaches thousands of g: no physical input.
     o.ida.q_max = bounded(a, "--q-max", o.ida.q_max, o.ida.q_min, 1e4, "(1, 10000]");
+    // As rocking fragility's --method, --width and --robust-width (in ln q).
+    const MethodChoice m = method_options(a, "q");
+    if (m.refine) o.ida.method = studies::IdaOptions::Method::refine;
+    o.ida.width = m.width;
+    o.ida.robust_width = m.robust_width;
     // As rocking fragility's: no bootstrap unless asked, and then from a stated seed.
     const Bootstrap b = bootstrap_options(a);
     o.bootstrap.resamples = b.resamples;
@@ -116,7 +126,8 @@ Command command_from(int argc, char** argv, bool mpi) {
     int first = 0;
     c.files = file_arguments(count, args.data(), first, kUsage);
     c.args = parse(count, args.data(), first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
-                                               "--seed", "--unit", "--dt", "--jobs", "--output"});
+                                               "--seed", "--unit", "--dt", "--jobs", "--output",
+                                               "--method", "--width", "--robust-width"});
     c.study = options_from(c.args);
     c.blocks = c.study.grid.blocks();
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
@@ -148,11 +159,12 @@ Loaded load(const std::vector<std::string>& files, const Args& a, double p_max) 
     return l;
 }
 
-// The first collapse q of every record on every block, points[record][block]:
-// each IDA a job of the engine (job j: block j / records, record j % records).
+// The capacities of every record on every block, [record][block] (its first
+// overturning and first robust collapse, from the row of its IDA): each IDA
+// a job of the engine (job j: block j / records, record j % records).
 // Filled on rank 0, or without ranks; not on the other ranks.  A failed IDA's
 // error waits for the batch's end, as fragility's does.
-std::vector<std::vector<studies::IdaPoint>> collapse_points(Command& c, const Loaded& l, batch::Ranks* ranks) {
+std::vector<std::vector<studies::Eq27Capacities>> capacities(Command& c, const Loaded& l, batch::Ranks* ranks) {
     jobs::FragilityJobs jobs;
     for (const auto& input : l.inputs) jobs.inputs.push_back(input.get());
     jobs.blocks = c.blocks;
@@ -161,12 +173,12 @@ std::vector<std::vector<studies::IdaPoint>> collapse_points(Command& c, const Lo
                        std::to_string(c.blocks.size()) + " block(s)\n";
     const batch::BatchPlan plan = jobs::fragility_plan(jobs);
     const std::size_t n = c.files.size();
-    std::vector<std::vector<studies::IdaPoint>> points(n, std::vector<studies::IdaPoint>(c.blocks.size()));
+    std::vector<std::vector<studies::Eq27Capacities>> points(n, std::vector<studies::Eq27Capacities>(c.blocks.size()));
     std::exception_ptr first_error;
     c.engine.collect = [&](std::size_t j, const std::string& row) {
         if (first_error) return;
         try {
-            points[j % n][j / n] = jobs::ida_from_row(row, j, jobs).point;
+            points[j % n][j / n] = studies::capacities_of(jobs::ida_from_row(row, j, jobs));
         } catch (const std::exception&) {
             first_error = std::current_exception();
         }
@@ -191,6 +203,17 @@ int blocks_hit(const Eq27Study& s, int k) {
 }
 
 bool bootstrapped(const Eq27Study& s) { return s.bootstrap.resamples > 0; }
+
+bool refined(const studies::Eq27Options& o) { return o.ida.method == studies::IdaOptions::Method::refine; }
+
+// A capacity as the output names it (studies/eq27_at_scale.hpp, Eq27Capacities).
+struct Capacity {
+    const char* key;       // in the JSON
+    const char* note;      // what it is, and what its share means
+    const char* censored;  // what a censored case lacks up to q_max
+};
+const Capacity kFirstOverturning{"first_overturning", kEq27FirstOverturningNote, "no overturning"};
+const Capacity kRobustCollapse{"first_robust_collapse", kEq27RobustCollapseNote, "no robust collapse"};
 
 std::string bootstrap_label(const Eq27Study& s) {
     return g7(100 * s.bootstrap.level) + " % bootstrap over records (" + std::to_string(s.bootstrap.resamples) +
@@ -218,18 +241,13 @@ std::string share_text(const Eq27Study& s, int k) {
            "any block " + records_text(sh);
 }
 
-std::string censored_text(const Eq27Study& s, double q_max) {
-    return std::to_string(s.censored) + " of " + std::to_string(s.cases.size()) +
-           " cases censored (no overturning up to q_max = " + g7(q_max) + "), counted as conservative";
+std::string censored_text(const Eq27Study& s, double q_max, const Capacity& c = kFirstOverturning) {
+    return std::to_string(s.censored) + " of " + std::to_string(s.cases.size()) + " cases censored (" + c.censored +
+           " up to q_max = " + g7(q_max) + "), counted as conservative";
 }
 
-void print_text(const std::vector<std::string>& files, const studies::Eq27Options& o, const Eq27Study& s) {
-    std::printf("eq. 27 at scale: %zu record(s) x %zu block(s)\n  blocks: %s\n  model: %s\n  IDA: %s\n  %s\n  %s\n",
-                files.size(), s.blocks.size(), o.grid.describe().c_str(), o.ida.describe_model().c_str(),
-                o.ida.describe_grid().c_str(), kEq27Verdict, censored_text(s, o.ida.q_max).c_str());
-    if (bootstrapped(s)) std::printf("  interval: %s\n", bootstrap_label(s).c_str());
-    else std::printf("  %s\n", kEq27NoBootstrap);
-    std::printf("  Wilson: %s\n", kEq27WilsonNote);
+// The shares per to_k, with their intervals, and the definitions conservative everywhere.
+void print_shares(const Eq27Study& s) {
     std::printf("  to_k   non-conservative = share   %s%g %% Wilson (independent cases)   records with any   blocks "
                 "with any\n", bootstrapped(s) ? (g7(100 * s.bootstrap.level) + " % bootstrap   ").c_str() : "",
                 100 * s.level);
@@ -243,26 +261,36 @@ void print_text(const std::vector<std::string>& files, const studies::Eq27Option
     std::printf("  conservative on every block and record: %s\n", conservative_list(s).c_str());
 }
 
+void print_text(const std::vector<std::string>& files, const studies::Eq27Options& o, const Eq27ByCapacity& by) {
+    const Eq27Study& s = by.first_overturning;
+    std::printf("eq. 27 at scale: %zu record(s) x %zu block(s)\n  blocks: %s\n  model: %s\n  IDA: %s\n", files.size(),
+                s.blocks.size(), o.grid.describe().c_str(), o.ida.describe_model().c_str(), o.ida.describe_grid().c_str());
+    if (refined(o)) std::printf("  refine: %s\n", studies::eq27_refine_note(o.ida).c_str());
+    std::printf("  %s\n", kEq27Verdict);
+    if (!refined(o)) std::printf("  %s\n", censored_text(s, o.ida.q_max).c_str());
+    if (bootstrapped(s)) std::printf("  interval: %s\n", bootstrap_label(s).c_str());
+    else std::printf("  %s\n", kEq27NoBootstrap);
+    std::printf("  Wilson: %s\n", kEq27WilsonNote);
+    if (!refined(o)) {
+        print_shares(s);
+        return;
+    }
+    for (const auto& [study, c] : {std::pair{&s, &kFirstOverturning}, std::pair{&by.first_robust_collapse, &kRobustCollapse}}) {
+        std::printf("capacity: %s\n  %s\n", c->note, censored_text(*study, o.ida.q_max, *c).c_str());
+        print_shares(*study);
+    }
+}
+
 std::string counts_json(const std::array<int, kHalfPeriods>& counts) {
     std::string text = "[";
     for (int k = 0; k < kHalfPeriods; ++k) text += (k ? ", " : "") + std::to_string(counts[k]);
     return text + "]";
 }
 
-void print_json(const std::vector<std::string>& files, const studies::Eq27Options& o, const Eq27Study& s) {
+// A study's censored count, shares, each record's counts and the map, as JSON members.
+std::string study_json(const std::vector<std::string>& files, const Eq27Study& s) {
     std::ostringstream js;
-    js << "{\"model\": " << json_string(o.ida.describe_model()) << ", \"ida\": " << json_string(o.ida.describe_grid())
-       << ", \"q_max\": " << json_number(o.ida.q_max) << ", \"blocks\": " << json_string(o.grid.describe())
-       << ", \"verdict\": " << json_string(kEq27Verdict) << ", \"wilson\": {\"level\": " << json_number(s.level)
-       << ", \"note\": " << json_string(kEq27WilsonNote) << "}, \"bootstrap_run\": " << (bootstrapped(s) ? "true" : "false")
-       << ", \"bootstrap\": ";
-    if (bootstrapped(s))
-        js << "{\"over\": \"records\", \"resamples\": " << s.bootstrap.resamples << ", \"seed\": " << s.bootstrap.seed
-           << ", \"level\": " << json_number(s.bootstrap.level) << "}";
-    else js << "null, \"bootstrap_note\": " << json_string(kEq27NoBootstrap);
-    js << ", \"records\": " << s.records << ", \"files\": [";
-    for (std::size_t i = 0; i < files.size(); ++i) js << (i ? ", " : "") << json_string(files[i]);
-    js << "], \"cases\": " << s.cases.size() << ", \"censored\": " << s.censored << ", \"shares\": [";
+    js << "\"censored\": " << s.censored << ", \"shares\": [";
     for (int k = 0; k < kHalfPeriods; ++k) {
         const studies::Eq27Share& sh = s.shares[k];
         js << (k ? ", " : "") << "{\"k\": " << k + 1 << ", \"non_conservative\": " << sh.non_conservative
@@ -288,14 +316,53 @@ void print_json(const std::vector<std::string>& files, const studies::Eq27Option
            << ", \"records\": " << c.records << ", \"censored\": " << c.censored
            << ", \"non_conservative\": " << counts_json(c.non_conservative) << "}";
     }
-    js << "]}\n";
+    js << "]";
+    return js.str();
+}
+
+void print_json(const std::vector<std::string>& files, const studies::Eq27Options& o, const Eq27ByCapacity& by) {
+    const Eq27Study& s = by.first_overturning;
+    std::ostringstream js;
+    js << "{\"model\": " << json_string(o.ida.describe_model()) << ", \"ida\": " << json_string(o.ida.describe_grid())
+       << ", \"q_max\": " << json_number(o.ida.q_max);
+    if (refined(o))
+        js << ", \"method\": \"refine\", \"width\": " << json_number(o.ida.width)
+           << ", \"robust_width\": " << json_number(o.ida.robust_width)
+           << ", \"refine_note\": " << json_string(studies::eq27_refine_note(o.ida));
+    js << ", \"blocks\": " << json_string(o.grid.describe())
+       << ", \"verdict\": " << json_string(kEq27Verdict) << ", \"wilson\": {\"level\": " << json_number(s.level)
+       << ", \"note\": " << json_string(kEq27WilsonNote) << "}, \"bootstrap_run\": " << (bootstrapped(s) ? "true" : "false")
+       << ", \"bootstrap\": ";
+    if (bootstrapped(s))
+        js << "{\"over\": \"records\", \"resamples\": " << s.bootstrap.resamples << ", \"seed\": " << s.bootstrap.seed
+           << ", \"level\": " << json_number(s.bootstrap.level) << "}";
+    else js << "null, \"bootstrap_note\": " << json_string(kEq27NoBootstrap);
+    js << ", \"records\": " << s.records << ", \"files\": [";
+    for (std::size_t i = 0; i < files.size(); ++i) js << (i ? ", " : "") << json_string(files[i]);
+    js << "], \"cases\": " << s.cases.size() << ", ";
+    // The refine method: the members as the grid's under the first overturning
+    // (the IDA's point, either method), the robust collapse's in an object.
+    if (refined(o))
+        js << "\"capacity\": " << json_string(kFirstOverturning.key)
+           << ", \"capacity_note\": " << json_string(kFirstOverturning.note) << ", ";
+    js << study_json(files, s);
+    if (refined(o))
+        js << ", " << json_string(kRobustCollapse.key) << ": {\"capacity_note\": " << json_string(kRobustCollapse.note)
+           << ", " << study_json(files, by.first_robust_collapse) << "}";
+    js << "}\n";
     std::cout << js.str();
 }
 
 void write_csv(const std::string& csv, const std::vector<std::string>& files, const studies::Eq27Options& o,
-               const Eq27Study& s) {
+               const Eq27ByCapacity& by) {
+    const Eq27Study& s = by.first_overturning;
+    const Eq27Study& robust = by.first_robust_collapse;
     std::vector<std::string> columns = {"alpha", "p", "records", "censored"};
     for (int k = 1; k <= kHalfPeriods; ++k) columns.push_back("nc_to" + std::to_string(k));
+    if (refined(o)) {
+        columns.push_back("robust_censored");
+        for (int k = 1; k <= kHalfPeriods; ++k) columns.push_back("robust_nc_to" + std::to_string(k));
+    }
     harness::Table t(columns);
     t.note("command", "rocking eq27");
     t.note("model", o.ida.describe_model());
@@ -305,15 +372,30 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
     t.note("inputs", inputs);
     t.note("grid", o.grid.describe());
     t.note("ida", o.ida.describe_grid());
+    if (refined(o)) {
+        t.note("refine", studies::eq27_refine_note(o.ida));
+        t.note("capacity", kFirstOverturning.note);
+        t.note("robust capacity", kRobustCollapse.note);
+    }
     t.note("verdict", kEq27Verdict);
     t.note("censored", censored_text(s, o.ida.q_max));
+    if (refined(o)) t.note("robust censored", censored_text(robust, o.ida.q_max, kRobustCollapse));
     t.note("intervals", (bootstrapped(s) ? bootstrap_label(s) : std::string(kEq27NoBootstrap)) + "; " + kEq27WilsonNote);
     for (int k = 0; k < kHalfPeriods; ++k) t.note("share to_" + std::to_string(k + 1), share_text(s, k));
-    t.note("columns", "per block (alpha, p rad/s): records, those censored, and nc_toK the records non-conservative "
-                      "for to_K");
-    for (const studies::Eq27Cell& c : s.map) {
+    if (refined(o))
+        for (int k = 0; k < kHalfPeriods; ++k) t.note("robust share to_" + std::to_string(k + 1), share_text(robust, k));
+    t.note("columns", std::string("per block (alpha, p rad/s): records, those censored, and nc_toK the records "
+                                  "non-conservative for to_K") +
+                          (refined(o) ? " (under the first overturning); robust_censored and robust_nc_toK the same "
+                                        "under the first robust collapse"
+                                      : ""));
+    for (std::size_t b = 0; b < s.map.size(); ++b) {
+        const studies::Eq27Cell& c = s.map[b];
         t.row().add(c.block.alpha).add(c.block.p).add(c.records).add(c.censored);
         for (int k = 0; k < kHalfPeriods; ++k) t.add(c.non_conservative[k]);
+        if (!refined(o)) continue;
+        t.add(robust.map[b].censored);
+        for (int k = 0; k < kHalfPeriods; ++k) t.add(robust.map[b].non_conservative[k]);
     }
     write_output(t, csv);
 }
@@ -336,10 +418,10 @@ int cmd_eq27(int argc, char** argv) {
         failure = std::current_exception();
     }
     if (const int status = agree_on_setup(ranks.get(), failure, "rocking eq27")) return status;
-    const auto points = collapse_points(c, l, ranks.get());
+    const auto points = capacities(c, l, ranks.get());
     if (ranks && ranks->rank() != 0) return 0;
 
-    const Eq27Study s = studies::eq27_from_points(points, l.to, c.blocks, c.study.level, c.study.bootstrap);
+    const Eq27ByCapacity s = studies::eq27_by_capacity(points, l.to, c.blocks, c.study.level, c.study.bootstrap);
     const Args& a = c.args;
     if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, s);
     if (a.json) print_json(c.files, c.study, s);

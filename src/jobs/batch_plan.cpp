@@ -101,7 +101,8 @@ batch::BatchPlan make_plan(const batch::Manifest& manifest, RecordStore& records
     plan.digest = manifest.digest();
     for (const NamedRecord& r : named) plan.inputs.push_back({r.cell, records.pin(r.path)});
     plan.header = results_header(manifest.path(), manifest.size(), manifest.header());
-    plan.run = [&manifest, &records, columns](std::size_t i) {
+    const bool capacities = capacity_columns(manifest.header());
+    plan.run = [&manifest, &records, columns, capacities](std::size_t i) {
         const int line = manifest.line(i);
         std::vector<std::string> echo(columns->size());
         std::unique_ptr<Job> job;
@@ -110,10 +111,10 @@ batch::BatchPlan make_plan(const batch::Manifest& manifest, RecordStore& records
             for (std::size_t c = 0; c < echo.size() && c < cells.size(); ++c) echo[c] = cells[c];
             job = std::make_unique<Job>(parse_job(*columns, cells, manifest.folder()));
             const Figures figures = run_job(*job, records);
-            return batch::JobRow{result_row(line, echo, job.get(), &figures, ""), false};
+            return batch::JobRow{result_row(line, echo, job.get(), &figures, "", capacities), false};
         } catch (const std::exception& e) {
             const std::string error = "manifest line " + std::to_string(line) + ": " + e.what() + where_looked(job.get(), manifest);
-            return batch::JobRow{result_row(line, echo, job.get(), nullptr, error), true};
+            return batch::JobRow{result_row(line, echo, job.get(), nullptr, error, capacities), true};
         }
     };
     return plan;

@@ -27,7 +27,7 @@ const std::vector<std::string>& manifest_columns() {
     static const std::vector<std::string> names = {
         "id",   "kind",        "record",      "unit",   "record_dt", "alpha",     "p",      "height",
         "half_height", "scaling", "model", "solver", "rtol",      "atol",      "restitution", "criterion",
-        "q_max", "points",     "p_min",       "p_max"};
+        "q_max", "points",     "p_min",       "p_max",  "method",    "width",     "robust_width"};
     return names;
 }
 
@@ -101,8 +101,9 @@ std::string g(double v) {
 const std::set<std::string>& own_columns(Kind kind) {
     static const std::set<std::string> simulate = {"p", "height", "half_height", "scaling"};
     static const std::set<std::string> collapse = {"scaling"};
-    static const std::set<std::string> ida = {"p", "height", "half_height", "q_max", "points"};
-    static const std::set<std::string> spectrum = {"scaling", "points", "p_min", "p_max"};
+    static const std::set<std::string> ida = {"p", "height", "half_height", "q_max", "points", "method", "width",
+                                              "robust_width"};
+    static const std::set<std::string> spectrum = {"scaling", "points", "p_min", "p_max", "method", "width", "robust_width"};
     switch (kind) {
         case Kind::simulate: return simulate;
         case Kind::collapse: return collapse;
@@ -117,6 +118,9 @@ const char* why_not(Kind kind, const std::string& column) {
     if ((column == "p" || column == "height" || column == "half_height") &&
         (kind == Kind::collapse || kind == Kind::spectrum))
         return "it searches p";
+    if ((column == "method" || column == "width" || column == "robust_width") &&
+        (kind == Kind::simulate || kind == Kind::collapse))
+        return "the method of an IDA or a spectrum";
     return "not one of its columns";
 }
 
@@ -231,6 +235,28 @@ void model_from(const Columns& c, const std::vector<std::string>& row, Job& job)
     }
 }
 
+// method, width and robust_width: rocking fragility's --method, --width and
+// --robust-width, the same ranges, in ln q for an IDA and ln p for a spectrum.
+void method_from(const Columns& c, const std::vector<std::string>& row, Job& job) {
+    const std::string& method = c.cell(row, "method");
+    if (!method.empty() && method != "grid" && method != "refine") bad("method", "grid or refine (got '" + method + "')");
+    job.refine = method == "refine";
+    for (const char* column : {"width", "robust_width"})
+        if (!c.cell(row, column).empty() && !job.refine)
+            bad(column, "goes with method refine (the grid method has no " + std::string(column) + ")");
+    const std::string in = job.kind == Kind::ida ? " in ln q" : " in ln p";
+    const std::string &w = c.cell(row, "width"), &r = c.cell(row, "robust_width");
+    if (!w.empty()) {
+        job.width = number("width", w);
+        if (!(job.width >= 1e-7 && job.width <= 0.1)) bad("width", "must be in [1e-7, 0.1]" + in + " (got " + w + ")");
+    }
+    if (!r.empty()) {
+        job.robust_width = number("robust_width", r);
+        if (!(job.robust_width >= 1e-7 && job.robust_width <= 1))
+            bad("robust_width", "must be in [1e-7, 1]" + in + " (got " + r + ")");
+    }
+}
+
 }  // namespace
 
 Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::string& folder) {
@@ -278,6 +304,7 @@ Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::
         if (!(job.p_max > job.p_min)) bad("p_max", "must be above p_min (" + g(job.p_min) + " rad/s)");
         if (!hi.empty()) job.p_column = "p_max";
     }
+    if (job.kind == Kind::ida || job.kind == Kind::spectrum) method_from(c, row, job);
     return job;
 }
 

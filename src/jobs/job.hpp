@@ -1,6 +1,6 @@
 // A job of a batch manifest, typed: which study (simulate, collapse, ida,
-// spectrum), on which record, block, scaling, model, solver, restitution and
-// criterion.  parse_job() reads one manifest row into a job, filling what the
+// spectrum), on which record, block, scaling, model, solver, restitution,
+// criterion and method (grid or refine).  parse_job() reads one manifest row into a job, filling what the
 // row leaves empty with the defaults of the command that runs the same study
 // alone (rocking simulate, collapse, fragility, spectrum); the columns, their
 // defaults and which kinds take them: docs/batch.md.
@@ -69,6 +69,12 @@ struct Job {
     double q_max = 20;                     // ida
     int points = 0;                        // ida (q) and spectrum (p): the grid's points
     double p_min = 0.3, p_max = 30;        // spectrum, rad/s
+    // ida and spectrum (issue 39): the grid method, or the refine method down
+    // to `width` in ln q (ln p); an interval wider than robust_width there is
+    // a robust collapse (both methods).  The defaults are IdaOptions' and
+    // SpectrumOptions'.
+    bool refine = false;
+    double width = 1e-5, robust_width = 5e-3;
 
     double restitution_factor() const;     // the one applied
     std::string solver_text() const;       // "exact", or "dopri5 rtol 1e-06 atol 1e-06 alpha"

@@ -5,12 +5,23 @@
 
 namespace rocking::jobs {
 
-const std::vector<std::string>& result_columns() {
+bool capacity_columns(const std::vector<std::string>& manifest_header) {
+    for (const std::string& c : manifest_header)
+        if (c == "method" || c == "width" || c == "robust_width") return true;
+    return false;
+}
+
+const std::vector<std::string>& result_columns(bool capacities) {
     static const std::vector<std::string> names = {
         "status",   "model_used", "solver_used", "restitution_used", "criterion_used", "p_used",
         "collapse", "max_theta",  "theta_tfin",  "t_overturn",       "impacts",        "p_collapse",
         "p_safe",   "q_collapse", "q_safe",      "intervals",        "simulations",    "error"};
-    return names;
+    static const std::vector<std::string> with_capacities = [] {
+        std::vector<std::string> n = names;
+        n.insert(n.end() - 1, {"robust_collapse", "q_robust", "p_robust", "bands"});
+        return n;
+    }();
+    return capacities ? with_capacities : names;
 }
 
 std::string results_header(const std::string& manifest_path, std::size_t jobs,
@@ -26,9 +37,16 @@ std::string results_header(const std::string& manifest_path, std::size_t jobs,
             "spectrum: p_collapse and p_safe (the lowest overturning interval's start and its safe end); ida: "
             "q_collapse and q_safe (the first collapse q = PGA/(alpha g) and its safe end), intervals, simulations; "
             "error (the manifest's line and the problem). See docs/batch.md\n";
+    const bool capacities = capacity_columns(manifest_header);
+    if (capacities)
+        text += "# with method, width or robust_width in the manifest, before error (ida and spectrum, either method): "
+                "q_collapse (ida) and p_collapse (spectrum) are the first overturning; robust_collapse (yes/no: an "
+                "interval of overturning wider than the robust width in ln q or ln p), q_robust (ida) or p_robust "
+                "(spectrum) its start, empty without one; bands: each step of the main grid that overturns at all, "
+                "from|to|share (the share of the step, in ln q or ln p, that overturns), ';' between\n";
     std::string line = "line";
     for (const std::string& c : manifest_header) line += "," + batch::csv_cell(c);
-    for (const std::string& c : result_columns()) line += "," + c;
+    for (const std::string& c : result_columns(capacities)) line += "," + c;
     return text + line + "\n";
 }
 
@@ -37,10 +55,21 @@ namespace {
 std::string number(const std::optional<double>& v) { return v ? harness::format_number(*v) : ""; }
 std::string count(const std::optional<long>& v) { return v ? std::to_string(*v) : ""; }
 
+// The steps that overturn at all (the others' share is 0), as rocking
+// fragility's rows write bands (jobs/fragility_plan.hpp).
+std::string bands_cell(const std::vector<studies::Band>& bands) {
+    std::string text;
+    for (const studies::Band& b : bands)
+        if (b.share > 0)
+            text += (text.empty() ? "" : ";") + harness::format_number(b.from) + "|" + harness::format_number(b.to) + "|" +
+                    harness::format_number(b.share);
+    return text;
+}
+
 }  // namespace
 
 std::string result_row(int line, const std::vector<std::string>& echo, const Job* job, const Figures* f,
-                       const std::string& error) {
+                       const std::string& error, bool capacities) {
     std::string row = std::to_string(line);
     for (const std::string& cell : echo) row += "," + batch::csv_cell(cell);
     std::vector<std::string> cells;
@@ -62,6 +91,13 @@ std::string result_row(int line, const std::vector<std::string>& echo, const Job
         cells.push_back(count(f->simulations));
     } else
         cells.insert(cells.end(), 11, "");
+    if (capacities && f) {
+        cells.push_back(f->robust ? (*f->robust ? "yes" : "no") : "");
+        cells.push_back(number(f->q_robust));
+        cells.push_back(number(f->p_robust));
+        cells.push_back(bands_cell(f->bands));
+    } else if (capacities)
+        cells.insert(cells.end(), 4, "");
     std::string one_line = error;  // a row is one line
     for (char& c : one_line)
         if (c == '\n' || c == '\r') c = ' ';

@@ -15,16 +15,22 @@
 
 namespace rocking::jobs {
 
+// Whether the results carry issue 39's columns (robust_collapse, q_robust,
+// p_robust, bands): for a manifest that names method, width or
+// robust_width.  Without them the results are those written before the
+// refine method, byte for byte.
+bool capacity_columns(const std::vector<std::string>& manifest_header);
+
 // The columns after the manifest's own.
-const std::vector<std::string>& result_columns();
+const std::vector<std::string>& result_columns(bool capacities = false);
 
 // The header's '#' lines and the column row, each ending with '\n'.
 std::string results_header(const std::string& manifest_path, std::size_t jobs, const std::vector<std::string>& manifest_header);
 
 // A row (without the newline).  `echo` holds the manifest's cells, padded or
 // cut to the header's count; `job` and `figures` are null where the job
-// failed before them.
+// failed before them; `capacities` as capacity_columns of the header.
 std::string result_row(int line, const std::vector<std::string>& echo, const Job* job, const Figures* figures,
-                       const std::string& error);
+                       const std::string& error, bool capacities = false);
 
 }  // namespace rocking::jobs

@@ -71,6 +71,9 @@ Figures ida(const Job& job, const SampledInput& input) {
     o.model = search_model(job);
     o.q_max = job.q_max;
     o.points = job.points;
+    if (job.refine) o.method = studies::IdaOptions::Method::refine;
+    o.width = job.width;
+    o.robust_width = job.robust_width;
     const studies::Ida r = studies::incremental_dynamic_analysis(input, job.alpha, job.block->p, o);
     Figures f;
     f.collapse = r.point.collapsed;
@@ -80,6 +83,9 @@ Figures ida(const Job& job, const SampledInput& input) {
     }
     f.intervals = static_cast<long>(r.intervals.size());
     f.simulations = r.simulations;
+    f.robust = r.first_robust_collapse.collapsed;
+    if (r.first_robust_collapse.collapsed) f.q_robust = r.first_robust_collapse.q;
+    f.bands = r.bands;
     return f;
 }
 
@@ -89,7 +95,11 @@ Figures spectrum(const Job& job, const SampledInput& input) {
     o.p_min = job.p_min;
     o.p_max = job.p_max;
     o.points = job.points;
-    // Table 1's bracket joins the grid, as in rocking spectrum (docs/spectrum.md).
+    if (job.refine) o.method = studies::SpectrumOptions::Method::refine;
+    o.width = job.width;
+    o.robust_width = job.robust_width;
+    // Table 1's bracket joins the grid, as in rocking spectrum (docs/spectrum.md);
+    // the refine method takes no extra points.
     const studies::Spectrum s = spectrum_study(input, job.alpha, o).spectrum;
     Figures f;
     f.collapse = !s.intervals.empty();
@@ -99,6 +109,9 @@ Figures spectrum(const Job& job, const SampledInput& input) {
     }
     f.intervals = static_cast<long>(s.intervals.size());
     f.simulations = s.simulations;
+    f.robust = s.first_robust_collapse.found;
+    if (s.first_robust_collapse.found) f.p_robust = s.first_robust_collapse.p;
+    f.bands = s.bands;
     return f;
 }
 

@@ -7,9 +7,11 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "jobs/job.hpp"
 #include "jobs/record_store.hpp"
+#include "studies/overturning_set.hpp"
 
 namespace rocking::jobs {
 
@@ -17,8 +19,15 @@ struct Figures {
     bool collapse = false;
     std::optional<double> max_theta, theta_tfin, t_overturn;  // simulate, in alpha and s
     std::optional<long> impacts;                              // simulate
-    std::optional<double> p_collapse, p_safe;                 // collapse, spectrum: rad/s
-    std::optional<double> q_collapse, q_safe;                 // ida
+    // collapse: Table 1's p; spectrum: the first overturning p (rad/s)
+    std::optional<double> p_collapse, p_safe;
+    std::optional<double> q_collapse, q_safe;                 // ida: the first overturning q
+    // ida and spectrum (issue 39): whether there is a first robust collapse,
+    // its q (ida) or p (spectrum), and the overturned share of each step of
+    // the main grid, in ln q or ln p.
+    std::optional<bool> robust;
+    std::optional<double> q_robust, p_robust;
+    std::vector<studies::Band> bands;
     std::optional<long> intervals;                            // ida, spectrum
     std::optional<long> simulations;                          // collapse, ida, spectrum
 };

@@ -192,7 +192,46 @@ Eq27Study eq27_from_points(const std::vector<std::vector<IdaPoint>>& points,
     return s;
 }
 
-Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Options& o) {
+Eq27Capacities capacities_of(const Ida& ida) { return {ida.first_overturning, ida.first_robust_collapse}; }
+
+const char* const kEq27FirstOverturningNote =
+    "first overturning: the lowest q at which the record overturns the block (with the refine method every island "
+    "wider than w in ln q found); a case is non-conservative when the record at some q below eq. 27's overturns the "
+    "block: the share to design with";
+const char* const kEq27RobustCollapseNote =
+    "first robust collapse: the start of the first interval of overturning wider than the robust width in ln q "
+    "(about what the grid method reports); the islands of overturning below it are left out, so its share can "
+    "understate how often eq. 27 calls a block safe at a q that overturns it";
+
+std::string eq27_refine_note(const IdaOptions& ida) {
+    char w[40], r[40];
+    std::snprintf(w, sizeof w, "%.7g", ida.width);
+    std::snprintf(r, sizeof r, "%.7g", ida.robust_width);
+    return "w = " + std::string(w) + " in ln q: every island and gap wider than w in ln q found, except above q = "
+           "(pi/2 - alpha)/alpha where the margin's guarantee does not hold; islands narrower than w may be missed; "
+           "first robust collapse: the start of the first interval wider than " + r +
+           " in ln q; the shares under each capacity, their bootstraps drawing the same records";
+}
+
+Eq27ByCapacity eq27_by_capacity(const std::vector<std::vector<Eq27Capacities>>& capacities,
+                                const std::vector<std::array<double, kHalfPeriods>>& to,
+                                const std::vector<BlockShape>& blocks, double level, const Eq27Bootstrap& bootstrap) {
+    std::vector<std::vector<IdaPoint>> first(capacities.size()), robust(capacities.size());
+    for (std::size_t r = 0; r < capacities.size(); ++r)
+        for (std::size_t b = 0; b < capacities[r].size(); ++b) {
+            const Eq27Capacities& c = capacities[r][b];
+            // An IDA's robust collapse is the start of one of its intervals, the first overturning the lowest's.
+            if (c.first_robust_collapse.collapsed &&
+                !(c.first_overturning.collapsed && c.first_overturning.q <= c.first_robust_collapse.q))
+                throw std::invalid_argument("eq27: record " + std::to_string(r) + ", block " + std::to_string(b) +
+                                            ": a first robust collapse below the first overturning");
+            first[r].push_back(c.first_overturning);
+            robust[r].push_back(c.first_robust_collapse);
+        }
+    return {eq27_from_points(first, to, blocks, level, bootstrap), eq27_from_points(robust, to, blocks, level, bootstrap)};
+}
+
+Eq27ByCapacity eq27_at_scale_by_capacity(const std::vector<Eq27Record>& records, const Eq27Options& o) {
     const std::vector<BlockShape> blocks = o.grid.blocks();
     if (o.bootstrap.resamples != 0) check_bootstrap(o.bootstrap);  // before the IDAs, not after
     std::vector<std::array<double, kHalfPeriods>> to;
@@ -201,16 +240,21 @@ Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Option
         to.push_back(r.to);
     }
     // Every (record, block) IDA a job of the batch engine, in this order.
-    std::vector<std::vector<IdaPoint>> points(records.size());
+    std::vector<std::vector<Eq27Capacities>> capacities(records.size());
     const std::size_t n = blocks.size();
-    batch::run_ordered<IdaPoint>(
+    batch::run_ordered<Eq27Capacities>(
         records.size() * n, batch::PoolOptions{o.threads},
         [&](std::size_t job) {
             const BlockShape& b = blocks[job % n];
-            return incremental_dynamic_analysis(*records[job / n].input, b.alpha, b.p, o.ida).point;
+            return capacities_of(incremental_dynamic_analysis(*records[job / n].input, b.alpha, b.p, o.ida));
         },
-        [&](std::size_t job, IdaPoint& point) { points[job / n].push_back(point); });
-    return eq27_from_points(points, to, blocks, o.level, o.bootstrap);
+        [&](std::size_t job, Eq27Capacities& c) { capacities[job / n].push_back(c); });
+    return eq27_by_capacity(capacities, to, blocks, o.level, o.bootstrap);
+}
+
+// The IDA's point is its first overturning (studies/ida.cpp, summarise).
+Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Options& o) {
+    return eq27_at_scale_by_capacity(records, o).first_overturning;
 }
 
 }  // namespace rocking::studies

@@ -160,8 +160,55 @@ Eq27Study eq27_from_points(const std::vector<std::vector<IdaPoint>>& points,
                            const std::vector<BlockShape>& blocks, double level,
                            const Eq27Bootstrap& bootstrap = Eq27Bootstrap{});
 
-// The IDA of every record on every block of the grid, then eq27_from_points.
-// Throws what incremental_dynamic_analysis and eq27_from_points throw.
+// The IDA of every record on every block of the grid, then eq27_from_points
+// on each IDA's point (its first overturning, either method).  Throws what
+// incremental_dynamic_analysis and eq27_from_points throw.
 Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Options& options);
+
+// ---- Under each capacity (issue 39, item 3; docs/eq27_at_scale.md) ----
+//
+// A record's capacity on a block, the q a case compares with eq. 27's, is
+// one of two numbers of its IDA:
+//   first overturning: the lowest q at which the record overturns the block
+//     (with the refine method, every island wider than its width w found);
+//   first robust collapse: the start of the first interval of overturning
+//     wider than the IDA's robust width in ln q, about what the grid method
+//     reports as its first collapse (islands below it are left out).
+// The first overturning is never above the first robust collapse, so a case
+// non-conservative under the robust collapse is non-conservative under the
+// first overturning too, and the share under the first overturning is the
+// larger: the one that says how often the record, at some q eq. 27 calls
+// safe, overturns the block.
+struct Eq27Capacities {
+    IdaPoint first_overturning{0, false}, first_robust_collapse{0, false};
+};
+Eq27Capacities capacities_of(const Ida& ida);
+
+// What a front end says of each capacity (the command line and the Python module alike).
+extern const char* const kEq27FirstOverturningNote;
+extern const char* const kEq27RobustCollapseNote;
+// The refine method's width and guarantee, the robust width, and the
+// pairing of the two bootstraps, in one sentence.
+std::string eq27_refine_note(const IdaOptions& ida);
+
+struct Eq27ByCapacity {
+    Eq27Study first_overturning, first_robust_collapse;
+};
+
+// eq27_from_points under each capacity: capacities[r][b] for record r and
+// block b.  Both bootstraps take the same seed, so that they draw the same
+// records in the same order (paired resamples: a difference between the
+// two intervals is the verdicts', not the draws').  Throws what
+// eq27_from_points throws, and std::invalid_argument for a case whose first
+// robust collapse lies below its first overturning, or is found where the
+// first overturning is not (no IDA gives that).
+Eq27ByCapacity eq27_by_capacity(const std::vector<std::vector<Eq27Capacities>>& capacities,
+                                const std::vector<std::array<double, kHalfPeriods>>& to,
+                                const std::vector<BlockShape>& blocks, double level,
+                                const Eq27Bootstrap& bootstrap = Eq27Bootstrap{});
+
+// The IDA of every record on every block of the grid (options.ida: either
+// method), then eq27_by_capacity.  Throws what eq27_at_scale throws.
+Eq27ByCapacity eq27_at_scale_by_capacity(const std::vector<Eq27Record>& records, const Eq27Options& options);
 
 }  // namespace rocking::studies

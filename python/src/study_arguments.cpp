@@ -1,0 +1,74 @@
+#include "study_arguments.hpp"
+
+namespace rocking::python {
+
+std::string g7(double v) { return significant(v, 7); }
+
+std::vector<double> values_in(const py::object& given, const std::string& what, double lo, double hi,
+                              const std::string& range, std::size_t most) {
+    std::vector<double> v;
+    const py::module_ np = py::module_::import("numpy");
+    const bool one = (PyFloat_Check(given.ptr()) || PyLong_Check(given.ptr()) || PyComplex_Check(given.ptr()) ||
+                      py::isinstance(given, np.attr("generic")) ||
+                      (py::isinstance<py::array>(given) && py::reinterpret_borrow<py::array>(given).ndim() == 0));
+    if (given.is_none() || PyBool_Check(given.ptr()) || py::isinstance(given, np.attr("bool_")) ||
+        py::isinstance<py::str>(given) || py::isinstance<py::bytes>(given) || (!one && !py::isinstance<py::iterable>(given)))
+        throw py::type_error(what + ": expected a number or a list of numbers, got " +
+                             std::string(py::str(py::type::of(given).attr("__name__"))));
+    if (one) v = {number(Real{given}, what)};  // a numpy scalar or a 0-d array is one number too
+    else v = real_vector(given, what);
+    if (v.empty() || v.size() > most) refuse(what + ": from 1 to " + std::to_string(most) + " values");
+    for (double x : v)
+        if (!(x > lo && x < hi)) refuse(what + ": each must be in " + range + " (got " + g7(x) + ")");
+    return v;
+}
+
+std::unique_ptr<dynamics::SampledInput> input_of(const records::Record& r) {
+    return std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name);
+}
+
+int bootstrap_argument(const std::optional<Whole>& bootstrap_given, const std::optional<Whole>& seed_given,
+                       std::uint64_t& seed_out) {
+    const std::optional<long long> bootstrap = whole(bootstrap_given, "bootstrap"), seed = whole(seed_given, "seed");
+    // Out of int's range, as just out of the callers' (which refuse it in their own words).
+    const long long b = bootstrap.value_or(0);
+    const int resamples = b < 0 ? -1 : b > 100000 ? 100001 : static_cast<int>(b);
+    if (seed && !bootstrap) refuse("seed goes with bootstrap");
+    if (resamples > 0 && !seed) refuse("bootstrap needs seed (the interval is reproducible only from a stated seed)");
+    if (seed) {
+        if (*seed < 1 || *seed > 4294967295LL)
+            refuse("seed: the seed must be a whole number from 1 to 4294967295 (got " + std::to_string(*seed) + ")");
+        seed_out = static_cast<std::uint64_t>(*seed);
+    }
+    return resamples;
+}
+
+MethodChoice method_argument(const Text& method_given, const std::optional<Real>& width_given,
+                             const std::optional<Real>& robust_width_given, const std::string& unit) {
+    MethodChoice m;
+    const std::string method = string_argument(method_given, "method");
+    if (method != "grid" && method != "refine") refuse("method: grid or refine (got '" + method + "')");
+    m.refine = method == "refine";
+    const std::optional<double> width = number(width_given, "width"), robust_width = number(robust_width_given, "robust_width");
+    if (width && !m.refine) refuse("width goes with method='refine'");
+    if (robust_width && !m.refine) refuse("robust_width goes with method='refine'");
+    if (width) {
+        if (!(*width >= 1e-7 && *width <= 1e-1)) refuse("width: must be in [1e-7, 0.1] (in ln " + unit + ")");
+        m.width = *width;
+    }
+    if (robust_width) {
+        if (!(*robust_width >= 1e-7 && *robust_width <= 1)) refuse("robust_width: must be in [1e-7, 1] (in ln " + unit + ")");
+        m.robust_width = *robust_width;
+    }
+    return m;
+}
+
+void method_argument(const Text& method_given, const std::optional<Real>& width_given,
+                     const std::optional<Real>& robust_width_given, studies::IdaOptions& ida) {
+    const MethodChoice m = method_argument(method_given, width_given, robust_width_given, "q");
+    if (m.refine) ida.method = studies::IdaOptions::Method::refine;
+    ida.width = m.width;
+    ida.robust_width = m.robust_width;
+}
+
+}  // namespace rocking::python
