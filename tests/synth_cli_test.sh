@@ -21,6 +21,7 @@ check "pulse states its generator" "generator: Mavroeidis & Papageorgiou (2003)"
 check "pulse states its parameters" $'gamma = 2\n  nu_rad = 0\n  t0_s = 1' \
     "$rocking" record synth --pulse 0.5,1,0,2 --dt 0.001 --duration 3
 check "pulse PGV is A" "PGV = 0.5000 m/s" "$rocking" record synth --pulse 0.5,1,0,2 --dt 0.001 --duration 3
+check "a tiny pulse's PGV in four significant digits, not 0.0000" "PGV = 5.0000e-08 m/s" "$rocking" record synth --pulse 5e-8,1,0,2 --dt 0.001 --duration 3
 
 # --output: '#' lines with the generator and parameters, then t,a that record info reads back.
 "$rocking" record synth --pulse 0.5,1,0.3,2.5,2 --dt 0.005 --duration 5 --output "$tmp/pulse.txt" >/dev/null

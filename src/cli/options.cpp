@@ -291,7 +291,9 @@ std::string significant(double v, int n) {
 
 std::string four(double v) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, std::fabs(v) < 1e9 ? "%.4f" : "%.4e", v);
+    // Four decimals would print a tiny PGA as 0.0000: below 1e-3, four significant digits.
+    const bool wide = std::fabs(v) >= 1e9 || (v != 0 && std::fabs(v) < 1e-3);
+    std::snprintf(buf, sizeof buf, wide ? "%.4e" : "%.4f", v);
     return buf;
 }
 

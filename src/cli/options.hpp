@@ -92,6 +92,8 @@ void refuse_unresolvable_run(double p, double duration, const Args& a, const std
 void write_output(const harness::Table& table, const std::string& path);
 PulseTrain train_from(const Args& a, std::string& equation);
 double x_from(const Args& a);
+// Four decimals (%.4f); %.4e at or above 1e9 and below 1e-3 (not 0), where
+// four decimals would print 0.0000 or a run of digits.
 std::string four(double v);
 // v to n significant digits (%.*g), as the messages and tables of several commands print it.
 std::string significant(double v, int n);
