@@ -176,58 +176,51 @@ dynamics::Model model_at(double alpha, double p, const records::CollapseOptions&
     return model;
 }
 
-// One sample of the refine method at p: the run with each flight's escape
-// margin, as records::collapses_at runs it (the same model and options: the
-// observer changes no outcome, EscapeMargin.TheObserverChangesNoOutcome),
-// and a second at p (1 + slope_step) whose margins, matched by index, give
-// dXi_j / d ln p by their difference.  The outcome only without the record
-// kernel, or where the two runs differ in outcome or number of flights.
+bool record_kernel_runs(const GroundInput& input, double alpha, const SpectrumOptions& o) {
+    const auto* record = dynamic_cast<const dynamics::SampledInput*>(&input);
+    dynamics::SimulationOptions sim;
+    sim.solver = o.model.solver;
+    sim.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
+    return record && o.model.criterion == dynamics::Criterion::overturning &&
+           dynamics::record_kernel_applies(model_at(alpha, o.p_min, o.model), *record, sim);
+}
+
+// The run at p with each flight's escape margin, as records::collapses_at
+// runs it (the same model and options: the observer changes no outcome,
+// EscapeMargin.TheObserverChangesNoOutcome).
+bool run_with_margins(const dynamics::SampledInput& record, double alpha, double p, const SpectrumOptions& o,
+                      std::vector<dynamics::FlightMargin>& flights) {
+    dynamics::SimulationOptions sim;
+    sim.solver = o.model.solver;
+    sim.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
+    const dynamics::Model model = model_at(alpha, p, o.model);
+    const dynamics::RestOfInput rest(record, p);
+    dynamics::FlightMargins margins(model, rest, 1.0);
+    const bool c = dynamics::simulate_with_margins(model, record, sim, margins).collapse(o.model.criterion, alpha);
+    flights = margins.flights();
+    return c;
+}
+
+// The refine method's sampler: margins_in_p where the record kernel runs the
+// model, the outcome alone elsewhere.
 class PSampler {
 public:
-    PSampler(const GroundInput& input, double alpha, const SpectrumOptions& o) : input_(input), alpha_(alpha), o_(o) {
-        sim_.solver = o.model.solver;
-        sim_.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
-        record_ = dynamic_cast<const dynamics::SampledInput*>(&input);
-        if (!record_ || o.model.criterion != dynamics::Criterion::overturning ||
-            !dynamics::record_kernel_applies(model_at(alpha, o.p_min, o.model), *record_, sim_))
-            record_ = nullptr;
-    }
-    bool with_margins() const { return record_ != nullptr; }
+    PSampler(const GroundInput& input, double alpha, const SpectrumOptions& o)
+        : input_(input), alpha_(alpha), o_(o), margins_(record_kernel_runs(input, alpha, o)) {}
+    bool with_margins() const { return margins_; }
     bool collapses(double p) const { return records::collapses_at(input_, alpha_, p, o_.model); }
     MarginSample operator()(double p) const {
+        if (margins_) return margins_in_p(input_, alpha_, p, o_);
         MarginSample s;
-        if (!record_) {
-            s.collapse = collapses(p);
-            return s;
-        }
-        std::vector<dynamics::FlightMargin> at_p, at_p2;
-        s.collapse = run(p, at_p);
-        const double p2 = p * (1 + o_.slope_step);
-        if (run(p2, at_p2) != s.collapse || at_p2.size() != at_p.size()) return s;
-        const double d = std::log(p2 / p);
-        s.has_margins = true;
-        for (std::size_t j = 0; j < at_p.size(); ++j) {
-            s.xi.push_back(at_p[j].xi);
-            s.slope.push_back((at_p2[j].xi - at_p[j].xi) / d);
-        }
+        s.collapse = collapses(p);
         return s;
     }
 
 private:
-    bool run(double p, std::vector<dynamics::FlightMargin>& flights) const {
-        const dynamics::Model model = model_at(alpha_, p, o_.model);
-        const dynamics::RestOfInput rest(*record_, p);
-        dynamics::FlightMargins margins(model, rest, 1.0);
-        const bool c = dynamics::simulate_with_margins(model, *record_, sim_, margins).collapse(o_.model.criterion, alpha_);
-        flights = margins.flights();
-        return c;
-    }
-
     const GroundInput& input_;
     double alpha_;
     const SpectrumOptions& o_;
-    dynamics::SimulationOptions sim_;
-    const dynamics::SampledInput* record_ = nullptr;
+    bool margins_;
 };
 
 // The three numbers of issue 39 from the intervals, both methods alike; the
@@ -282,6 +275,23 @@ void refined_spectrum(Spectrum& s, const GroundInput& input, double alpha, const
 }
 
 }  // namespace
+
+MarginSample margins_in_p(const GroundInput& input, double alpha, double p, const SpectrumOptions& o) {
+    MarginSample s;
+    if (!record_kernel_runs(input, alpha, o)) throw std::invalid_argument("margins_in_p: the record kernel does not run this model");
+    const auto& record = dynamic_cast<const dynamics::SampledInput&>(input);
+    std::vector<dynamics::FlightMargin> at_p, at_p2;
+    s.collapse = run_with_margins(record, alpha, p, o, at_p);
+    const double p2 = p * (1 + o.slope_step);
+    if (run_with_margins(record, alpha, p2, o, at_p2) != s.collapse || at_p2.size() != at_p.size()) return s;
+    const double d = std::log(p2 / p);
+    s.has_margins = true;
+    for (std::size_t j = 0; j < at_p.size(); ++j) {
+        s.xi.push_back(at_p[j].xi);
+        s.slope.push_back((at_p2[j].xi - at_p[j].xi) / d);
+    }
+    return s;
+}
 
 Spectrum rocking_spectrum(const GroundInput& input, double alpha, const SpectrumOptions& o) {
     check_options(alpha, o);

@@ -135,4 +135,13 @@ struct Spectrum {
 // robust_width not > 0) and whatever simulate() throws.
 Spectrum rocking_spectrum(const dynamics::GroundInput& input, double alpha, const SpectrumOptions& options);
 
+// One sample of the refine method at p (docs/overturning_set.md section 5):
+// the run's outcome and, as records::collapses_at runs the model, each
+// flight's escape margin Xi_j with dXi_j / d ln p from a second run at
+// p (1 + slope_step), flights matched by index; the outcome only
+// (has_margins false) where the two runs differ in outcome or number of
+// flights.  Throws std::invalid_argument where the record kernel does not run
+// the model (not a record, another solver, equation or criterion).
+MarginSample margins_in_p(const dynamics::GroundInput& input, double alpha, double p, const SpectrumOptions& options);
+
 }  // namespace rocking::studies
