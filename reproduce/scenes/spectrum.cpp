@@ -17,6 +17,7 @@
 #include "records/record.hpp"
 #include "records_analysis.hpp"
 #include "scene.hpp"
+#include "spectrum_refined.hpp"
 #include "studies/spectrum.hpp"
 
 namespace rocking::scenes {
@@ -31,7 +32,8 @@ using studies::Spectrum;
 // The same words as the other record scenes, so a reader sees one reason.
 const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 const char* kNoNorcia = "no Norcia record (esm/IT.NRC..H*) in the records folder";
-const std::array<const char*, 3> kFiles = {"spectrum_intervals.csv", "spectrum_summary.csv", "spectrum_grid.csv"};
+const std::array<const char*, 5> kFiles = {"spectrum_intervals.csv", "spectrum_summary.csv", "spectrum_grid.csv",
+                                           kRefinedFile, kRefinedIntervalsFile};
 
 std::string alpha_label(double a) {
     char b[16];
@@ -54,6 +56,7 @@ struct Task {
     // "yes"/"no" for a confirmed boundary, "-" for any other end.
     std::vector<std::array<std::string, 2>> reference;
     std::string error;
+    Spectrum refined;  // the refine method's, on the same p range and main grid (spectrum_refined.hpp)
 };
 
 studies::SpectrumOptions spectrum_options(const RecordRow& row, std::size_t k) {
@@ -85,6 +88,7 @@ void run_task(Task& t, bool reference) {
     const dynamics::SampledInput input(r.in_g(9.81), r.dt, r.name);  // as table1 (records_analysis.cpp)
     const double alpha = kTableAlphas[t.k];
     t.spectrum = studies::rocking_spectrum(input, alpha, spectrum_options(*t.row, t.k));
+    t.refined = studies::rocking_spectrum(input, alpha, refined_spectrum_options());
     for (const Interval& in : t.spectrum.intervals) {
         std::array<std::string, 2> v = {harness::kNotChecked, harness::kNotChecked};
         if (reference) {
@@ -137,7 +141,7 @@ void run_spectrum(SceneContext& ctx) {
     std::vector<Task> tasks;
     for (const RecordRow& r : rows)
         if (is_norcia(r))
-            for (std::size_t k = 0; k < kTableAlphas.size(); ++k) tasks.push_back({&r, k, {}, {}, ""});
+            for (std::size_t k = 0; k < kTableAlphas.size(); ++k) tasks.push_back({&r, k, {}, {}, "", {}});
     if (tasks.empty()) {
         for (const char* f : kFiles) ctx.skip(f, kNoNorcia);
         return;
@@ -254,6 +258,10 @@ void run_spectrum(SceneContext& ctx) {
     ctx.write(iv, "spectrum_intervals.csv");
     ctx.write(sm, "spectrum_summary.csv");
     ctx.write(gd, "spectrum_grid.csv");
+
+    std::vector<RefinedPair> pairs;
+    for (Task& t : tasks) pairs.push_back({t.row->file, t.spectrum.alpha, &t.spectrum, std::move(t.refined)});
+    write_spectrum_refined(ctx, pairs, inputs);
 }
 
 }  // namespace rocking::scenes
