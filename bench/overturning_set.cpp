@@ -1,8 +1,10 @@
 // The refine method's cost (a benchmark, not a test; issue 39, docs/overturning_set.md
 // section 4): one IDA of Norcia 2016-10-30 HGE (alpha 0.10, p 2.5 rad/s) over
-// q in [1, 20] at several widths w, against today's grid: runs, seconds,
-// islands, the first overturning and the first robust collapse.  Writes
-// out/bench/overturning_set.txt.
+// q in [1, 20], and one spectrum of the same record (alpha 0.10, p in [0.3,
+// 30] rad/s, 200 points), each at several widths w against the grid: runs,
+// seconds, islands, the first overturning and the first robust collapse; and
+// the spectrum stopped at its first overturning (first_only, Table 1's p).
+// Writes out/bench/overturning_set.txt.
 //
 //   bench_overturning_set [--records DIR] [--out DIR] [--widths W1,W2,...]
 #include <chrono>
@@ -15,6 +17,7 @@
 #include "records/record.hpp"
 #include "scenes/records_analysis.hpp"
 #include "studies/ida.hpp"
+#include "studies/spectrum.hpp"
 
 using namespace rocking;
 namespace fs = std::filesystem;
@@ -72,6 +75,27 @@ int main(int argc, char** argv) {
         o.width = w;
         run(o, "refine", w);
     }
+    say("\nspectrum of %s, alpha 0.10, p in [0.3, 30] rad/s, 200 points; one thread; every boundary checked "
+        "(probe and rk8pd)\n",
+        r.name.c_str());
+    say("%-10s %10s %10s %9s %8s %8s %14s %14s %10s\n", "method", "w", "runs", "samples", "s", "islands",
+        "first_over", "first_robust", "at_width");
+    auto spectrum = [&](studies::SpectrumOptions o, const char* name, double w) {
+        const auto start = std::chrono::steady_clock::now();
+        const studies::Spectrum sp = studies::rocking_spectrum(input, 0.10, o);
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        say("%-10s %10.0e %10ld %9ld %8.2f %8zu %14.9g %14.9g %10ld\n", name, w, sp.simulations, sp.samples, s,
+            sp.intervals.size(), sp.first_overturning.p, sp.first_robust_collapse.p, sp.at_width);
+    };
+    spectrum(studies::SpectrumOptions{}, "grid", 0);
+    for (const bool first_only : {false, true})
+        for (double w : widths) {
+            studies::SpectrumOptions o;
+            o.method = studies::SpectrumOptions::Method::refine;
+            o.width = w;
+            o.first_only = first_only;
+            spectrum(o, first_only ? "first-only" : "refine", w);
+        }
     std::fclose(summary);
     std::printf("wrote %s/overturning_set.txt\n", out.c_str());
     return 0;
