@@ -1,5 +1,7 @@
 #include "studies/fragility.hpp"
 
+#include "numerics/newton_ascent.hpp"
+
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_sf_erf.h>
 
@@ -103,68 +105,28 @@ void maximise_with_censoring(const std::vector<IdaPoint>& points, double& mu, do
         }
         return sum;
     };
-    double current = lnl(theta, gamma);
-    bool converged = false;
-    for (int iteration = 0; iteration < 200 && !converged; ++iteration) {
-        double g_th = 0, g_ga = 0, h_thth = 0, h_thga = 0, h_gaga = 0;
+    const auto slopes = [&](double th, double ga) {
+        numerics::Slopes2 d;
         for (std::size_t k = 0; k < points.size(); ++k) {
-            const double z = theta * y[k] - gamma;
+            const double z = th * y[k] - ga;
             if (points[k].collapsed) {
-                g_th += 1 / theta - z * y[k];
-                g_ga += z;
-                h_thth -= 1 / (theta * theta) + y[k] * y[k];
-                h_thga += y[k];
-                h_gaga -= 1;
+                d.g_a += 1 / th - z * y[k];
+                d.g_b += z;
+                d.h_aa -= 1 / (th * th) + y[k] * y[k];
+                d.h_ab += y[k];
+                d.h_bb -= 1;
             } else {
                 const double h = normal_hazard(z), c = h * (h - z);
-                g_th -= h * y[k];
-                g_ga += h;
-                h_thth -= c * y[k] * y[k];
-                h_thga += c * y[k];
-                h_gaga -= c;
+                d.g_a -= h * y[k];
+                d.g_b += h;
+                d.h_aa -= c * y[k] * y[k];
+                d.h_ab += c * y[k];
+                d.h_bb -= c;
             }
         }
-        // The Newton step solves H d = -g (H negative definite).
-        const double det = h_thth * h_gaga - h_thga * h_thga;
-        if (!(det > 0))  // with a collapsed point H is negative definite: only rounding gets here
-            throw std::runtime_error("fragility: ln L's Hessian lost its sign to rounding at beta " +
-                                     std::to_string(1 / theta));
-        double d_th = (-g_th * h_gaga + g_ga * h_thga) / det, d_ga = (-g_ga * h_thth + g_th * h_thga) / det;
-        if (std::fabs(d_th) <= 1e-13 * theta && std::fabs(d_ga) <= 1e-13 * std::max(1.0, std::fabs(gamma))) {
-            theta += d_th;
-            gamma += d_ga;
-            converged = true;
-            break;
-        }
-        // Near the maximum Newton's predicted rise of ln L, g.d/2, is below
-        // ln L's rounding, which can no longer judge a step: take it whole
-        // (Newton converges quadratically there).  Stopping at the first step
-        // whose rise rounding hid left a fit 1e-8 off.
-        const double rise = 0.5 * (g_th * d_th + g_ga * d_ga);
-        if (rise <= 1e-12 * (1 + std::fabs(current)) && theta + d_th > 0) {
-            theta += d_th;
-            gamma += d_ga;
-            current = lnl(theta, gamma);
-            continue;
-        }
-        // Farther off, halve the step until ln L does not fall and theta stays > 0.
-        double next = -INFINITY;
-        for (int halving = 0; halving < 60; ++halving) {
-            if (theta + d_th > 0) {
-                next = lnl(theta + d_th, gamma + d_ga);
-                if (next >= current) break;
-            }
-            d_th *= 0.5;
-            d_ga *= 0.5;
-        }
-        if (!(next >= current))
-            throw std::runtime_error("fragility: Newton's method found no step up although ln L should rise by " +
-                                     std::to_string(rise));
-        theta += d_th;
-        gamma += d_ga;
-        current = next;
-    }
-    if (!converged) throw std::runtime_error("fragility: Newton's method did not converge in 200 iterations");
+        return d;
+    };
+    numerics::newton_ascent(lnl, slopes, theta, gamma, "fragility");
     mu = std::log(reference) + gamma / theta;
     beta = 1 / theta;
 }

@@ -1,5 +1,7 @@
 #include "studies/stripe_fit.hpp"
 
+#include "numerics/newton_ascent.hpp"
+
 #include <gsl/gsl_sf_erf.h>
 
 #include <algorithm>
@@ -149,16 +151,14 @@ StripeFragility fit_stripes(const std::vector<Stripe>& stripes) {
         for (std::size_t j = 0; j < stripes.size(); ++j) sum += term(stripes[j], aa * y[j] - bb);
         return sum;
     };
-    double current = lnl(a, b);
-    bool converged = false;
-    for (int iteration = 0; iteration < 200 && !converged; ++iteration) {
-        // d ln L/du_j = z lambda(u) - (n - z) lambda(-u);
-        // d^2 ln L/du_j^2 = -z lambda(u)(u + lambda(u)) - (n - z) lambda(-u)(lambda(-u) - u) < 0;
-        // du/da = y_j, du/db = -1.
-        double g_a = 0, g_b = 0, h_aa = 0, h_ab = 0, h_bb = 0;
+    // d ln L/du_j = z lambda(u) - (n - z) lambda(-u);
+    // d^2 ln L/du_j^2 = -z lambda(u)(u + lambda(u)) - (n - z) lambda(-u)(lambda(-u) - u) < 0;
+    // du/da = y_j, du/db = -1.
+    const auto slopes = [&](double aa, double bb) {
+        numerics::Slopes2 d;
         for (std::size_t j = 0; j < stripes.size(); ++j) {
             const Stripe& s = stripes[j];
-            const double u = a * y[j] - b;
+            const double u = aa * y[j] - bb;
             double g = 0, h = 0;
             if (s.overturned > 0) {
                 const double l = mills(u);
@@ -170,50 +170,15 @@ StripeFragility fit_stripes(const std::vector<Stripe>& stripes) {
                 g -= (s.records - s.overturned) * l;
                 h -= (s.records - s.overturned) * l * (l - u);
             }
-            g_a += g * y[j];
-            g_b -= g;
-            h_aa += h * y[j] * y[j];
-            h_ab -= h * y[j];
-            h_bb += h;
+            d.g_a += g * y[j];
+            d.g_b -= g;
+            d.h_aa += h * y[j] * y[j];
+            d.h_ab -= h * y[j];
+            d.h_bb += h;
         }
-        // The Newton step solves H d = -g (H negative definite with two stripes of weight).
-        const double det = h_aa * h_bb - h_ab * h_ab;
-        if (!(det > 0))
-            throw std::runtime_error("stripe fit: ln L's Hessian lost its sign to rounding at beta " +
-                                     std::to_string(1 / a));
-        double d_a = (-g_a * h_bb + g_b * h_ab) / det, d_b = (-g_b * h_aa + g_a * h_ab) / det;
-        if (std::fabs(d_a) <= 1e-13 * a && std::fabs(d_b) <= 1e-13 * std::max(1.0, std::fabs(b))) {
-            a += d_a;
-            b += d_b;
-            converged = true;
-            break;
-        }
-        // As fragility.cpp's Newton: where the predicted rise is below ln L's
-        // rounding, ln L cannot judge the step, which is taken whole.
-        const double rise = 0.5 * (g_a * d_a + g_b * d_b);
-        if (rise <= 1e-12 * (1 + std::fabs(current)) && a + d_a > 0) {
-            a += d_a;
-            b += d_b;
-            current = lnl(a, b);
-            continue;
-        }
-        double next = -INFINITY;
-        for (int halving = 0; halving < 60; ++halving) {
-            if (a + d_a > 0) {
-                next = lnl(a + d_a, b + d_b);
-                if (next >= current) break;
-            }
-            d_a *= 0.5;
-            d_b *= 0.5;
-        }
-        if (!(next >= current))
-            throw std::runtime_error("stripe fit: Newton's method found no step up although ln L should rise by " +
-                                     std::to_string(rise));
-        a += d_a;
-        b += d_b;
-        current = next;
-    }
-    if (!converged) throw std::runtime_error("stripe fit: Newton's method did not converge in 200 iterations");
+        return d;
+    };
+    numerics::newton_ascent(lnl, slopes, a, b, "stripe fit");
     StripeFragility out;
     out.beta = 1 / a;
     out.median = std::exp(x_ref + b / a);
