@@ -196,18 +196,6 @@ py::object bracket(bool has, const studies::Bracket& b) {
 }
 
 
-// rocking fragility's refine note (src/cli/fragility.cpp), word for word.
-std::string refine_note(const studies::FragilityStudyOptions& o) {
-    return "w = " + g7(o.ida.width) +
-           " in ln q: every island and gap wider than w in ln q found, except above q = (pi/2 - alpha)/alpha where "
-           "the margin's guarantee does not hold; islands narrower than w may be missed; first robust collapse: the "
-           "start of the first interval wider than " + g7(o.ida.robust_width) +
-           " in ln q; three lognormal fits, each named by its capacity: the first overturning (conservative; the "
-           "block's fit and empirical curve), the first robust collapse, and the multiple-stripe fit of the "
-           "overturned shares (a stripe at the geometric middle of each step of the main grid, its neighbourhood "
-           "the step, half-width " + g7(studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points)) +
-           " in ln q; binomial likelihood on n records x mean share)";
-}
 
 py::dict point_dict(const studies::IdaPoint& p) {
     py::dict d = result();
@@ -301,7 +289,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         grid["robust_width"] = o.ida.robust_width;
         grid["fit_capacity"] = "first_overturning";
         grid["stripe_half_width"] = studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points);
-        grid["refine_note"] = refine_note(o);
+        grid["refine_note"] = o.describe_fits();
     }
     out["grid"] = grid;
     py::list blocks_out;

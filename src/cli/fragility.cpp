@@ -90,17 +90,6 @@ std::string point_text(const Ida& ida) {
 
 bool refined(const studies::FragilityStudyOptions& o) { return o.ida.method == studies::IdaOptions::Method::refine; }
 
-// The refine method's note: its width, its guarantee and the capacities the three fits take.
-std::string refine_note(const studies::FragilityStudyOptions& o) {
-    return "w = " + g7(o.ida.width) + " in ln q: every island and gap wider than w in ln q found, except above q = "
-           "(pi/2 - alpha)/alpha where the margin's guarantee does not hold; islands narrower than w may be missed; "
-           "first robust collapse: the start of the first interval wider than " + g7(o.ida.robust_width) +
-           " in ln q; three lognormal fits, each named by its capacity: the first overturning (conservative; the "
-           "block's fit and empirical curve), the first robust collapse, and the multiple-stripe fit of the "
-           "overturned shares (a stripe at the geometric middle of each step of the main grid, its neighbourhood "
-           "the step, half-width " + g7(studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points)) +
-           " in ln q; binomial likelihood on n records x mean share)";
-}
 
 std::string robust_text(const studies::IdaPoint& p) {
     return p.collapsed ? "q = " + g7(p.q) : "censored at q_max = " + g7(p.q);
@@ -178,7 +167,7 @@ void print_text(const std::vector<std::string>& files, const studies::FragilityS
                 const std::vector<BlockFragility>& study) {
     std::printf("fragility of %zu record(s)\n  model: %s\n  grid: %s\n", files.size(), o.ida.describe_model().c_str(),
                 grid_note(o).c_str());
-    if (refined(o)) std::printf("  refine: %s\n", refine_note(o).c_str());
+    if (refined(o)) std::printf("  refine: %s\n", o.describe_fits().c_str());
     for (const BlockFragility& f : study) {
         std::printf("alpha = %g, p = %g rad/s:\n", f.block.alpha, f.block.p);
         for (std::size_t k = 0; k < files.size(); ++k) {
@@ -279,7 +268,7 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
         js << ", \"method\": \"refine\", \"width\": " << json_number(o.ida.width)
            << ", \"robust_width\": " << json_number(o.ida.robust_width) << ", \"fit_capacity\": \"first_overturning\""
            << ", \"stripe_half_width\": " << json_number(studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points))
-           << ", \"refine_note\": " << json_string(refine_note(o));
+           << ", \"refine_note\": " << json_string(o.describe_fits());
     js << "}, \"blocks\": [";
     for (std::size_t b = 0; b < study.size(); ++b) {
         const BlockFragility& f = study[b];
@@ -338,7 +327,7 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
     t.note("columns", "q: the first collapse q, or q_max where collapsed is false (censored); intervals: every "
                       "overturning interval in q, '+' where it runs to q_max");
     if (refined(o)) {
-        t.note("refine", refine_note(o));
+        t.note("refine", o.describe_fits());
         t.note("refine columns",
                "first_overturning: the lowest interval's start (= q), its bracket (first_overturning_safe, "
                "first_overturning_collapse; empty at the grid's end or censored) and check; first_robust_collapse: "
@@ -419,7 +408,7 @@ std::string description(const Command& c) {
     std::string text = "# rocking fragility: the IDAs of " + std::to_string(c.files.size()) + " record(s) x " +
                        std::to_string(c.blocks.size()) + " block(s)\n# model: " + c.study.ida.describe_model() +
                        "\n# grid: " + grid_note(c.study) + "\n";
-    if (refined(c.study)) text += "# refine: " + refine_note(c.study) + "\n";
+    if (refined(c.study)) text += "# refine: " + c.study.describe_fits() + "\n";
     for (std::size_t k = 0; k < c.files.size(); ++k)
         text += "# record " + std::to_string(k) + ": " + c.files[k] + "\n";
     return text;

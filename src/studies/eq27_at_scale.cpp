@@ -204,13 +204,7 @@ const char* const kEq27RobustCollapseNote =
     "understate how often eq. 27 calls a block safe at a q that overturns it";
 
 std::string eq27_refine_note(const IdaOptions& ida) {
-    char w[40], r[40];
-    std::snprintf(w, sizeof w, "%.7g", ida.width);
-    std::snprintf(r, sizeof r, "%.7g", ida.robust_width);
-    return "w = " + std::string(w) + " in ln q: every island and gap wider than w in ln q found, except above q = "
-           "(pi/2 - alpha)/alpha where the margin's guarantee does not hold; islands narrower than w may be missed; "
-           "first robust collapse: the start of the first interval wider than " + r +
-           " in ln q; the shares under each capacity, their bootstraps drawing the same records";
+    return ida.describe_guarantee() + "; the shares under each capacity, their bootstraps drawing the same records";
 }
 
 Eq27ByCapacity eq27_by_capacity(const std::vector<std::vector<Eq27Capacities>>& capacities,

@@ -39,6 +39,31 @@ std::string IdaOptions::describe_grid() const {
     return text;
 }
 
+namespace {
+
+std::string g7(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.7g", v);
+    return text;
+}
+
+}  // namespace
+
+std::string IdaOptions::describe_guarantee() const {
+    return "w = " + g7(width) + " in ln q: every island and gap wider than w in ln q found, except above q = "
+           "(pi/2 - alpha)/alpha where the margin's guarantee does not hold; islands narrower than w may be missed; "
+           "first robust collapse: the start of the first interval wider than " + g7(robust_width) + " in ln q";
+}
+
+std::string FragilityStudyOptions::describe_fits() const {
+    return ida.describe_guarantee() +
+           "; three lognormal fits, each named by its capacity: the first overturning (conservative; the "
+           "block's fit and empirical curve), the first robust collapse, and the multiple-stripe fit of the "
+           "overturned shares (a stripe at the geometric middle of each step of the main grid, its neighbourhood "
+           "the step, half-width " + g7(stripe_half_width(ida.q_min, ida.q_max, ida.points)) +
+           " in ln q; binomial likelihood on n records x mean share)";
+}
+
 std::string IdaOptions::describe_checks() const {
     if (checks == Checks::none) return "brackets not checked";
     char text[200];

@@ -58,6 +58,8 @@ struct IdaOptions {
     std::string describe_grid() const;
     std::string describe_model() const;
     std::string describe_checks() const;
+    // The refine method's width, guarantee and robust width, in words.
+    std::string describe_guarantee() const;
 };
 
 struct IdaInterval {
@@ -122,6 +124,8 @@ struct FragilityStudyOptions {
     double level = 0.9;
     // Threads of the batch engine (batch/pool.hpp); the result does not depend on it.
     int threads = 1;
+    // The refine method's guarantee and its three fits, each named by its capacity, in words.
+    std::string describe_fits() const;
 };
 
 // A lognormal fit of one capacity's points (fit_lognormal, bootstrap), or why
