@@ -6,9 +6,10 @@ Every printed formula and every tested claim of the paper is one entry, in the m
 its section (MODULES below): the claim as printed and where, its kind and the scope it was
 tested on, what the harness measures, the test that pins it, the command that shows it, and
 which CSV file, row and column hold the verdict.  The verdicts and numbers are not written
-in the entries: they are read from the expected outputs (expected/<scene>/*.csv) each time, so the document cannot drift from
-them.  The two findings that only `make bench` measures (its output is not kept in
-expected/) are stated with the date and file they come from (docs/performance.md).
+in the entries: they are read from the expected outputs (expected/<scene>/*.csv) each
+time, so the document cannot drift from them.  The two findings that only `make bench`
+measures (its output is not kept in expected/) are stated with the date and file they come
+from (docs/performance.md).
 
     tools/findings.py --markdown > docs/findings.md     write the document
     tools/findings.py --check docs/findings.md          exit 1 when it is out of date
