@@ -1,4 +1,4 @@
-"""The kinds of finding, and the checks that keep each entry of tools/findings.py honest about its kind.
+"""The kinds of finding, and the checks that keep each entry of tools/findings_*.py honest about its kind.
 
 A verdict word means one thing.  "fails" alone would mix a misprint, a claim that does not hold
 where the paper makes it, and a claim pushed beyond where the paper makes it; a reviewer can sign
