@@ -26,6 +26,8 @@
 #include "records/measures.hpp"
 #include "records/record.hpp"
 #include "records/synthetic.hpp"
+#include "fragility_capacities.hpp"
+#include "fragility_scene.hpp"
 #include "records_analysis.hpp"
 #include "scene.hpp"
 #include "studies/eq27_at_scale.hpp"
@@ -41,21 +43,12 @@ using studies::BlockFragility;
 using studies::BlockShape;
 using studies::Confirmation;
 using studies::Ida;
-using HalfPeriodArray = std::array<double, studies::kHalfPeriods>;
+using namespace fragility_scene;
 
 // The same words as the other record scenes, so a reader sees one reason.
 const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 const std::array<const char*, 4> kFiles = {"fragility_points.csv", "fragility_fits.csv", "fragility_eq27.csv",
                                            "fragility_empirical.csv"};
-
-// Two slendernesses by two sizes: a slender and a stockier block, a large
-// (p = 1.5 rad/s, about 4.4 m half-diagonal) and a small one (p = 3 rad/s,
-// about 1.1 m).  Chosen so that the scene runs in a few seconds on 2 cores.
-const std::vector<BlockShape> kBlocks = {{0.1, 1.5}, {0.1, 3.0}, {0.2, 1.5}, {0.2, 3.0}};
-constexpr int kResamples = 500;
-constexpr std::uint64_t kSeed = 1;
-constexpr double kBootstrapLevel = 0.9;
-constexpr double kWilsonLevel = 0.95;
 
 // ---- The fixed synthetic set (docs/fragility.md, "The synthetic set") ----
 // Mavroeidis & Papageorgiou (2003) pulses: five pulse periods T_p = 1/fp from
@@ -85,39 +78,11 @@ std::string format_g(double v) {
     return b;
 }
 
-std::string label(double v) {
-    char b[16];
-    std::snprintf(b, sizeof b, "%.2f", v);
-    return b;
-}
-
-studies::FragilityStudyOptions study_options() {
-    studies::FragilityStudyOptions o;
-    o.ida.model = table1_search();  // Table 1's model and solver (its scan fields are unused by the IDA)
-    o.ida.checks = studies::IdaOptions::Checks::first_collapse;
-    o.resamples = kResamples;
-    o.seed = kSeed;
-    o.level = kBootstrapLevel;
-    return o;
-}
-
 bool well_conditioned(Confirmation c) { return c == Confirmation::confirmed || c == Confirmation::disagrees; }
 
 bool ill_first_collapse(const Ida& ida) {
     return ida.point.collapsed && !ida.intervals.empty() && ida.intervals.front().has_lower &&
            ida.intervals.front().lower_check.confirmation == Confirmation::ill_conditioned;
-}
-
-// The reference method on a first-collapse bracket: both ends re-simulated
-// through records::collapses_at with table1_check() (GSL rk8pd at rtol = atol
-// = 1e-13 alpha) on the input scaled to each end's q, not through the IDA's own
-// check path; "yes" when it sees the same bracket.
-std::string reference_verdict(const dynamics::GroundInput& input, double alpha, double p, const studies::Bracket& b) {
-    const records::CollapseOptions check = table1_check();
-    auto at = [&](double q) {
-        return records::collapses_at(*studies::scaled(input, q * alpha / input.peak()), alpha, p, check);
-    };
-    return at(b.collapse) && !at(b.safe) ? "yes" : "no";
 }
 
 // One set of records through the study: the shared records (set "", whose
@@ -161,21 +126,6 @@ void run_set(SetRun& s, bool reference_mode) {
             return has ? reference_verdict(*s.inputs[job % n], ida.alpha, ida.p, ida.intervals.front().lower) : "-";
         },
         [&](std::size_t job, std::string& v) { s.reference[job / n][job % n] = v; });
-}
-
-std::string bootstrap_text() {
-    char boot[200];
-    std::snprintf(boot, sizeof boot,
-                  "%d resamples of the records with replacement, GSL mt19937 seeded %llu (machine-independent), "
-                  "percentile interval at %.0f %%",
-                  kResamples, static_cast<unsigned long long>(kSeed), 100 * kBootstrapLevel);
-    return boot;
-}
-
-std::string blocks_text() {
-    std::string blocks = "blocks (alpha, p rad/s):";
-    for (const BlockShape& b : kBlocks) blocks += " (" + label(b.alpha) + ", " + label(b.p) + ")";
-    return blocks;
 }
 
 const char* kPointColumnsNote =
@@ -381,20 +331,15 @@ std::vector<std::string> with_set(std::vector<std::string> columns) {
     return columns;
 }
 
-std::string wilson_note() {
-    char wil[160];
-    std::snprintf(wil, sizeof wil,
-                  "wilson_lo..hi: Wilson score interval at %.0f %%, the cases taken as independent (they are not: "
-                  "the blocks share their records)", 100 * kWilsonLevel);
-    return wil;
-}
-
 std::string reference_text(bool reference_mode) {
     return reference_mode ? "both ends of every confirmed first-collapse bracket re-simulated by "
                             "records::collapses_at with GSL rk8pd at rtol = atol = 1e-13 alpha (table1_check) on the "
                             "record scaled to each end's q; yes when it sees the same bracket"
                           : "reference column 'not checked' (see reproduce --reference fragility)";
 }
+
+// The same records for the refine method's files (fragility_capacities.cpp).
+CapacitySet capacity_set(const SetRun& s) { return {s.set, s.names, s.inputs, s.to}; }
 
 // ---- The shared records ----
 
@@ -469,6 +414,7 @@ void run_shared_records(SceneContext& ctx, const std::vector<RecordRow>& rows) {
     ctx.write(ft, "fragility_fits.csv");
     ctx.write(et, "fragility_eq27.csv");
     ctx.write(em, "fragility_empirical.csv");
+    write_capacities(ctx, {capacity_set(s)}, "fragility", inputs_text);
 }
 
 // ---- The synthetic set ----
@@ -693,15 +639,18 @@ void run_synthetic(SceneContext& ctx) {
     ctx.write(ft, "fragility_synthetic_fits.csv");
     ctx.write(et, "fragility_synthetic_eq27.csv");
     ctx.write(em, "fragility_synthetic_empirical.csv");
+    write_capacities(ctx, {capacity_set(sets[0]), capacity_set(sets[1])}, "fragility_synthetic", inputs_text,
+                     "synthetic");
 }
 
 }  // namespace
 
 void run_fragility(SceneContext& ctx) {
     const auto& rows = shared_records(ctx.reference());
-    if (rows.empty())
+    if (rows.empty()) {
         for (const char* f : kFiles) ctx.skip(f, kNoRecords);
-    else
+        for (const char* f : kCapacityFiles) ctx.skip(f, kNoRecords);
+    } else
         run_shared_records(ctx, rows);
     run_synthetic(ctx);
 }
