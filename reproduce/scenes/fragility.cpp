@@ -72,12 +72,6 @@ constexpr double kStochasticDt = 0.01, kStochasticDuration = 40.0;  // s
 // A to_k "recovers" the pulse's half-period 1/(2 fp) within this relative gap.
 constexpr double kRecoverTol = 0.05;
 
-std::string format_g(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
-}
-
 bool well_conditioned(Confirmation c) { return c == Confirmation::confirmed || c == Confirmation::disagrees; }
 
 bool ill_first_collapse(const Ida& ida) {
@@ -478,10 +472,10 @@ void run_synthetic(SceneContext& ctx) {
     const records::StochasticParameters d = records::default_stochastic_parameters();
     // The set as the constants above define it: fp, T_p and (gamma, nu) listed from them.
     std::string fps, shapes;
-    for (double fp : kPulseFp) fps += (fps.empty() ? "" : ", ") + format_g(fp);
+    for (double fp : kPulseFp) fps += (fps.empty() ? "" : ", ") + g_text(fp);
     for (const PulseShape& sh : kPulseShapes)
-        shapes += (shapes.empty() ? "(" : " and (") + format_g(sh.gamma) + ", " +
-                  (sh.nu == M_PI / 2 ? std::string("pi/2") : format_g(sh.nu)) + ")";
+        shapes += (shapes.empty() ? "(" : " and (") + g_text(sh.gamma) + ", " +
+                  (sh.nu == M_PI / 2 ? std::string("pi/2") : g_text(sh.nu)) + ")";
     char pulses[800], stochastic[900];
     std::snprintf(pulses, sizeof pulses,
                   "set pulse: %zu Mavroeidis & Papageorgiou (2003) velocity pulses (records::pulse_record, the "

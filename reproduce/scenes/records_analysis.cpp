@@ -3,6 +3,7 @@
 #include "harness/compare.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -23,6 +24,18 @@ namespace fs = std::filesystem;
 std::string records_dir() {
     if (const char* env = std::getenv("ROCKING_RECORDS")) return env;
     return std::string(ROCKING_SOURCE_DIR) + "/../shared/records";
+}
+
+std::string alpha_label(double alpha) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%.2f", alpha);
+    return text;
+}
+
+std::string g_text(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
 }
 
 records::CollapseOptions table1_search() {

@@ -26,6 +26,11 @@ struct RecordRow {
     std::array<std::string, 5> confirmed{};
 };
 
+// Table 1's alpha as the record scenes name it in their rows ("0.05", %.2f).
+std::string alpha_label(double alpha);
+// A width, a tolerance or a step as a note states it (%g: 1e-04 as 0.0001).
+std::string g_text(double v);
+
 // The records folder: $ROCKING_RECORDS, else <source>/../shared/records.
 std::string records_dir();
 // Every readable record in it, analysed (cached); empty when the folder is absent.

@@ -35,12 +35,6 @@ const char* kNoNorcia = "no Norcia record (esm/IT.NRC..H*) in the records folder
 const std::array<const char*, 5> kFiles = {"spectrum_intervals.csv", "spectrum_summary.csv", "spectrum_grid.csv",
                                            kRefinedFile, kRefinedIntervalsFile};
 
-std::string alpha_label(double a) {
-    char b[16];
-    std::snprintf(b, sizeof b, "%.2f", a);
-    return b;
-}
-
 // The Norcia records: the station where Table 1's search met islands.
 bool is_norcia(const RecordRow& r) {
     const std::string name = std::filesystem::path(r.file).filename().string();

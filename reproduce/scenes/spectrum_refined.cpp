@@ -29,18 +29,6 @@ constexpr double kRobustWidth = 5e-3;  // the library's default, stated here bec
 // The stated band below the grids' lowest p: what the grids call safe there.
 constexpr double kBelowGrid = 1.05;
 
-std::string alpha_text(double a) {
-    char b[16];
-    std::snprintf(b, sizeof b, "%.2f", a);
-    return b;
-}
-
-std::string short_text(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
-}
-
 // A well-conditioned bracket (confirmed, or seen otherwise by the second
 // solver) is held to the bisection's 1e-6; an ill-conditioned one, placed by
 // rounding, only to the spacing of the samples around it (<= w: an interval
@@ -110,8 +98,8 @@ studies::SpectrumOptions refined_spectrum_options() {
 void write_spectrum_refined(SceneContext& ctx, const std::vector<RefinedPair>& pairs, const std::string& inputs) {
     const studies::SpectrumOptions o = refined_spectrum_options();
     const std::string solver = "refine search: " + o.describe_grid() + "; " + o.describe_refinement();
-    const std::string width = "w = " + short_text(kWidth) + " in ln p (every island and gap wider than w found; "
-                              "narrower ones may be missed), robust width " + short_text(kRobustWidth) + " in ln p";
+    const std::string width = "w = " + g_text(kWidth) + " in ln p (every island and gap wider than w found; "
+                              "narrower ones may be missed), robust width " + g_text(kRobustWidth) + " in ln p";
 
     harness::Table t({"record", "alpha", "grid_lowest_p", "grid_intervals", "first_overturning_p",
                       "first_overturning_safe", "first_overturning_check", "first_below_grid_percent", "first_robust_p",
@@ -160,7 +148,7 @@ void write_spectrum_refined(SceneContext& ctx, const std::vector<RefinedPair>& p
         const Spectrum& g = *pr.grid;
         const bool has_grid = !g.intervals.empty();
         const double grid_p = has_grid ? g.intervals.front().from : 0;
-        t.row().add(pr.record).add(alpha_text(pr.alpha));
+        t.row().add(pr.record).add(alpha_label(pr.alpha));
         if (has_grid) t.add(grid_p);
         else t.add("none");
         t.add(static_cast<int>(g.intervals.size()));
@@ -187,7 +175,7 @@ void write_spectrum_refined(SceneContext& ctx, const std::vector<RefinedPair>& p
         for (std::size_t i = 0; i < r.intervals.size() && r.intervals[i].from <= cut; ++i) {
             const Interval& in = r.intervals[i];
             ++listed;
-            iv.row().add(pr.record).add(alpha_text(pr.alpha)).add(static_cast<int>(i + 1)).add(in.from).add(in.to);
+            iv.row().add(pr.record).add(alpha_label(pr.alpha)).add(static_cast<int>(i + 1)).add(in.from).add(in.to);
             if (in.has_lower) add_bracket(iv, in.lower, true);
             else iv.add("grid start").add("-").add("-").add("-").add("-");
             if (in.has_upper) add_bracket(iv, in.upper, false);
@@ -195,7 +183,7 @@ void write_spectrum_refined(SceneContext& ctx, const std::vector<RefinedPair>& p
             for (int e = 0; e < 2; ++e) {
                 const Boundary& b = e == 0 ? in.lower : in.upper;
                 if ((e == 0 ? in.has_lower : in.has_upper) && !b.detail.empty())
-                    iv.note("detail " + pr.record + " alpha " + alpha_text(pr.alpha) + " interval " +
+                    iv.note("detail " + pr.record + " alpha " + alpha_label(pr.alpha) + " interval " +
                                 std::to_string(i + 1) + (e == 0 ? " from" : " to"),
                             b.detail);
             }

@@ -59,12 +59,6 @@ const std::vector<PaperRow>& paper_rows() {
     return rows;
 }
 
-std::string alpha_label(double a) {
-    char b[16];
-    std::snprintf(b, sizeof b, "%.2f", a);
-    return b;
-}
-
 double eq27_crossing_two() { return numerics::root_of([](double x) { return q2_n6(x) - 2.0; }, 0.1, 3.0); }
 
 const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
@@ -90,12 +84,6 @@ std::string paper_record(int id) {
 // overturns), its boundary bisected to 1e-6 and checked (the input times
 // 1 +- 1e-13, then GSL rk8pd at 1e-13), beside Table 1's p.
 constexpr double kFirstWidth = 1e-4;
-
-std::string significant_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
 
 studies::SpectrumOptions first_overturning_search() {
     studies::SpectrumOptions o;
@@ -128,7 +116,7 @@ void write_table1_first_overturning(SceneContext& ctx, const std::vector<RecordR
                          o.describe_refinement());
     t.note("inputs", "the records and alphas of table1_records.csv; p_table1 is its p_collapse");
     t.note("columns", "p_first_overturning: the lowest overturning p found (every island wider than " +
-                          significant_text(kFirstWidth) + " in ln p below it is found); p_safe: the safe end of its bracket; boundary: its check (confirmed, or what the probe "
+                          g_text(kFirstWidth) + " in ln p below it is found); p_safe: the safe end of its bracket; boundary: its check (confirmed, or what the probe "
                       "or rk8pd saw); below_table1_percent: 100 (1 - p_first_overturning / p_table1); '-' where no p "
                       "up to 30 rad/s overturns the block");
     for (std::size_t j = 0; j < found.size(); ++j) {
@@ -179,7 +167,7 @@ void run_table1(SceneContext& ctx) {
 
     const auto& rows = shared_records(ctx.reference());
     if (rows.empty()) {
-        ctx.skip("table1_records.csv", kNoRecords);
+        for (const char* file : {"table1_records.csv", "table1_first_overturning.csv"}) ctx.skip(file, kNoRecords);
         return;
     }
     harness::Table rt({"record", "name", "alpha", "PGA_cms2", "q", "p_collapse", "p_safe", "bracket_confirmed"});
