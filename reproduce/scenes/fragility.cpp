@@ -28,6 +28,7 @@
 #include "records/synthetic.hpp"
 #include "fragility_capacities.hpp"
 #include "fragility_scene.hpp"
+#include "fragility_synthetic.hpp"
 #include "records_analysis.hpp"
 #include "scene.hpp"
 #include "studies/eq27_at_scale.hpp"
@@ -49,28 +50,6 @@ using namespace fragility_scene;
 const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 const std::array<const char*, 4> kFiles = {"fragility_points.csv", "fragility_fits.csv", "fragility_eq27.csv",
                                            "fragility_empirical.csv"};
-
-// ---- The fixed synthetic set (docs/fragility.md, "The synthetic set") ----
-// Mavroeidis & Papageorgiou (2003) pulses: five pulse periods T_p = 1/fp from
-// 0.5 to 3.125 s (a factor 1.6 apart), each with two (gamma, nu): a two-cycle
-// pulse in cosine phase and a three-cycle one in sine phase.  The amplitude
-// does not matter (the IDA scales the record); 2 s of rest before and after
-// the pulse, as docs/synthetic.md's study of the half-periods.
-constexpr std::array<double, 5> kPulseFp = {2.0, 1.25, 0.8, 0.5, 0.32};  // Hz
-struct PulseShape {
-    double gamma, nu;
-};
-const std::array<PulseShape, 2> kPulseShapes = {{{2.0, 0.0}, {3.0, M_PI / 2}}};
-constexpr double kPulseA = 0.5;      // m/s
-constexpr double kPulseRest = 2.0;   // s before and after the pulse's support
-constexpr double kPulseDt = 0.005;   // s
-// Rezaeian & Der Kiureghian (2008) stochastic records: the documented defaults
-// (records::StochasticDefaults), seeds 1 to 10, 40 s at 0.01 s (seed 1's record
-// is the one SyntheticStochastic.DefaultRecordIsPinned pins).
-constexpr int kStochasticSeeds = 10;
-constexpr double kStochasticDt = 0.01, kStochasticDuration = 40.0;  // s
-// A to_k "recovers" the pulse's half-period 1/(2 fp) within this relative gap.
-constexpr double kRecoverTol = 0.05;
 
 bool well_conditioned(Confirmation c) { return c == Confirmation::confirmed || c == Confirmation::disagrees; }
 
@@ -409,41 +388,6 @@ void run_shared_records(SceneContext& ctx, const std::vector<RecordRow>& rows) {
     ctx.write(et, "fragility_eq27.csv");
     ctx.write(em, "fragility_empirical.csv");
     write_capacities(ctx, {capacity_set(s)}, "fragility", inputs_text);
-}
-
-// ---- The synthetic set ----
-
-struct Synthetic {
-    std::string set;  // pulse, stochastic
-    records::Record record;
-    double duration = 0;    // s, as asked of the generator
-    double pulse_half = 0;  // 1/(2 fp) for a pulse
-};
-
-// The fixed synthetic set, pulses first (by T_p, then shape), then the seeds.
-std::vector<Synthetic> synthetic_set() {
-    std::vector<Synthetic> out;
-    for (double fp : kPulseFp)
-        for (const PulseShape& shape : kPulseShapes) {
-            records::PulseParameters p{kPulseA, fp, shape.nu, shape.gamma, 0};
-            const double half = shape.gamma / (2 * fp);
-            p.t0 = kPulseRest + half;
-            const double duration = p.t0 + half + kPulseRest;
-            out.push_back({"pulse", records::pulse_record(p, kPulseDt, duration), duration, 1 / (2 * fp)});
-        }
-    const records::StochasticParameters d = records::default_stochastic_parameters();
-    for (int seed = 1; seed <= kStochasticSeeds; ++seed)
-        out.push_back({"stochastic", records::stochastic_record(d, seed, kStochasticDt, kStochasticDuration),
-                       kStochasticDuration, 0});
-    return out;
-}
-
-// The k whose to_k lies within kRecoverTol of the pulse's half-period, as "5 7 9" ("none").
-std::string recovering(const HalfPeriodArray& to, double half) {
-    std::string out;
-    for (int k = 0; k < studies::kHalfPeriods; ++k)
-        if (std::fabs(to[k] / half - 1) <= kRecoverTol) out += (out.empty() ? "" : " ") + std::to_string(k + 1);
-    return out.empty() ? "none" : out;
 }
 
 void run_synthetic(SceneContext& ctx) {
