@@ -24,9 +24,6 @@ jobs=$(grep -vc -e '^#' -e '^$' "$tmp/m.csv"); jobs=$((jobs - 1))
 # Tests run as root in containers: OpenMPI refuses root unless told.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mpi() { local np=$1; shift; timeout 300 "$mpiexec" --oversubscribe -np "$np" "$rocking" batch "$@"; }
-same() {  # description, file, reference
-    if cmp -s "$2" "$3"; then echo "ok: $1"; else echo "FAIL: $1: differs from $3"; diff "$2" "$3" | head -5; fail=1; fi
-}
 
 # ---- The reference: threads on one machine.
 "$rocking" batch "$tmp/m.csv" --jobs 1 --output "$tmp/threads.csv" --quiet

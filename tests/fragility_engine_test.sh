@@ -14,9 +14,6 @@ mpiexec="${2:-none}"
 source "$(dirname "$0")/check_lib.sh"
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
-same() {  # description, file, reference
-    if cmp -s "$2" "$3"; then echo "ok: $1"; else echo "FAIL: $1: differs from $3"; diff "$2" "$3" | head -5; fail=1; fi
-}
 
 # Four stochastic records of 20 s (Rezaeian-Der Kiureghian, seeds 1-4), in m/s^2.
 files=()

@@ -17,9 +17,6 @@ py=/usr/bin/python3
 source "$(dirname "$0")/check_lib.sh"
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
-same() {  # description, file, reference
-    if cmp -s "$2" "$3"; then echo "ok: $1"; else echo "FAIL: $1: differs from $3"; diff "$2" "$3" | head -5; fail=1; fi
-}
 
 "$rocking" record synth --stochastic 3 --dt 0.01 --duration 20 --output "$tmp/s3.txt" >/dev/null || exit 1
 base=("$tmp/s3.txt" --unit m/s2 --alpha 0.1 --p 3 --q-max 2 --points 20 --quiet)

@@ -29,9 +29,6 @@ cd "$tmp" || exit 1
 # Tests run as root in containers: OpenMPI refuses root unless told.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mpi() { local np=$1; shift; timeout 300 "$mpiexec" --oversubscribe -np "$np" "$rocking" "$@"; }
-same() {  # description, file, reference
-    if cmp -s "$2" "$3"; then echo "ok: $1"; else echo "FAIL: $1: differs from $3"; diff "$2" "$3" | head -5; fail=1; fi
-}
 # How many times a file says `text` (rank 0 alone should), counted as text: two ranks'
 # lines may interleave.
 said() { grep -o -F -- "$2" "$1" | wc -l; }
