@@ -10,6 +10,7 @@ Run with /usr/bin/python3 (Debian's, where python3-mpmath is installed).
 import csv
 import math
 import os
+import random
 import sys
 
 
@@ -67,3 +68,33 @@ def directory_from_argv():
         print("usage: independent.py EXPECTED_SCENE_DIR", file=sys.stderr)
         sys.exit(2)
     return sys.argv[1]
+
+
+class GslMt19937:
+    """gsl_rng_mt19937 after gsl_rng_set(seed) (seed 0 is 4357, as GSL's), drawing through
+    Python's MT19937: the bootstraps' resamples (studies/resampling.hpp) redrawn."""
+
+    def __init__(self, seed):
+        s = (seed & 0xFFFFFFFF) or 4357
+        mt = [s]
+        for i in range(1, 624):
+            mt.append((1812433253 * (mt[-1] ^ (mt[-1] >> 30)) + i) & 0xFFFFFFFF)
+        self.r = random.Random()
+        self.r.setstate((3, tuple(mt) + (624,), None))
+
+    def uniform_int(self, n):
+        """gsl_rng_uniform_int: (draw - min) / (range / n), rejected while >= n."""
+        scale = 0xFFFFFFFF // n
+        while True:
+            k = self.r.getrandbits(32) // scale
+            if k < n:
+                return k
+
+
+def percentile(v, p):
+    """The percentile of the bootstraps' intervals: linear between order statistics at
+    p (n - 1), as studies/resampling.hpp's percentile_interval."""
+    v = sorted(v)
+    at = p * (len(v) - 1)
+    k = int(math.floor(at))
+    return v[k] + (at - k) * (v[k + 1] - v[k]) if k + 1 < len(v) else v[-1]

@@ -32,11 +32,14 @@ tests/test_stripe_fit.cpp holds).
 import argparse
 import json
 import math
-import random
+import os
 import sys
 from fractions import Fraction
 
 import mpmath as mp
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from independent_check import GslMt19937, percentile  # noqa: E402
 
 mp.mp.dps = 40
 
@@ -151,31 +154,6 @@ def raw_stripes(centres, shares):
     return [(q, n, float(mp.fsum(row[j] for row in shares))) for j, (q, _, _) in enumerate(centres)]
 
 
-class GslMt19937:
-    """gsl_rng_mt19937 after gsl_rng_set(seed) (seed 0 is 4357, as GSL's), drawing through Python's MT19937."""
-
-    def __init__(self, seed):
-        s = (seed & 0xFFFFFFFF) or 4357
-        mt = [s]
-        for i in range(1, 624):
-            mt.append((1812433253 * (mt[-1] ^ (mt[-1] >> 30)) + i) & 0xFFFFFFFF)
-        self.r = random.Random()
-        self.r.setstate((3, tuple(mt) + (624,), None))
-
-    def uniform_int(self, n):
-        """gsl_rng_uniform_int: (draw - min) / (range / n), rejected while >= n."""
-        scale = 0xFFFFFFFF // n
-        while True:
-            k = self.r.getrandbits(32) // scale
-            if k < n:
-                return k
-
-
-def percentile(v, p):
-    v = sorted(v)
-    at = p * (len(v) - 1)
-    k = int(math.floor(at))
-    return v[k] + (at - k) * (v[k + 1] - v[k]) if k + 1 < len(v) else v[-1]
 
 
 def bootstrap(centres, shares, resamples, seed, level, start):

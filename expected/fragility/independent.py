@@ -54,7 +54,6 @@ import ctypes
 import ctypes.util
 import math
 import os
-import random
 import re
 import sys
 from statistics import NormalDist
@@ -68,6 +67,7 @@ mp.dps = 30
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
 from independent_measures import half_periods  # noqa: E402
+from independent_check import GslMt19937, percentile  # noqa: E402
 
 TOL_RECORD = 1e-10   # PGA, PGV, q_input: the same formulas, rounded apart (measured 6e-14)
 TOL_TO = 1e-6        # to_k: as expected/table2 (FFT rounding between libraries)
@@ -204,30 +204,6 @@ def fit(points):
     return math.exp(mu1), math.exp(lb1)
 
 
-class GslMt19937:
-    """gsl_rng_mt19937 after gsl_rng_set(seed), through Python's MT19937."""
-
-    def __init__(self, seed):
-        s = seed & 0xFFFFFFFF or 4357
-        mt = [s]
-        for i in range(1, 624):
-            mt.append((1812433253 * (mt[-1] ^ (mt[-1] >> 30)) + i) & 0xFFFFFFFF)
-        self.r = random.Random()
-        self.r.setstate((3, tuple(mt) + (624,), None))
-
-    def uniform_int(self, n):
-        scale = 0xFFFFFFFF // n
-        while True:
-            k = self.r.getrandbits(32) // scale
-            if k < n:
-                return k
-
-
-def percentile(v, p):
-    v = sorted(v)
-    at = p * (len(v) - 1)
-    k = int(math.floor(at))
-    return v[k] + (at - k) * (v[k + 1] - v[k]) if k + 1 < len(v) else v[-1]
 
 
 def has_maximum(points):
