@@ -1,5 +1,7 @@
 #include "study_arguments.hpp"
 
+#include "studies/overturning_set.hpp"
+
 namespace rocking::python {
 
 std::string g7(double v) { return significant(v, 7); }
@@ -53,11 +55,13 @@ MethodChoice method_argument(const Text& method_given, const std::optional<Real>
     if (width && !m.refine) refuse("width goes with method='refine'");
     if (robust_width && !m.refine) refuse("robust_width goes with method='refine'");
     if (width) {
-        if (!(*width >= 1e-7 && *width <= 1e-1)) refuse("width: must be in [1e-7, 0.1] (in ln " + unit + ")");
+        if (!studies::in_width_range(*width))
+            refuse(std::string("width: must be in ") + studies::kWidthRange + " (in ln " + unit + ")");
         m.width = *width;
     }
     if (robust_width) {
-        if (!(*robust_width >= 1e-7 && *robust_width <= 1)) refuse("robust_width: must be in [1e-7, 1] (in ln " + unit + ")");
+        if (!studies::in_robust_width_range(*robust_width))
+            refuse(std::string("robust_width: must be in ") + studies::kRobustWidthRange + " (in ln " + unit + ")");
         m.robust_width = *robust_width;
     }
     return m;

@@ -11,6 +11,7 @@
 #include "batch/pool.hpp"
 #include "cli/options.hpp"
 #include "harness/output_paths.hpp"
+#include "studies/overturning_set.hpp"
 #include "harness/table.hpp"
 #include "numerics/number_text.hpp"
 
@@ -151,12 +152,14 @@ MethodChoice method_options(const Args& a, const std::string& unit) {
         if (a.values.count(flag) && !m.refine) throw UsageError(std::string(flag) + " goes with --method refine");
     if (a.values.count("--width")) {
         m.width = number("--width", a.values.at("--width"));
-        if (!(m.width >= 1e-7 && m.width <= 1e-1)) throw UsageError("--width: must be in [1e-7, 0.1] (in ln " + unit + ")");
+        if (!studies::in_width_range(m.width))
+            throw UsageError(std::string("--width: must be in ") + studies::kWidthRange + " (in ln " + unit + ")");
     }
     if (a.values.count("--robust-width")) {
         m.robust_width = number("--robust-width", a.values.at("--robust-width"));
-        if (!(m.robust_width >= 1e-7 && m.robust_width <= 1))
-            throw UsageError("--robust-width: must be in [1e-7, 1] (in ln " + unit + ")");
+        if (!studies::in_robust_width_range(m.robust_width))
+            throw UsageError(std::string("--robust-width: must be in ") + studies::kRobustWidthRange + " (in ln " + unit +
+                             ")");
     }
     return m;
 }

@@ -6,6 +6,7 @@
 
 #include "dynamics/stepper.hpp"
 #include "numerics/number_text.hpp"
+#include "studies/overturning_set.hpp"
 #include "studies/search_alpha.hpp"
 
 namespace rocking::jobs {
@@ -248,12 +249,13 @@ void method_from(const Columns& c, const std::vector<std::string>& row, Job& job
     const std::string &w = c.cell(row, "width"), &r = c.cell(row, "robust_width");
     if (!w.empty()) {
         job.width = number("width", w);
-        if (!(job.width >= 1e-7 && job.width <= 0.1)) bad("width", "must be in [1e-7, 0.1]" + in + " (got " + w + ")");
+        if (!studies::in_width_range(job.width))
+            bad("width", std::string("must be in ") + studies::kWidthRange + in + " (got " + w + ")");
     }
     if (!r.empty()) {
         job.robust_width = number("robust_width", r);
-        if (!(job.robust_width >= 1e-7 && job.robust_width <= 1))
-            bad("robust_width", "must be in [1e-7, 1]" + in + " (got " + r + ")");
+        if (!studies::in_robust_width_range(job.robust_width))
+            bad("robust_width", std::string("must be in ") + studies::kRobustWidthRange + in + " (got " + r + ")");
     }
 }
 

@@ -85,6 +85,15 @@ bool accept_interval(const MarginSample& A, const MarginSample& B, double d, con
 RefinedSet refine_set(const std::function<MarginSample(double)>& sample, const std::function<bool(double)>& collapses,
                       double lo, double hi, const RefineOptions& o);
 
+// The widths every front end (command line, batch row, Python) takes for the
+// refine method, in ln of the study's parameter: w in [1e-7, 0.1] (below,
+// ~1e7 samples per unit of ln x; above, a coarser search than the grid's
+// half step) and the robust width in [1e-7, 1].
+constexpr const char* kWidthRange = "[1e-7, 0.1]";  // as the messages print them
+constexpr const char* kRobustWidthRange = "[1e-7, 1]";
+inline bool in_width_range(double w) { return w >= 1e-7 && w <= 0.1; }
+inline bool in_robust_width_range(double r) { return r >= 1e-7 && r <= 1; }
+
 // The share of [from, to] (in ln x) that the spans cover.
 double covered_share(const std::vector<Span>& spans, double from, double to);
 
