@@ -122,6 +122,12 @@ def _t1c(d):
 
 SP = "spectrum/spectrum_summary.csv"
 SPI = "spectrum/spectrum_intervals.csv"
+SPR = "spectrum/spectrum_refined.csv"
+
+
+def median(values):
+    n = len(values)
+    return values[n // 2] if n % 2 else (values[n // 2 - 1] + values[n // 2]) / 2
 
 
 @entry(id="T1d", section="table1", scenes=["spectrum", "table1"],
@@ -132,14 +138,19 @@ SPI = "spectrum/spectrum_intervals.csv"
                 "at Table 1's five α: 200 p log-spaced from 0.3 to 30 rad/s and 199 more offset by half a step, "
                 "Table 1's bracket added, every change of outcome bisected to 1e-6 and checked (the input times "
                 "1 ± 1e-13, then GSL rk8pd at 1e-13); linearised eq. 3, exact solver, Housner's restitution, "
-                "overturning at any time.",
-       tests=["reproduce_spectrum", "reference_spectrum", "Spectrum.AnIslandBetweenTwoGridPointsIsFoundByTheOffsetGrid"],
+                "overturning at any time; beside the grids, the refine search of `docs/overturning_set.md` to w = 1e-3 "
+                "in ln p (`spectrum_refined.csv`).",
+       tests=["reproduce_spectrum", "reference_spectrum", "independent_spectrum_refined",
+              "Spectrum.AnIslandBetweenTwoGridPointsIsFoundByTheOffsetGrid"],
        command="build/reproduce spectrum && cat out/spectrum/spectrum_summary.csv",
        stands="caveat: not a bound", kind="caveat",
        scope="the 10 Norcia records here, not the paper's, at Table 1's five α, p = 0.3..30 rad/s; the paper claims "
              "no bound: p is raised \"until collapse occurs\"",
        notes=["The grids see an island only where one of their points falls in it: islands narrower than half a "
-              "step (×1.0116) may be missed, so the set may hold more islands than listed (`docs/spectrum.md`)."])
+              "step (×1.0116) may be missed, so the set may hold more islands than listed (`docs/spectrum.md`). "
+              "The refine search finds every island wider than w; narrower ones may still be missed, so a finer w "
+              "moves its first overturning lower or leaves it, unless the coarser search met by chance an island "
+              "narrower than the finer w (T1e)."])
 def _t1d(d):
     rows = d.rows(SP)
     over = [r for r in rows if r["lowest_p"] != "none"]
@@ -148,6 +159,12 @@ def _t1d(d):
     worst = min(below, key=lambda r: float(r["lowest_over_table1"]))
     intervals = d.rows(SPI)
     narrow = [r for r in intervals if r["to"] != "" and (float(r["to"]) / float(r["from"]) - 1) < 0.01]
+    refined = [r for r in d.rows(SPR) if r["first_below_grid_percent"] != "-"]
+    first = sorted(float(r["first_below_grid_percent"]) for r in refined)
+    first_below = [v for v in first if v > 0.1]
+    far = max(refined, key=lambda r: float(r["first_below_grid_percent"]))
+    robust_above = [r for r in refined if r["robust_below_grid_percent"] != "-"
+                    and float(r["robust_below_grid_percent"]) < -0.1]
     return dict(label="caveat: not a bound",
                 verdict=f"of the {len(over)} (record, α) pairs where a Norcia record overturns the block, "
                         f"{len(below)} overturn it more than 0.1 % below Table 1's p, at most "
@@ -155,11 +172,18 @@ def _t1d(d):
                         f"{g(worst['lowest_p'], 5)} against {g(worst['table1_p'], 5)} rad/s); {len(narrow)} of the "
                         f"{len(intervals)} overturning intervals are narrower than 1 %, and in {len(off_grid)} pairs "
                         f"Table 1's own p lies on an island that no point of either grid reached. The set of "
-                        f"overturning p near its lower edge is a swarm of islands; a single p per record hides it.",
+                        f"overturning p near its lower edge is a swarm of islands; a single p per record hides it. "
+                        f"The refine search (w = 1e-3) finds the first overturning more than 0.1 % below the grids' "
+                        f"lowest p in {len(first_below)} of the {len(refined)} pairs (median {g(median(first), 2)} %, "
+                        f"at most {g(far['first_below_grid_percent'], 3)} %: {far['record']}, α = {far['alpha']}), and "
+                        f"its first robust collapse (an interval wider than 5e-3 in ln p) more than 0.1 % above the "
+                        f"grids' lowest p in {len(robust_above)}: the grids' lowest p is often itself an island.",
                 evidence=[ev(SP, f"row `{worst['record']}`, `alpha = {worst['alpha']}`", "lowest_over_table1",
                              g(worst["lowest_over_table1"], 5)),
                           ev(SP, f"the {len(off_grid)} rows with `table1_on_island_off_grid = yes`",
-                             "table1_on_island_off_grid", "yes")])
+                             "table1_on_island_off_grid", "yes"),
+                          ev(SPR, f"row `{far['record']}`, `alpha = {far['alpha']}`", "first_below_grid_percent",
+                             g(far["first_below_grid_percent"], 5))])
 
 
 T1F = "table1/table1_first_overturning.csv"
@@ -180,7 +204,8 @@ T1F = "table1/table1_first_overturning.csv"
        stands="caveat: not a bound", kind="caveat",
        scope="the 16 real records here, not the paper's, at Table 1's five α, p = 0.3..30 rad/s, every island wider "
              "than 1e-4 in ln p; the paper claims no bound: p is raised \"until collapse occurs\"",
-       notes=["Islands narrower than w may be missed, so a finer w can only move the first overturning lower: on three "
+       notes=["Islands narrower than w may be missed, so a finer w moves the first overturning lower or leaves it (barring "
+              "an island narrower than the finer w met by chance at the coarser): on three "
               "rows at w = 1e-5, IT.NRC HGN 20160824_023329 α 0.05 moves from 2.9015 to 2.5505 rad/s and IT.AQK HNE "
               "α 0.25 from 8.6098 to 7.1930, while TV.MIR01 HNE α 0.05 stays at 1.5081 (expected/table1/PROVENANCE.md). "
               "The first overturning is a property of the resolution asked for, not a single number of the record.",
@@ -194,11 +219,10 @@ def _t1e(d):
     below = [v for v in shifts if v > 0.1]
     above = [v for v in shifts if v < 0]
     worst = max(both, key=lambda r: float(r["below_table1_percent"]))
-    median = shifts[len(shifts) // 2] if len(shifts) % 2 else (shifts[len(shifts) // 2 - 1] + shifts[len(shifts) // 2]) / 2
     confirmed = sum(1 for r in both if r["boundary"] == "confirmed")
     return dict(label="caveat: not a bound",
                 verdict=f"of the {len(both)} (record, α) pairs where Table 1's search finds a p, the block first "
-                        f"overturns more than 0.1 % below it in {len(below)}; the median shift is {g(median, 3)} %, "
+                        f"overturns more than 0.1 % below it in {len(below)}; the median shift is {g(median(shifts), 3)} %, "
                         f"the largest {g(worst['below_table1_percent'], 3)} % ({worst['record']}, α = "
                         f"{worst['alpha']}: {g(worst['p_first_overturning'], 5)} against {g(worst['p_table1'], 5)} "
                         f"rad/s). In {len(above)} pairs the first overturning found lies just above Table 1's p: "
