@@ -165,6 +165,42 @@ TEST(EscapeMargin, RestOfInputIsItsIntegralByQuadrature) {
     EXPECT_GT(checked, 500);
 }
 
+TEST(EscapeMargin, ARetunedRestOfInputIsTheOneBuiltAtItsP) {
+    // The spectrum's search retunes one RestOfInput per run (without L, and
+    // FlightMargins without the tangent in q): J, and every flight's margin,
+    // bit for bit those of a RestOfInput built at that p with L, whatever p
+    // it was tuned to before; L refused where it was not built.
+    std::vector<SampledInput> recs = synthetic_records(2, 3);
+    for (const SampledInput& rec : recs) {
+        RestOfInput retuned(rec, 30.0, false);
+        EXPECT_FALSE(retuned.has_past());
+        EXPECT_THROW(retuned.past(0.1), std::logic_error);
+        for (double p : {0.7, 2.5, 11.0, 2.5 * (1 + 1e-9)}) {
+            retuned.retune(p);
+            const RestOfInput fresh(rec, p);
+            ASSERT_EQ(retuned.p(), p);
+            for (double t = 0; t < rec.t_end() + 0.5; t += 0.37 * rec.dt() + 0.01)
+                ASSERT_TRUE(same_bits(retuned.at(t), fresh.at(t))) << "p " << p << ", t " << t;
+            Model model;
+            model.block = Block::from_p(p, 0.1);
+            model.restitution = housner_restitution(0.1);
+            const double scale = 2.0 * 0.1 / rec.peak();
+            const SampledInput in = rec.scaled_by(scale, "twice the uplift");
+            FlightMargins lean(model, retuned, scale, false), full(model, fresh, scale);
+            EXPECT_THROW(FlightMargins(model, retuned, scale), std::invalid_argument) << "slopes need L";
+            simulate_record_kernel(model, in, SimulationOptions{}, lean);
+            simulate_record_kernel(model, in, SimulationOptions{}, full);
+            ASSERT_EQ(lean.flights().size(), full.flights().size());
+            ASSERT_FALSE(full.flights().empty()) << "twice the uplift threshold lifts the block";
+            for (std::size_t j = 0; j < full.flights().size(); ++j) {
+                EXPECT_TRUE(same_bits(lean.flights()[j].xi, full.flights()[j].xi)) << "p " << p << ", flight " << j;
+                EXPECT_TRUE(std::isnan(lean.flights()[j].slope));
+                EXPECT_TRUE(std::isfinite(full.flights()[j].slope));
+            }
+        }
+    }
+}
+
 TEST(EscapeMargin, XiTimesExpMinusPtIsConstantAlongAFlight) {
     // The kernel's flights against the general path's closed-form
     // trajectory (ExactStepper, theta(t) kept every 3.7 ms): Xi e^{-p t} at

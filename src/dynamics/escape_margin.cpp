@@ -36,15 +36,25 @@ double piece_integral(double a0, double c1, double u, double p) {
 //   L((k + 1) dt) = e^{-p dt} L(k dt) + p int_0^dt e^{-p s} (a_{k+1} - c1 s) ds.
 // (docs/overturning_set.md, section 1.)  Both multiply the past by e^{-p dt} < 1:
 // the recursions damp their rounding.
-RestOfInput::RestOfInput(const SampledInput& record, double p)
-    : a_(record.samples()), J_(a_.size(), 0.0), L_(a_.size(), 0.0), dt_(record.dt()), p_(p) {
+RestOfInput::RestOfInput(const SampledInput& record, double p, bool with_past)
+    : a_(record.samples().data()), n_(record.samples().size()), J_(n_), L_(with_past ? n_ : 0), dt_(record.dt()),
+      with_past_(with_past) {
+    if (n_ < 2) throw std::invalid_argument("RestOfInput: the record needs at least two samples");
+    retune(p);
+}
+
+void RestOfInput::retune(double p) {
     if (!(p > 0 && std::isfinite(p))) throw std::invalid_argument("RestOfInput: p must be finite and > 0");
+    p_ = p;
     const double x = p * dt_, decay = std::exp(-x), e1 = -std::expm1(-x), e2 = one_minus_exp_times_1_plus(x) / p;
-    const std::size_t n = a_.size();
+    const std::size_t n = n_;
+    J_[n - 1] = 0.0;
     for (std::size_t k = n - 1; k-- > 0;) {
         const double c1 = (a_[k + 1] - a_[k]) / dt_;
         J_[k] = decay * J_[k + 1] + (a_[k] * e1 + c1 * e2);
     }
+    if (!with_past_) return;
+    L_[0] = 0.0;
     for (std::size_t k = 0; k + 1 < n; ++k) {
         const double c1 = (a_[k + 1] - a_[k]) / dt_;
         L_[k + 1] = decay * L_[k] + (a_[k + 1] * e1 - c1 * e2);
@@ -53,7 +63,7 @@ RestOfInput::RestOfInput(const SampledInput& record, double p)
 
 std::size_t RestOfInput::piece(double t) const {
     const double k = std::floor(t / dt_);
-    return k <= 0 ? 0 : std::min(static_cast<std::size_t>(k), a_.size() - 2);
+    return k <= 0 ? 0 : std::min(static_cast<std::size_t>(k), n_ - 2);
 }
 
 double RestOfInput::accel(double t) const {
@@ -79,6 +89,7 @@ double RestOfInput::at(double t) const {
 // From the piece's start to t (its integral read backwards from t), and
 // after the end the last value decaying.
 double RestOfInput::past(double t) const {
+    if (!with_past_) throw std::logic_error("RestOfInput::past: built without L");
     if (t >= t_end()) return std::exp(-p_ * (t - t_end())) * L_.back();
     const std::size_t k = piece(t);
     const double c1 = (a_[k + 1] - a_[k]) / dt_, from_start = std::fma(-double(k), dt_, t);
@@ -110,11 +121,12 @@ double escape_margin(const Model& model, const RestOfInput& rest, double scale, 
     return (sigma * theta - alpha + sigma * omega / p + sigma * scale * rest.at(t)) / alpha;
 }
 
-FlightMargins::FlightMargins(const Model& model, const RestOfInput& rest, double scale)
-    : model_(model), rest_(rest), scale_(scale) {
+FlightMargins::FlightMargins(const Model& model, const RestOfInput& rest, double scale, bool slopes)
+    : model_(model), rest_(rest), scale_(scale), slopes_(slopes) {
     if (model.equation != Equation::linearised)
         throw std::invalid_argument("FlightMargins: the escape margin is eq. 3's (the linearised equation)");
     if (model.block.p != rest.p()) throw std::invalid_argument("FlightMargins: the RestOfInput is at another p");
+    if (slopes && !rest.has_past()) throw std::invalid_argument("FlightMargins: the slopes need the RestOfInput's L");
 }
 
 void FlightMargins::clear() {
@@ -143,6 +155,11 @@ FlightMargins::Tangent FlightMargins::carried_to(double t) const {
 // time) + Xi' t_q, with Xi' = p Xi on the flight and t_q the start's move.
 void FlightMargins::flight(const FlightStart& s) {
     const double alpha = model_.block.alpha, p = model_.block.p, q = scale_;
+    if (!slopes_) {
+        flights_.push_back({s.t, s.sigma, escape_margin(model_, rest_, q, s.t, s.theta, s.omega, s.sigma),
+                            std::numeric_limits<double>::quiet_NaN()});
+        return;
+    }
     const bool uplift = s.theta == 0.0 && s.omega == 0.0;
     const bool rebound = !uplift && !flights_.empty() && s.theta == 0.0;
     double t_q = 0.0;

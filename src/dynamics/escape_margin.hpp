@@ -35,12 +35,18 @@ double piece_integral(double a0, double c1, double u, double p);
 // p, each by one exact recursion over the samples (backward for J, forward
 // for L) and inside a piece by the piece's own integral.  Both are linear in
 // the record: for the record times q they are q times these, so one
-// RestOfInput serves a whole IDA.
+// RestOfInput serves a whole IDA.  It reads the record's samples in place:
+// the record must outlive it.  A search over p retunes one RestOfInput
+// (`retune`) instead of building one per p, so that the record's length in
+// doubles is allocated once.  L serves only the tangent in q (stable_gain,
+// past); built without it (`with_past` false) a RestOfInput costs half.
 class RestOfInput {
 public:
-    RestOfInput(const SampledInput& record, double p);
+    RestOfInput(const SampledInput& record, double p, bool with_past = true);
+    void retune(double p);  // J (and L) at another p, in place
     double p() const { return p_; }
-    double t_end() const { return dt_ * (a_.size() - 1); }
+    bool has_past() const { return with_past_; }
+    double t_end() const { return dt_ * (n_ - 1); }
     double at(double t) const;    // J(t)
     double past(double t) const;  // L(t)
     double accel(double t) const; // a(t)/g, 0 after the end
@@ -57,8 +63,11 @@ public:
 
 private:
     std::size_t piece(double t) const;
-    std::vector<double> a_, J_, L_;
-    double dt_, p_;
+    const double* a_;
+    std::size_t n_;
+    std::vector<double> J_, L_;
+    double dt_, p_ = 0;
+    bool with_past_;
 };
 
 // The escape margin Xi of the state (theta, theta') on corner sigma at t,
@@ -90,9 +99,12 @@ struct FlightMargin {
 // near), and the start moves by t_q = -a / a' (the input reaches the
 // threshold).  A rest ends a flight without a successor; the next flight is
 // an uplift.
+//
+// Without `slopes` (a search over p, whose slopes come from a second run) the
+// tangent is not carried and each flight's slope is NaN.
 class FlightMargins : public FlightObserver {
 public:
-    FlightMargins(const Model& model, const RestOfInput& rest, double scale);
+    FlightMargins(const Model& model, const RestOfInput& rest, double scale, bool slopes = true);
     void flight(const FlightStart& start) override;
 
     const std::vector<FlightMargin>& flights() const { return flights_; }
@@ -109,6 +121,7 @@ private:
     Model model_;
     const RestOfInput& rest_;
     double scale_;
+    bool slopes_;
     Tangent tangent_;
     std::vector<FlightMargin> flights_;
 };

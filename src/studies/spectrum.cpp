@@ -185,32 +185,64 @@ bool record_kernel_runs(const GroundInput& input, double alpha, const SpectrumOp
            dynamics::record_kernel_applies(model_at(alpha, o.p_min, o.model), *record, sim);
 }
 
-// The run at p with each flight's escape margin, as records::collapses_at
-// runs it (the same model and options: the observer changes no outcome,
-// EscapeMargin.TheObserverChangesNoOutcome).
-bool run_with_margins(const dynamics::SampledInput& record, double alpha, double p, const SpectrumOptions& o,
-                      std::vector<dynamics::FlightMargin>& flights) {
-    dynamics::SimulationOptions sim;
-    sim.solver = o.model.solver;
-    sim.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
-    const dynamics::Model model = model_at(alpha, p, o.model);
-    const dynamics::RestOfInput rest(record, p);
-    dynamics::FlightMargins margins(model, rest, 1.0);
-    const bool c = dynamics::simulate_with_margins(model, record, sim, margins).collapse(o.model.criterion, alpha);
-    flights = margins.flights();
-    return c;
-}
+// The two runs of a sample in p, at p and at p (1 + slope_step), each with
+// its flights' escape margins (no tangent in q: the slopes in ln p are the
+// two runs' difference), run as records::collapses_at runs them (the same
+// model and options: the observer changes no outcome,
+// EscapeMargin.TheObserverChangesNoOutcome).  J is retuned in place from
+// sample to sample: one allocation of the record's length per search.
+class PMargins {
+public:
+    PMargins(const dynamics::SampledInput& record, double alpha, const SpectrumOptions& o)
+        : record_(record), alpha_(alpha), o_(o), at_p_(record, o.p_min, false), at_p2_(record, o.p_min, false) {
+        sim_.solver = o.model.solver;
+        sim_.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
+    }
+    MarginSample operator()(double p) {
+        MarginSample s;
+        s.collapse = run(at_p_, p, flights_);
+        const double p2 = p * (1 + o_.slope_step);
+        if (run(at_p2_, p2, flights2_) != s.collapse || flights2_.size() != flights_.size()) return s;
+        const double d = std::log(p2 / p);
+        s.has_margins = true;
+        for (std::size_t j = 0; j < flights_.size(); ++j) {
+            s.xi.push_back(flights_[j].xi);
+            s.slope.push_back((flights2_[j].xi - flights_[j].xi) / d);
+        }
+        return s;
+    }
+
+private:
+    bool run(dynamics::RestOfInput& rest, double p, std::vector<dynamics::FlightMargin>& flights) {
+        rest.retune(p);
+        const dynamics::Model model = model_at(alpha_, p, o_.model);
+        dynamics::FlightMargins margins(model, rest, 1.0, false);
+        const bool c = dynamics::simulate_with_margins(model, record_, sim_, margins).collapse(o_.model.criterion, alpha_);
+        flights = margins.flights();
+        return c;
+    }
+
+    const dynamics::SampledInput& record_;
+    double alpha_;
+    const SpectrumOptions& o_;
+    dynamics::SimulationOptions sim_;
+    dynamics::RestOfInput at_p_, at_p2_;
+    std::vector<dynamics::FlightMargin> flights_, flights2_;
+};
 
 // The refine method's sampler: margins_in_p where the record kernel runs the
 // model, the outcome alone elsewhere.
 class PSampler {
 public:
     PSampler(const GroundInput& input, double alpha, const SpectrumOptions& o)
-        : input_(input), alpha_(alpha), o_(o), margins_(record_kernel_runs(input, alpha, o)) {}
-    bool with_margins() const { return margins_; }
+        : input_(input), alpha_(alpha), o_(o) {
+        if (record_kernel_runs(input, alpha, o))
+            margins_ = std::make_unique<PMargins>(dynamic_cast<const dynamics::SampledInput&>(input), alpha, o);
+    }
+    bool with_margins() const { return margins_ != nullptr; }
     bool collapses(double p) const { return records::collapses_at(input_, alpha_, p, o_.model); }
     MarginSample operator()(double p) const {
-        if (margins_) return margins_in_p(input_, alpha_, p, o_);
+        if (margins_) return (*margins_)(p);
         MarginSample s;
         s.collapse = collapses(p);
         return s;
@@ -220,7 +252,7 @@ private:
     const GroundInput& input_;
     double alpha_;
     const SpectrumOptions& o_;
-    bool margins_;
+    std::unique_ptr<PMargins> margins_;  // its buffers change from sample to sample
 };
 
 // The three numbers of issue 39 from the intervals, both methods alike; the
@@ -277,20 +309,9 @@ void refined_spectrum(Spectrum& s, const GroundInput& input, double alpha, const
 }  // namespace
 
 MarginSample margins_in_p(const GroundInput& input, double alpha, double p, const SpectrumOptions& o) {
-    MarginSample s;
     if (!record_kernel_runs(input, alpha, o)) throw std::invalid_argument("margins_in_p: the record kernel does not run this model");
-    const auto& record = dynamic_cast<const dynamics::SampledInput&>(input);
-    std::vector<dynamics::FlightMargin> at_p, at_p2;
-    s.collapse = run_with_margins(record, alpha, p, o, at_p);
-    const double p2 = p * (1 + o.slope_step);
-    if (run_with_margins(record, alpha, p2, o, at_p2) != s.collapse || at_p2.size() != at_p.size()) return s;
-    const double d = std::log(p2 / p);
-    s.has_margins = true;
-    for (std::size_t j = 0; j < at_p.size(); ++j) {
-        s.xi.push_back(at_p[j].xi);
-        s.slope.push_back((at_p2[j].xi - at_p[j].xi) / d);
-    }
-    return s;
+    PMargins margins(dynamic_cast<const dynamics::SampledInput&>(input), alpha, o);
+    return margins(p);
 }
 
 Spectrum rocking_spectrum(const GroundInput& input, double alpha, const SpectrumOptions& o) {
