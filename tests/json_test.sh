@@ -49,6 +49,9 @@ NULL_REASONS = {
     "rows_end_reason": lambda o: o.get("rows_complete") is True,
     "bootstrap": lambda o: o.get("bootstrap_run") is False and "bootstrap_note" in o,
     "shares[].bootstrap": lambda o: o.get("bootstrap_run") is False and "bootstrap_note" in o,
+    "thickness": lambda o: o.get("given") == "alpha and p",
+    "height": lambda o: o.get("given") == "alpha and p",
+    "R": lambda o: o.get("given") == "alpha and p",
 }
 
 def unexplained(value, top, where):
