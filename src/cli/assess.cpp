@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/geometry.hpp"
 #include "cli/options.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "harness/table.hpp"
@@ -29,46 +30,39 @@ records::PeakMotion peak_motion_of(const records::Record& r, const std::string& 
 
 int cmd_assess(int argc, char** argv) {
     using namespace rocking::dynamics;
-    const std::string path =
-        file_argument(argc, argv, 2, "usage: rocking assess FILE --alpha A (--height H | --half-height h)");
-    const Args a = parse(argc, argv, 3, {"--alpha", "--height", "--half-height", "--unit", "--dt"});
-    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
-    const double alpha = number("--alpha", a.values.at("--alpha"));
-    if (a.values.count("--height") + a.values.count("--half-height") != 1)
-        throw UsageError("give exactly one of --height and --half-height");
-    Block b{};
-    try {
-        b = a.values.count("--height") ? Block::from_full_height(number("--height", a.values.at("--height")), alpha)
-                                       : Block::from_half_height(number("--half-height", a.values.at("--half-height")), alpha);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
-    }
+    const std::string path = file_argument(
+        argc, argv, 2, "usage: rocking assess FILE (--thickness B --height H | --alpha A (--height H | --half-height h | --p P))");
+    std::vector<std::string> allowed = {"--unit", "--dt"};
+    allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
+    const Args a = parse(argc, argv, 3, allowed);
+    const GivenBlock given = block_option(a);
+    const Block b = given.block;
+    const double alpha = b.alpha;
     const records::Record r = load_record(path, a);
     const records::PeakMotion m = peak_motion_of(r, path);
     const double to5 = m.to5, x = b.p * to5;
     if (!(x >= kSmallestX)) {
         char text[200];
         std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
-                      "1e-150, where eq. 27 overflows", a.values.count("--height") ? "--height" : "--half-height", b.p, to5);
+                      "1e-150, where eq. 27 overflows", a.values.count("--height") ? "--height" : a.values.count("--half-height") ? "--half-height" : "--p", b.p, to5);
         throw UsageError(text);
     }
     const double q27 = q2_n6(x), q_record = m.pga / (alpha * kGravity);
     // A PGA near the largest double over a tiny alpha printed "q_record": inf.
     if (!std::isfinite(q_record))
-        throw std::runtime_error(path + ": the record's q = PGA/(alpha g) overflows a double at --alpha " +
-                                 a.values.at("--alpha") + " (PGA = " + four(m.pga) + " m/s^2)");
+        throw std::runtime_error(path + ": the record's q = PGA/(alpha g) overflows a double at alpha = " +
+                                 significant(alpha, 6) + " (PGA = " + four(m.pga) + " m/s^2)");
     const bool safe = q_record < q27;
     if (a.json) {
         std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << json_number(alpha)
-                  << ", \"p\": " << json_number(b.p) << ", \"to5\": " << json_number(to5)
+                  << ", \"p\": " << json_number(b.p) << ", " << block_json(given) << ", \"to5\": " << json_number(to5)
                   << ", \"x\": " << json_number(x) << ", \"q_eq27\": " << json_number(q27)
                   << ", \"q_record\": " << json_number(q_record) << ", \"passes\": " << (safe ? "true" : "false")
                   << "}\n";
     } else {
         std::printf("%s: %s\n", r.name.c_str(), safe ? "PASSES (the record's q is below eq. 27's)" : "FAILS");
         // four(): a tiny --height gives a p of 1e150, which %.4f printed in 150 digits.
-        std::printf("  block: alpha = %g, p = %s rad/s (eqs. 2, 4, half-height %s m)\n", alpha, four(b.p).c_str(),
-                    four(b.R * std::cos(alpha)).c_str());
+        std::printf("  block: %s\n", describe_block(given).c_str());
         std::printf("  record: PGA = %s g, to_5 = pi PGV/PGA = %s s; x = p to_5 = %s\n", four(m.pga / kGravity).c_str(),
                     four(to5).c_str(), four(x).c_str());
         std::printf("  q from eq. 27 = %s; the record's q = PGA/(alpha g) = %s\n", four(q27).c_str(), four(q_record).c_str());
