@@ -79,4 +79,23 @@ sim=("$rocking" simulate --record "$tmp/sine1.txt" --unit g --record-dt 0.01 --a
 over() { "${sim[@]}" --q "$1" | $py -c "import json,sys; print(json.load(sys.stdin)['collapse'])"; }
 check "simulate overturns at the first q" "True"  over "$qc"
 check "simulate spares the safe end"      "False" over "$q"
+# Blocks as built (issue 40): --block BxH is alpha = atan(B/H), p = sqrt(3 g/(4 R)),
+# R = sqrt(B^2 + H^2)/2 (eqs. 2, 4), here computed by Python, and the study the same
+# as with those alpha and p given, but for the block's name.
+check "block: its name in the text" "alpha = 0.14889, p = 1.90737 rad/s (block 0.6x4 m):" "${run[@]}" --block 0.6x4
+check "block with alpha refused" "--block gives each block's alpha and p" "${run[@]}" --block 0.6x4 --alpha 0.1
+status "block with alpha refused" 2 "${run[@]}" --block 0.6x4 --alpha 0.1
+check "block out of the search's alpha" "--block 3.5x4: alpha = atan(B/H) = 0.71883 rad, outside the searches' (0, 0.7)" "$rocking" fragility x --block 3.5x4
+check "block wider than tall" "alpha = atan(B/H) = 0.896055 rad is not below pi/4" "$rocking" fragility x --block 5x4
+check "block grammar" "each block is THICKNESSxHEIGHT in m, e.g. 0.6x4 (got '0.6*4')" "$rocking" fragility x --block '0.6*4'
+read -r alpha p < <($py -c "import math; B, H = 0.6, 4.0; R = math.hypot(B, H) / 2; print(repr(math.atan(B / H)), repr(math.sqrt(3 * 9.81 / (4 * R))))")
+"${run[@]}" --block 0.6x4 --json >"$tmp/built.json"
+"${run[@]}" --alpha "$alpha" --p "$p" --json >"$tmp/given.json"
+if $py - "$tmp/built.json" "$tmp/given.json" <<'PY'
+import json, sys
+built, given = (json.load(open(f)) for f in sys.argv[1:3])
+assert built["blocks"][0].pop("built") == "0.6x4"
+assert built == given, "the blocks as built and as alpha, p differ"
+PY
+then echo "ok: --block 0.6x4 is alpha $alpha, p $p"; else echo "FAIL: --block 0.6x4 against alpha, p"; fail=1; fi
 exit $fail

@@ -1,5 +1,7 @@
 #include "cli/geometry.hpp"
 
+#include "studies/search_alpha.hpp"
+
 #include <optional>
 #include <stdexcept>
 
@@ -43,6 +45,22 @@ std::vector<GivenBlock> block_list_option(const Args& a, const std::string& flag
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
+}
+
+std::vector<studies::BlockShape> study_blocks(const Args& a) {
+    if (a.values.count("--alpha") || a.values.count("--p"))
+        throw UsageError("--block gives each block's alpha and p: give it without --alpha and --p");
+    std::vector<studies::BlockShape> out;
+    for (const GivenBlock& g : block_list_option(a)) {
+        if (!studies::in_search_alpha_range(g.block.alpha))
+            throw UsageError("--block " + g.label + ": alpha = atan(B/H) = " + significant(g.block.alpha, 6) +
+                             " rad, outside the searches' " + studies::kSearchAlphaRange);
+        if (!(g.block.p > 0.01 && g.block.p < 1000))
+            throw UsageError("--block " + g.label + ": p = " + significant(g.block.p, 6) +
+                             " rad/s, outside the studies' (0.01, 1000) rad/s");
+        out.push_back({g.block.alpha, g.block.p, g.label});
+    }
+    return out;
 }
 
 std::string block_json(const GivenBlock& b) {

@@ -115,6 +115,7 @@ Ida incremental_dynamic_analysis(const dynamics::GroundInput& input, double alph
 
 struct BlockShape {
     double alpha = 0, p = 0;
+    std::string built;  // "0.6x4" where given as thickness x height (m), for the outputs; else empty
 };
 
 struct FragilityStudyOptions {
