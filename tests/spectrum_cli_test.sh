@@ -253,6 +253,41 @@ norcia="$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC"
 if [[ -f "$norcia" ]]; then
     expect "Table 1's island named" 0 "p = 1.908956 rad/s (safe at 1.908809); it lies on an island narrower than the grids' step, found through its bracket" \
         "$rocking" spectrum "$norcia" --alpha 0.1
+    # Marked blocks (issue 40): each one's outcome is simulate's at its own size
+    # (the same default model), and the nearest overturning p above a safe one
+    # is the start of a spectrum interval that simulate sees overturn, with the
+    # height of eqs. 2 and 4 at it.
+    "$rocking" spectrum "$norcia" --mark 1x4,0.6x4,0.25x3 --json >"$tmp/marks.json"
+    for block in 1x4 0.6x4 0.25x3; do
+        B=${block%x*} H=${block#*x}
+        sim=$("$rocking" simulate --record "$norcia" --thickness "$B" --height "$H" --json |
+              $py -c "import json,sys; print(json.load(sys.stdin)['collapse_overturning'])")
+        mark=$($py -c "import json,sys; print([m for m in json.load(open(sys.argv[1]))['marks'] if m['built'] == sys.argv[2]][0]['overturns'])" "$tmp/marks.json" "$block")
+        if [[ "$sim" == "$mark" ]]; then echo "ok: mark $block: overturns $mark, as simulate"; else echo "FAIL: mark $block: $mark, simulate $sim"; fail=1; fi
+    done
+    if $py - "$tmp/marks.json" "$rocking" "$norcia" <<'PY'
+import json, math, subprocess, sys
+d = json.load(open(sys.argv[1]))
+checked = 0
+for m in d["marks"]:
+    sp = [s for s in d["spectra"] if s["alpha"] == m["alpha"]][0]
+    B, H = (float(v) for v in m["built"].split("x"))
+    assert abs(m["alpha"] - math.atan(B / H)) < 1e-15 and abs(m["height"] - H) < 1e-12 * H, m
+    if m["in_set"] or not m["nearest_above"]["found"]:
+        continue
+    up = m["nearest_above"]
+    assert up["p"] > m["p"] and any(i["from"] == up["p"] for i in sp["intervals"]), (m, sp["intervals"][:3])
+    assert not any(i["from"] <= m["p"] <= i["to"] for i in sp["intervals"])
+    R = 3 * 9.81 / (4 * up["p"] ** 2)
+    assert abs(up["height"] - 2 * R * math.cos(m["alpha"])) < 1e-12 * up["height"], up
+    run = lambda p: json.loads(subprocess.run([sys.argv[2], "simulate", "--record", sys.argv[3], "--alpha", repr(m["alpha"]),
+                                               "--p", repr(p), "--json"], capture_output=True, check=True).stdout)["collapse"]
+    assert run(up["p"] * (1 + 1e-9)) and not run(m["p"]), m
+    checked += 1
+assert checked >= 1, "no safe mark with an overturning p above it"
+PY
+    then echo "ok: marks' nearest overturning p"; else echo "FAIL: marks' nearest overturning p"; fail=1; fi
+    expect "mark grammar" 2 "--mark: each block is THICKNESSxHEIGHT in m" "$rocking" spectrum "$norcia" --mark 0.6
 else
     echo "skipped: shared records folder absent ($norcia)"
 fi

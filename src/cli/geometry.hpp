@@ -25,9 +25,9 @@ GivenBlock block_option(const Args& a);
 // --block BxH[,BxH...] (thickness x height in m, e.g. 0.6x4,0.45x3), at most 50.
 std::vector<GivenBlock> block_list_option(const Args& a, const std::string& flag = "--block");
 
-// --block as a study's blocks (each alpha in the searches' range, each p in
-// (0.01, 1000) rad/s), refused beside --alpha or --p.
-std::vector<studies::BlockShape> study_blocks(const Args& a);
+// --block (or `flag`) as a study's blocks (each alpha in the searches' range,
+// each p in (0.01, 1000) rad/s); --block is refused beside --alpha or --p.
+std::vector<studies::BlockShape> study_blocks(const Args& a, const std::string& flag = "--block");
 
 // The JSON members of the block's geometry, without braces: "given":
 // "dimensions", "alpha and height" or "alpha and p", then "thickness",

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "batch/ranks.hpp"
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
+#include "cli/geometry.hpp"
 #include "cli/options.hpp"
 #include "cli/set_words.hpp"
 #include "harness/plot_file.hpp"
@@ -28,6 +30,7 @@
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
 #include "studies/spectrum.hpp"
+#include "studies/spectrum_mark.hpp"
 #include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
@@ -162,7 +165,7 @@ std::string refine_lines(const Spectrum& sp) {
 constexpr std::size_t kIntervalsShown = 20;
 
 void print_text(const std::string& path, const records::Record& r, const SpectrumOptions& o,
-                const std::vector<Study>& studies) {
+                const std::vector<Study>& studies, const std::vector<studies::SpectrumMark>& marks) {
     std::printf("%s: rocking spectrum of %s (%zu samples, dt = %g s, PGA %.4f g)\n", r.name.c_str(), path.c_str(),
                 r.accel.size(), r.dt, r.pga() / dynamics::kGravity);
     std::printf("  model: %s\n  grid: %s\n  %s\n", o.describe_model().c_str(), grid_text(o).c_str(),
@@ -190,6 +193,7 @@ void print_text(const std::string& path, const records::Record& r, const Spectru
                     table1_remark(s).c_str());
         std::printf("  %ld simulations, %ld by the second solver\n", sp.simulations, sp.check_simulations);
     }
+    for (const studies::SpectrumMark& m : marks) std::printf("marked: %s\n", studies::describe_mark(m).c_str());
 }
 
 std::string boundary_json(const Interval& in, bool lower) {
@@ -223,7 +227,7 @@ std::string refine_json(const Spectrum& sp) {
 }
 
 void print_json(const std::string& path, const records::Record& r, const SpectrumOptions& o,
-                const std::vector<Study>& studies) {
+                const std::vector<Study>& studies, const std::vector<studies::SpectrumMark>& marks) {
     std::ostringstream js;
     js << "{\"file\": " << json_string(path) << ", \"name\": " << json_string(r.name)
        << ", \"samples\": " << r.accel.size() << ", \"dt\": " << json_number(r.dt)
@@ -264,6 +268,21 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
         }
         js << "]}";
     }
+    js << "], \"marks\": [";
+    auto side = [](const studies::SpectrumFirst& f, double h) {
+        return f.found ? "{\"found\": true, \"p\": " + json_number(f.p) + ", \"height\": " + json_number(h) + "}"
+                       : std::string("{\"found\": false}");
+    };
+    for (std::size_t k = 0; k < marks.size(); ++k) {
+        const studies::SpectrumMark& m = marks[k];
+        js << (k ? ", " : "") << "{\"built\": " << json_string(m.block.built) << ", \"alpha\": " << json_number(m.block.alpha)
+           << ", \"p\": " << json_number(m.block.p)
+           << ", \"height\": " << json_number(studies::height_at_p(m.block.alpha, m.block.p))
+           << ", \"overturns\": " << (m.overturns ? "true" : "false") << ", \"in_set\": " << (m.in_set ? "true" : "false")
+           << ", \"nearest_below\": " << side(m.below, m.height_below)
+           << ", \"nearest_above\": " << side(m.above, m.height_above) << ", \"text\": " << json_string(describe_mark(m))
+           << "}";
+    }
     js << "]}\n";
     std::cout << js.str();
 }
@@ -276,7 +295,7 @@ std::string intervals_note(const Spectrum& sp) {
 }
 
 void write_csv(const std::string& csv, const std::string& path, const records::Record& r, const SpectrumOptions& o,
-               const std::vector<Study>& studies) {
+               const std::vector<Study>& studies, const std::vector<studies::SpectrumMark>& marks) {
     harness::Table t({"alpha", "p", "grid", "max_theta_over_alpha", "final_rotation", "peak_rotation", "overturning",
                       "t_overturn"});
     t.note("command", "rocking spectrum");
@@ -288,6 +307,7 @@ void write_csv(const std::string& csv, const std::string& path, const records::R
     t.note("columns", "p in rad/s; max |theta|/alpha during the input; collapse under each criterion; t_overturn in s, "
                       "'-' where the block does not overturn or is taken to overturn by its energy");
     if (refined(o)) t.note("refine", o.describe_guarantee());
+    for (const studies::SpectrumMark& m : marks) t.note("marked", studies::describe_mark(m));
     for (const Study& s : studies) {
         t.note("intervals at alpha " + g7(s.spectrum.alpha), intervals_note(s.spectrum));
         t.note("Table 1's p at alpha " + g7(s.spectrum.alpha), table1_text(s.table1));
@@ -420,6 +440,7 @@ struct Command {
     std::string path;
     Args args;
     std::vector<double> alphas;
+    std::vector<studies::BlockShape> marks;  // --mark: the engineer's blocks, each on its alpha's spectrum
     SpectrumOptions grid;
     batch::EngineOptions engine;
 };
@@ -430,10 +451,18 @@ Command command_from(int argc, char** argv, bool mpi) {
     const int count = static_cast<int>(args.size());
     c.path = file_argument(count, args.data(), 2, kUsage);
     c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--jobs",
-                                           "--output", "--png", "--rows", "--method", "--width", "--robust-width"});
+                                           "--output", "--png", "--rows", "--method", "--width", "--robust-width",
+                                           "--mark"});
     const Args& a = c.args;
-    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
-    c.alphas = alphas_from(a.values.at("--alpha"));
+    if (!a.values.count("--alpha") && !a.values.count("--mark"))
+        throw UsageError("--alpha is required, or --mark BxH for the alphas of the blocks marked");
+    if (a.values.count("--alpha")) c.alphas = alphas_from(a.values.at("--alpha"));
+    if (a.values.count("--mark")) {
+        c.marks = study_blocks(a, "--mark");
+        for (const studies::BlockShape& b : c.marks)
+            if (std::find(c.alphas.begin(), c.alphas.end(), b.alpha) == c.alphas.end()) c.alphas.push_back(b.alpha);
+        if (c.alphas.size() > 20) throw UsageError("--alpha and --mark: at most 20 alphas in all");
+    }
     c.grid = grid_from(a);
     check_outputs(a, {"--output", "--png", "--rows"}, {c.path});
     refuse_engine_files_over(a, "--rows", {"--output", "--png"}, {c.path});
@@ -488,11 +517,15 @@ int cmd_spectrum(int argc, char** argv) {
 
     std::vector<Study> studies;
     for (std::size_t k = 0; k < rows.size(); ++k) studies.push_back(jobs::study_from_row(rows[k], k, jobs));
+    std::vector<studies::SpectrumMark> marks;
+    for (const studies::BlockShape& b : c.marks)
+        for (const Study& st : studies)
+            if (st.spectrum.alpha == b.alpha) marks.push_back(studies::mark_block(*input, st.spectrum, b, c.grid));
     const Args& a = c.args;
-    if (a.values.count("--output")) write_csv(a.values.at("--output"), c.path, *r, c.grid, studies);
+    if (a.values.count("--output")) write_csv(a.values.at("--output"), c.path, *r, c.grid, studies, marks);
     if (a.values.count("--png")) write_png(a.values.at("--png"), *r, c.grid, studies);
-    if (a.json) print_json(c.path, *r, c.grid, studies);
-    else print_text(c.path, *r, c.grid, studies);
+    if (a.json) print_json(c.path, *r, c.grid, studies, marks);
+    else print_text(c.path, *r, c.grid, studies, marks);
     return 0;
 }
 
