@@ -330,8 +330,11 @@ def test_a_string_of_the_wrong_type_or_with_a_nul_is_refused_naming_it(f, kwargs
 
 
 def test_restitution_and_one_sine_are_named():
-    with pytest.raises(TypeError, match=r"^restitution: expected a factor in \[0, 1\] or 'housner', got NoneType$"):
-        rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, restitution=None)
+    # None is simulate's default since issue 40: Housner's, as the command line's.
+    assert rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, restitution=None).restitution == \
+        rq.block(alpha=0.15, p=2).housner_restitution
+    with pytest.raises(ValueError, match=r"^restitution: a factor in \[0, 1\] or 'housner' \(got 'none'\)$"):
+        rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, restitution="none")
     with pytest.raises(TypeError, match=r"^restitution: expected a factor in \[0, 1\] or 'housner', got list$"):
         rq.collapse(R, alpha=0.15, restitution=[0.9])
     with pytest.raises(TypeError, match=r"^one_sine: expected True or False, got str 'yes'$"):

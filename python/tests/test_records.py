@@ -143,9 +143,17 @@ def test_assess_is_rocking_assess(records, name):
         expected = cli("assess", path, "--alpha", alpha, "--" + geometry[0].replace("_", "-"), geometry[1])
         got = rq.assess(path, alpha=alpha, **{geometry[0]: geometry[1]})
         assert_same(got, expected)
-        assert rq.q2_n6(got.x) == expected["q_eq27"]
-        assert rq.peak_motion(path).to5_s == expected["to5"]
-    assert rq.assess(str(records / NORCIA), alpha=0.15, height=3).passes is False  # README: FAILS
+        r = got.records[0]
+        assert rq.q2_n6(r.x) == expected["records"][0]["q_eq27"]
+        assert rq.peak_motion(path).to5_s == expected["records"][0]["to5"]
+        assert r.ratio == r.q_record / r.q_eq27 and r.margin == 1 - r.ratio
+    assert rq.assess(str(records / NORCIA), alpha=0.15, height=3).records[0].passes is False  # README: FAILS
+    # Two records at once, and the block as built: the same per record, and the fragility over both.
+    both = [str(records / NORCIA), path]
+    expected = cli("assess", *both, "--thickness", 0.45, "--height", 3)
+    got = rq.assess(both, thickness=0.45, height=3)
+    assert_same(got, expected)
+    assert len(got.records) == 2 and got.thickness == 0.45 and got.given == "dimensions"
 
 
 def test_a_bad_record_names_its_file_and_line(tmp_path, records):

@@ -1,6 +1,6 @@
 #include "cli/geometry.hpp"
 
-#include "studies/search_alpha.hpp"
+#include "studies/blocks_as_built.hpp"
 
 #include <optional>
 #include <stdexcept>
@@ -39,28 +39,14 @@ GivenBlock block_option(const Args& a) {
     }
 }
 
-std::vector<GivenBlock> block_list_option(const Args& a, const std::string& flag) {
-    try {
-        return dynamics::block_list(a.values.at(flag), flag);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
-    }
-}
-
 std::vector<studies::BlockShape> study_blocks(const Args& a, const std::string& flag) {
     if (flag == "--block" && (a.values.count("--alpha") || a.values.count("--p")))
         throw UsageError("--block gives each block's alpha and p: give it without --alpha and --p");
-    std::vector<studies::BlockShape> out;
-    for (const GivenBlock& g : block_list_option(a, flag)) {
-        if (!studies::in_search_alpha_range(g.block.alpha))
-            throw UsageError(flag + " " + g.label + ": alpha = atan(B/H) = " + significant(g.block.alpha, 6) +
-                             " rad, outside the searches' " + studies::kSearchAlphaRange);
-        if (!(g.block.p > 0.01 && g.block.p < 1000))
-            throw UsageError(flag + " " + g.label + ": p = " + significant(g.block.p, 6) +
-                             " rad/s, outside the studies' (0.01, 1000) rad/s");
-        out.push_back({g.block.alpha, g.block.p, g.label});
+    try {
+        return studies::blocks_as_built(a.values.at(flag), flag);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
     }
-    return out;
 }
 
 std::string block_json(const GivenBlock& b) {

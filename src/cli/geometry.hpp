@@ -22,9 +22,6 @@ const std::vector<std::string>& geometry_flags();
 // The block of the command line, or a UsageError saying what is wrong.
 GivenBlock block_option(const Args& a);
 
-// --block BxH[,BxH...] (thickness x height in m, e.g. 0.6x4,0.45x3), at most 50.
-std::vector<GivenBlock> block_list_option(const Args& a, const std::string& flag = "--block");
-
 // --block (or `flag`) as a study's blocks (each alpha in the searches' range,
 // each p in (0.01, 1000) rad/s); --block is refused beside --alpha or --p.
 std::vector<studies::BlockShape> study_blocks(const Args& a, const std::string& flag = "--block");
