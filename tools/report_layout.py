@@ -60,6 +60,18 @@ class Layout:
         self.text(self.compares, 9, style="italic", color=INK, gap=0.14, split=False)
         self.fresh = True       # nothing but the header yet: never worth a new page
 
+    def section(self, title, compares, room=1.5):
+        """A page's worth of title and sentence at the cursor, for a section too short to deserve a
+        page of its own (a note that an output is missing): a new page only when less than `room`
+        inches would remain below them.  Its continuation pages carry its title."""
+        if self.fig is None or self.room < 0.15 + self.line_height(12)[1] + 2 * self.line_height(9)[0] + room:
+            self.page(title, compares)
+            return
+        self.y += 0.15
+        self.title, self.compares = title, compares
+        self.text(title, 12, weight="bold", gap=0.06, split=False)
+        self.text(compares, 9, style="italic", color=INK, gap=0.12, split=False)
+
     def continue_page(self):
         self.finish()
         self._open(continued=True)
