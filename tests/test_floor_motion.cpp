@@ -131,6 +131,30 @@ TEST(FloorMotion, StepMatricesAreNigamJenningsPrinted) {
         }
 }
 
+// Where the printed B cancels (w dt = 6.3e-4 and 6.3e-5: terms of size 2 zeta/(w^3 dt) or
+// 1/(w^2 dt) for entries of size dt^2/3 and dt/2, a loss of up to 1e9 in double, measured 6.5e-8
+// relative at the first), A and B against the printed forms in 50-digit mpmath
+// (docs/floor_motion.md, "The recurrence", gives the snippet): a few ulps, not 1e-8.
+TEST(FloorMotion, StepMatricesKeepTheirDigitsAtSmallWdt) {
+    struct Exact {
+        double T1, zeta, dt, A[4], B[4];
+    };
+    const Exact cases[] = {
+        {10.0, 0.05, 1e-3,
+         {0.99999980261205258, 0.00099996851893613309, -0.00039477174781771467, 0.99993697273699436},
+         {-3.3332546632416453e-7, -1.6666404541588782e-7, -0.00049997900719608074, -0.00049998951174005234}},
+        {100.0, 0.0, 1e-3,
+         {0.99999999802607912, 0.00099999999934202639, -3.9478417578381678e-6, 0.99999999802607912},
+         {-3.3333333320173862e-7, -1.6666666663376799e-7, -0.00049999999950651979, -0.0004999999998355066}}};
+    for (const Exact& c : cases) {
+        const OscillatorStep s = oscillator_step(c.T1, c.zeta, c.dt);
+        for (int i = 0; i < 4; ++i) {
+            EXPECT_NEAR(s.A[i / 2][i % 2], c.A[i], 8 * kEps * std::fabs(c.A[i])) << "A" << i / 2 << i % 2 << " T1 " << c.T1;
+            EXPECT_NEAR(s.B[i / 2][i % 2], c.B[i], 8 * kEps * std::fabs(c.B[i])) << "B" << i / 2 << i % 2 << " T1 " << c.T1;
+        }
+    }
+}
+
 // (a) A step of ground acceleration A from rest: D = -A/w^2 (1 - e^(-zeta w t)(cos w_d t +
 // zeta/sqrt(1 - zeta^2) sin w_d t)), and a_f = A + G D''.  The record is exactly piecewise
 // linear, so only rounding separates them: the same rounded A and B every step turn the
