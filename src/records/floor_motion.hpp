@@ -62,8 +62,9 @@ struct FloorModelError : std::invalid_argument {
 
 // Refuses (FloorModelError) T1 not > 0 or not finite, zeta outside [0, 1) (from
 // 1 on the oscillator no longer oscillates, and A and B below take other forms)
-// and G not finite.  Any finite G is taken: a first mode's Gamma phi is mostly 0
-// to 1.6, but a floor below a node of an odd mode shape may have it negative.
+// and G not finite.  Any finite G is taken: a first mode's Gamma phi lies mostly
+// from 0 to 1.6 (docs/floor_motion.md), and a floor beyond a node of the mode
+// shape has it negative.
 void check_floor_model(const FloorModel& m);
 // The same, and refuses T1 <= 2 dt for a record of step dt: the building's
 // frequency 1/T1 would lie at or above the record's Nyquist frequency 1/(2 dt),
@@ -82,7 +83,8 @@ FloorModel parse_floor_model(const std::string& text);
 // (a_g,k, a_g,k+1) to the forced part.  Nigam & Jennings' A and B, evaluated
 // through the complex root lambda = -zeta w + i w_d (docs/floor_motion.md): their
 // printed B loses digits as w dt falls (terms of size 1/(w^3 dt) cancel to
-// O(dt^2)); this form keeps every entry to a few ulps at any w dt < pi.
+// O(dt^2)); this form keeps every entry to a few ulps at any w dt < pi.  Its
+// arguments are not checked here: floor_response and oscillator_response check them.
 struct OscillatorStep {
     double A[2][2];
     double B[2][2];
@@ -118,7 +120,7 @@ FloorResponse floor_response(const std::vector<double>& a_g, double dt, const Fl
 // motion, sampled at dt, then peaks up to 1 - cos(pi dt/T1) below its crest.
 Record floor_record(const Record& ground, const FloorModel& m);
 
-// The sentence the model is stated in (file headers, outputs): "first-mode
+// The sentence the command states the model in: "first-mode
 // oscillator T1 = 0.5 s, zeta = 0.05, G = Gamma phi = 1.5; a_f = a_g + G D''".
 std::string describe(const FloorModel& m);
 
