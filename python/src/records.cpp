@@ -1,5 +1,5 @@
-// Records (rocking record info, record synth), the collapse search (rocking
-// collapse) and the paper's check (rocking assess): src/records.
+// Records (rocking record info, record synth, record floor), the collapse search
+// (rocking collapse) and the paper's check (rocking assess): src/records.
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -10,6 +10,7 @@
 #include "qfactor/closed_forms.hpp"
 #include "qfactor/superposition.hpp"
 #include "records/collapse.hpp"
+#include "records/floor_motion.hpp"
 #include "records/synthetic.hpp"
 #include "studies/search_alpha.hpp"
 
@@ -258,6 +259,44 @@ std::shared_ptr<Record> record_synth(const py::object& pulse_given, const std::o
     return r;
 }
 
+// rocking record floor: the floor's Record of a ground record (records/floor_motion.hpp).
+// A model out of range is a ValueError naming the keyword as the command line names its option
+// (period, damping, participation); a floor beyond a double's range a RuntimeError naming the
+// record, as the command's exit 1.
+const char* floor_keyword(const std::string& parameter) {
+    return parameter == "T1" ? "period" : parameter == "zeta" ? "damping" : "participation";
+}
+
+std::shared_ptr<Record> record_floor(py::handle record, const Real& period_given, const Real& participation_given,
+                                     const Real& damping_given, const py::kwargs& extra) {
+    no_other_keywords(extra, "record_floor", "record_floor");
+    const records::FloorModel m{number(period_given, "period"), number(participation_given, "participation"),
+                                number(damping_given, "damping")};
+    try {
+        records::check_floor_model(m);
+    } catch (const records::FloorModelError& e) {
+        refuse(std::string(floor_keyword(e.parameter)) + ": " + e.what());
+    }
+    const RecordPtr ground = record_argument(record, "record");
+    std::string refused, overflow;
+    std::shared_ptr<Record> r;
+    {
+        py::gil_scoped_release unlocked;
+        try {
+            r = std::make_shared<Record>(records::floor_record(*ground, m));
+        } catch (const records::FloorModelError& e) {
+            refused = std::string(floor_keyword(e.parameter)) + ": " + e.what();
+        } catch (const std::overflow_error& e) {
+            overflow = label_of(*ground) + ": " + e.what();
+        }
+    }
+    if (!refused.empty()) refuse(refused);
+    if (!overflow.empty()) throw std::runtime_error(overflow);
+    for (const std::string& w : records::warnings_of(*r))
+        if (PyErr_WarnEx(PyExc_RuntimeWarning, ("record_floor: " + w).c_str(), 1) != 0) throw py::error_already_set();
+    return r;
+}
+
 // --alpha of collapse, the options of its search.
 records::CollapseOptions collapse_options(const Real& alpha_given, const Text& model_given,
                                           const std::optional<Text>& solver_given,
@@ -488,6 +527,12 @@ A malformed file raises RecordError naming the file and line.)");
 
 pulse=(A, fp, nu, gamma[, t0]): Mavroeidis & Papageorgiou's velocity pulse (m/s, Hz, rad, -, s);
 stochastic=SEED with params={"Ia": ..., "D5_95": ..., ...}: Rezaeian & Der Kiureghian's filtered noise.)");
+    m.def("record_floor", gsl_checked(&record_floor), "record"_a, py::kw_only(), "period"_a, "participation"_a,
+          "damping"_a = records::FloorModel{}.zeta,
+          R"(`rocking record floor`: the floor's Record of a ground record (a Record or a path), the building
+idealised as its first mode (docs/floor_motion.md): a linear oscillator of period (s) and damping
+ratio, with the floor's participation G = Gamma phi(z); a_f = a_g + G D'', exact for the record read
+linear between samples (Nigam & Jennings 1969), at its samples.  Releases the GIL.)");
     m.def("collapse", gsl_checked(&collapse), "record"_a, py::kw_only(), "alpha"_a, "model"_a = "linearised", "solver"_a = py::none(),
           "criterion"_a = py::none(), "restitution"_a = "housner", "rtol"_a = py::none(), "atol"_a = py::none(),
           R"(`rocking collapse --json`: Table 1's search, the first p (rad/s) raised from 0.3 by 1 % at which the

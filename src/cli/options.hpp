@@ -112,6 +112,7 @@ int cmd_record(int argc, char** argv);
 int cmd_collapse(int argc, char** argv);
 int cmd_assess(int argc, char** argv);
 int cmd_record_synth(int argc, char** argv);  // rocking record synth (synth.cpp)
+int cmd_record_floor(int argc, char** argv);  // rocking record floor (floor.cpp)
 int cmd_spectrum(int argc, char** argv);
 int cmd_fragility(int argc, char** argv);
 int cmd_eq27(int argc, char** argv);
