@@ -300,7 +300,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     if (recs.size() > 1000) refuse("records: at most 1000");
     std::vector<studies::BlockShape> blocks;
     for (double a : alphas)
-        for (double v : ps) blocks.push_back({a, v});
+        for (double v : ps) blocks.push_back({a, v, ""});
     std::vector<BlockFragility> study;
     {
         py::gil_scoped_release unlocked;
