@@ -40,7 +40,10 @@ double lognormal(double q, double median, double beta) {
 }
 
 int columns_for(std::size_t blocks) { return blocks == 1 ? 1 : 2; }
-int rows_for(std::size_t blocks) { return static_cast<int>((blocks + 1) / columns_for(blocks)); }
+int rows_for(std::size_t blocks) {
+    const std::size_t columns = columns_for(blocks);
+    return static_cast<int>((blocks + columns - 1) / columns);
+}
 
 bool refined(const studies::FragilityStudyOptions& o) { return o.ida.method == studies::IdaOptions::Method::refine; }
 
