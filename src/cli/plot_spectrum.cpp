@@ -182,7 +182,7 @@ std::string script(const std::string& output, const records::Record& r, const st
             gp << "set arrow " << ++arrows << " from " << gp_number(m.block.p) << ", graph 0 to "
                << gp_number(m.block.p) << ", graph 1 nohead lw 2 lc rgb '#008000' front\n";
             gp << "set label " << ++labels << " " << gp_text(outcome(m)) << " at " << gp_number(m.block.p)
-               << ", graph " << gp_number(0.08 + 0.1 * (in_panel++ % 4))
+               << ", graph " << g7(0.08 + 0.1 * (in_panel++ % 4))
                << " left offset 0.4,0 front tc rgb '#006000' font ',10'\n";
         }
         gp << x2tics(height_tics(s.spectrum.alpha, o.p_min, o.p_max))
