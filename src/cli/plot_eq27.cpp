@@ -113,7 +113,8 @@ std::string cases_panel(const studies::Eq27Options& o, const Eq27Study& s,
        << gp_text("each record x block at to_5: " + std::to_string(counts[1]) + " of " + std::to_string(rows.size()) +
                   " non-conservative") << "\n"
        << "set logscale xy\nset xrange [" << gp_number(lo) << ":" << gp_number(hi) << "]\nset yrange ["
-       << gp_number(lo) << ":" << gp_number(hi) << "]\nset xtics auto\nset ytics auto\nset format x '%g'\n"
+       << gp_number(lo) << ":" << gp_number(hi) << "]\n" << log_tics("x", lo, hi) << log_tics("y", lo, hi)
+       << "set format x '%g'\n"
        << "set format y '%g'\nset xlabel \"eq. 27's q at x = p·to_5\"\nset ylabel "
        << gp_text("the record's " + capacity + " (its capacity)") << "\n"
        << "plot x with lines dt 2 lc rgb 'gray30' title '1:1 (under it: non-conservative)', "
@@ -132,11 +133,12 @@ std::string caption(const studies::Eq27Options& o, const studies::Eq27ByCapacity
     std::string text = "A case is non-conservative when the record overturns the block at a q below eq. 27's at "
                        "x = p·to_k; a record that never overturns it up to q_max is censored and counted as "
                        "conservative. Bars: ";
-    text += bootstrapped(s) ? "filled, the " + g4(100 * s.bootstrap.level) + " % bootstrap over records (" +
-                                  std::to_string(s.bootstrap.resamples) + " resamples, seed " +
-                                  std::to_string(s.bootstrap.seed) + ", the interval to quote); open, "
-                            : std::string("(no bootstrap: --bootstrap K --seed S) ");
-    text += "Wilson's " + g4(100 * s.level) + " % interval, which takes the cases as independent and is too narrow.";
+    if (bootstrapped(s))
+        text += "filled, the " + g4(100 * s.bootstrap.level) + " % bootstrap over records (" +
+                std::to_string(s.bootstrap.resamples) + " resamples, seed " + std::to_string(s.bootstrap.seed) +
+                ", the interval to quote); open, ";
+    text += "Wilson's " + g4(100 * s.level) + " % interval, which takes the cases as independent and is too narrow";
+    text += bootstrapped(s) ? "." : " (the bootstrap over records was not run: --bootstrap K --seed S).";
     if (refined(o))
         text += " Capacities: the first overturning (every island wider than w = " + g4(o.ida.width) +
                 " in ln q) and the first robust collapse (the first interval wider than " + g4(o.ida.robust_width) +

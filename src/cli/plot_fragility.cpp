@@ -174,7 +174,7 @@ std::string script(const std::string& output, const std::vector<std::string>& fi
        << "set multiplot title " << gp_text("Fragility of " + std::to_string(study.size()) + " block(s) over " +
                                            std::to_string(files.size()) + " record(s)") << "\n"
        << "set logscale x\nset grid\nset xrange [" << gp_number(o.ida.q_min) << ":" << gp_number(o.ida.q_max) << "]\n"
-       << "set yrange [0:1.04]\nset ytics 0.2\nset format x '%g'\nset xlabel 'q = PGA/(α g)'\n"
+       << log_tics("x", o.ida.q_min, o.ida.q_max) << "set yrange [0:1.04]\nset ytics 0.2\nset format x '%g'\nset xlabel 'q = PGA/(α g)'\n"
        << "set ylabel 'P(overturn | q)'\n";
     for (std::size_t k = 0; k < study.size(); ++k) {
         const int column = static_cast<int>(k) % columns, row = static_cast<int>(k) / columns;

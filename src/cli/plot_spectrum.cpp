@@ -39,40 +39,13 @@ struct HeightTic {
     double height, p;
 };
 
-// Round heights (1, 2, 5 x 10^k m; finer where the range holds fewer than
-// three) within the heights of [p_min, p_max] at alpha, each at its p:
-// H = c / p^2 with c = height_at_p(alpha, 1), so p = sqrt(c / H).
+// Round heights (plots.hpp, round_values) within the heights of [p_min,
+// p_max] at alpha, each at its p: H = c / p^2 with c = height_at_p(alpha, 1),
+// so p = sqrt(c / H).
 std::vector<HeightTic> height_tics(double alpha, double p_min, double p_max) {
     const double c = studies::height_at_p(alpha, 1.0);
-    const double h_lo = c / (p_max * p_max), h_hi = c / (p_min * p_min);
-    const std::vector<std::vector<double>> mantissas = {{1, 2, 5}, {1, 1.5, 2, 3, 4, 5, 6, 8}};
     std::vector<HeightTic> tics;
-    for (const std::vector<double>& set : mantissas) {
-        tics.clear();
-        for (int e = static_cast<int>(std::floor(std::log10(h_lo))) - 1; e <= std::ceil(std::log10(h_hi)); ++e)
-            for (double m : set) {
-                // "2e-2" read back: the label's own double, not 2 * 10^-2 rounded twice.
-                char text[32];
-                std::snprintf(text, sizeof text, "%ge%d", m, e);
-                const double h = std::strtod(text, nullptr);
-                if (h >= h_lo && h <= h_hi) tics.push_back({h, std::sqrt(c / h)});
-            }
-        if (tics.size() >= 3 && tics.size() <= 16) return tics;
-        if (tics.size() > 16) {  // a wide range: the decades alone
-            std::vector<HeightTic> decades;
-            for (const HeightTic& t : tics)
-                if (std::abs(std::log10(t.height) - std::round(std::log10(t.height))) < 1e-12) decades.push_back(t);
-            return decades;
-        }
-    }
-    // A range too narrow for round numbers: its ends and middle in p, to four digits.
-    tics.clear();
-    for (double p : {p_min, std::sqrt(p_min * p_max), p_max}) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.4g", c / (p * p));
-        const double h = std::strtod(text, nullptr);
-        tics.push_back({h, std::sqrt(c / h)});
-    }
+    for (double h : round_values(c / (p_max * p_max), c / (p_min * p_min))) tics.push_back({h, std::sqrt(c / h)});
     return tics;
 }
 
@@ -158,7 +131,7 @@ std::string script(const std::string& output, const records::Record& r, const st
        << "set xrange [" << gp_number(o.p_min) << ":" << gp_number(o.p_max) << "]\n"
        << "set x2range [" << gp_number(o.p_min) << ":" << gp_number(o.p_max) << "]\n"
        << "set yrange [" << gp_number(y.lo) << ":" << gp_number(y.max()) << "]\n"
-       << "set ytics nomirror\nset xtics nomirror\nset format y '%g'\n"
+       << log_tics("x", o.p_min, o.p_max) << "set xtics nomirror\nset ytics nomirror\nset format x '%g'\nset format y '%g'\n"
        << "set xlabel 'p [rad/s]'\nset ylabel 'max |θ|/α during the input'\n";
     const bool any_mark = !marks.empty();
     for (int k = 0; k < n; ++k) {

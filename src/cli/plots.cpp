@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -103,6 +104,43 @@ std::vector<std::string> wrapped(const std::string& text, std::size_t width) {
     }
     if (!line.empty()) lines.push_back(line);
     return lines;
+}
+
+std::vector<double> round_values(double lo, double hi) {
+    const std::vector<std::vector<double>> mantissas = {{1, 2, 5}, {1, 1.5, 2, 3, 4, 5, 6, 8}};
+    std::vector<double> values;
+    for (const std::vector<double>& set : mantissas) {
+        values.clear();
+        for (int e = static_cast<int>(std::floor(std::log10(lo))) - 1; e <= std::ceil(std::log10(hi)); ++e)
+            for (double m : set) {
+                // "2e-2" read back: the label's own double, not 2 * 10^-2 rounded twice.
+                char text[32];
+                std::snprintf(text, sizeof text, "%ge%d", m, e);
+                const double v = std::strtod(text, nullptr);
+                if (v >= lo && v <= hi) values.push_back(v);
+            }
+        if (values.size() >= 3 && values.size() <= 16) return values;
+        if (values.size() > 16) {  // a wide range: the decades alone
+            std::vector<double> decades;
+            for (double v : values)
+                if (std::abs(std::log10(v) - std::round(std::log10(v))) < 1e-12) decades.push_back(v);
+            return decades;
+        }
+    }
+    values.clear();
+    for (double v : {lo, std::sqrt(lo * hi), hi}) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.4g", v);
+        values.push_back(std::strtod(text, nullptr));
+    }
+    return values;
+}
+
+std::string log_tics(const std::string& axis, double lo, double hi) {
+    std::string text = "set " + axis + "tics (";
+    const std::vector<double> values = round_values(lo, hi);
+    for (std::size_t i = 0; i < values.size(); ++i) text += (i ? ", " : "") + gp_number(values[i]);
+    return text + ")\n";
 }
 
 void draw_png(const std::string& png, const std::function<std::string(const std::string& output)>& script) {

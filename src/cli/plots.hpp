@@ -63,6 +63,16 @@ struct Figure {
 // or not at all.  Throws std::runtime_error naming --png PNG.
 void draw_png(const std::string& png, const std::function<std::string(const std::string& output)>& script);
 
+// Round numbers (1, 2, 5 x 10^k; finer where the range holds fewer than
+// three) in [lo, hi], each the double its shortest text reads back as; the
+// range's ends and middle on a log scale, to four digits, where no round
+// number falls in it.  Expects 0 < lo < hi.
+std::vector<double> round_values(double lo, double hi);
+
+// "set AXIStics (v, v, ...)" at round_values(lo, hi): the tics of a log axis,
+// where gnuplot's own give only the decades.
+std::string log_tics(const std::string& axis, double lo, double hi);
+
 // The text cut into lines of at most `width` characters at spaces.
 std::vector<std::string> wrapped(const std::string& text, std::size_t width);
 
