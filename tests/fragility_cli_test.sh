@@ -39,6 +39,14 @@ check "unknown option"     "unknown option '--criterion'"   "$rocking" fragility
 check "missing file"       "no-such-file"                   "$rocking" fragility "$tmp/sine1.txt" no-such-file --unit g --dt 0.01 --alpha 0.1 --p 1
 status "missing file"      1                                 "$rocking" fragility "$tmp/sine1.txt" no-such-file --unit g --dt 0.01 --alpha 0.1 --p 1
 status "output in no folder" 1                               "${run[@]}" --alpha 0.1 --p 2 --output "$tmp/no/dir/f.csv"
+# The plot's and the fits' files refused before the study runs (the record is not read:
+# it does not exist), and gnuplot missing said first.
+check "png in no folder"   "--png: $tmp/no/dir/f.png"       "$rocking" fragility no-such-file --alpha 0.1 --p 2 --png "$tmp/no/dir/f.png"
+status "png in no folder"  1                                 "$rocking" fragility no-such-file --alpha 0.1 --p 2 --png "$tmp/no/dir/f.png"
+check "fits in no folder"  "--fits: $tmp/no/dir/f.csv"      "$rocking" fragility no-such-file --alpha 0.1 --p 2 --fits "$tmp/no/dir/f.csv"
+check "png without gnuplot" "--png $tmp/ng.png: gnuplot is not installed" env PATH=/nonexistent "$rocking" fragility no-such-file --alpha 0.1 --p 2 --png "$tmp/ng.png"
+status "png without gnuplot" 1                               env PATH=/nonexistent "$rocking" fragility no-such-file --alpha 0.1 --p 2 --png "$tmp/ng.png"
+check "png is a record"    "writing it would replace the input"                 "${run[@]}" --alpha 0.1 --p 2 --png "$tmp/sine1.txt"
 
 # Text: each record's first q and its intervals, the fit and the empirical curve.
 check "text fit"           "lognormal median q = "          "${run[@]}" --alpha 0.1 --p 2,4 --bootstrap 50 --seed 3
@@ -70,6 +78,31 @@ check "csv notes"          "solver"                          cat "$tmp/f.csv"
 check "csv grid note"      "log-spaced from 1 to 20"         cat "$tmp/f.csv"
 rows=$(grep -vc '^#' "$tmp/f.csv")
 if [[ $rows == 5 ]]; then echo "ok: csv rows"; else echo "FAIL: csv rows: $rows, wanted a header and 4"; fail=1; fi
+
+# The PNG and the fits' CSV (issue 40), read by tests/plot_check.py against the same
+# run's JSON: the PNG's size for its panels; each block's curve Phi(ln(q/median)/beta) at
+# every 40th q, the bootstrap band the least and greatest of the curves at its interval's
+# corners, the empirical and censored points, n and the censored in the title; --fits's
+# median, beta and bootstrap ends the JSON's.  The grid (six blocks, two with a censored
+# record) and the refine method's three fits; the other outputs unchanged by them.
+if command -v gnuplot >/dev/null; then
+    plotted=(--alpha 0.1,0.2 --p 0.5,2,4 --q-max 15 --bootstrap 50 --seed 3)
+    ROCKING_PLOT_SCRIPT="$tmp/f.gp" "${run[@]}" "${plotted[@]}" --json --png "$tmp/f.png" --fits "$tmp/fits.csv" >"$tmp/fp.json"
+    "${run[@]}" "${plotted[@]}" --json >"$tmp/fp0.json"
+    same "--png and --fits change no byte of the JSON" "$tmp/fp.json" "$tmp/fp0.json"
+    if grep -q '"collapsed": false' "$tmp/fp.json"; then echo "ok: a censored record plotted"; else echo "FAIL: no censored record in the plot's study"; fail=1; fi
+    $py "$(dirname "$0")/plot_check.py" fragility "$tmp/f.gp" "$tmp/f.png" "$tmp/fp.json" "$tmp/fits.csv" || fail=1
+    refined=(--alpha 0.1 --p 2 --method refine --width 1e-3 --bootstrap 20 --seed 3)
+    ROCKING_PLOT_SCRIPT="$tmp/fr.gp" "${run[@]}" "${refined[@]}" --json --png "$tmp/fr.png" --fits "$tmp/fitsr.csv" >"$tmp/fr.json"
+    "${run[@]}" "${refined[@]}" --output "$tmp/fr.csv" --png "$tmp/fr2.png" >"$tmp/fr.txt"
+    "${run[@]}" "${refined[@]}" --output "$tmp/fr0.csv" >"$tmp/fr0.txt"
+    same "--png changes no byte of the text" "$tmp/fr.txt" "$tmp/fr0.txt"
+    same "--png changes no byte of the CSV" "$tmp/fr.csv" "$tmp/fr0.csv"
+    $py "$(dirname "$0")/plot_check.py" fragility "$tmp/fr.gp" "$tmp/fr.png" "$tmp/fr.json" "$tmp/fitsr.csv" || fail=1
+    check "the three fits named" "first robust collapse: median" cat "$tmp/fr.gp"
+else
+    echo "FAIL: gnuplot is not installed (make deps): the PNG cannot be checked"; fail=1
+fi
 
 # The first collapse q, by another subcommand: simulate --record at the bracket's
 # ends (q and q (1 - 1e-5), below the safe end) must overturn and not.

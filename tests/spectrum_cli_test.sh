@@ -60,6 +60,8 @@ expect "output in no folder"   1 "--output: $tmp/no/such/dir/s.csv"          "${
 expect "png in no folder"      1 "--png: $tmp/no/such/dir/s.png"             "${run[@]}" --alpha 0.1 --points 5 --png "$tmp/no/such/dir/s.png"
 expect "png without gnuplot"   1 "--png $tmp/nognuplot.png: gnuplot is not installed" env PATH=/nonexistent "${run[@]}" --alpha 0.1 --points 5 --png "$tmp/nognuplot.png"
 if [[ -e "$tmp/nognuplot.png" ]]; then echo "FAIL: a PNG left behind without gnuplot"; fail=1; fi
+# Before any work: the missing gnuplot is said before the record is read.
+expect "no gnuplot said before the record" 1 "--png $tmp/nognuplot.png: gnuplot is not installed" env PATH=/nonexistent "$rocking" spectrum no-such-file --alpha 0.1 --png "$tmp/nognuplot.png"
 
 # The text: intervals with their checks, the grid's limit, Table 1's p.
 expect "text intervals"        0 $'alpha = 0.2: overturns for p (rad/s) in\n  [' "${run[@]}" --alpha 0.1,0.2
@@ -245,6 +247,22 @@ if [[ $status == 0 ]]; then
     else
         echo "FAIL: gnuplot is not installed (make deps): the PNG cannot be checked"; fail=1
     fi
+fi
+
+# The PNG drawn (issue 40), read from its gnuplot script (ROCKING_PLOT_SCRIPT) by
+# tests/plot_check.py against the same run's JSON: the PNG's size for its panels, one
+# y range for all, the data drawn the JSON's points with the overturned runs apart, the
+# top axis's heights H = 2 R cos(alpha), R = 3 g/(4 p^2) at their p (recomputed there),
+# and each marked block a line at its p labelled with its outcome.  Two blocks of one
+# alpha (0.3x3 overturns, 0.4x4 does not: the premise, checked) and another alpha.
+if command -v gnuplot >/dev/null; then
+    ROCKING_PLOT_SCRIPT="$tmp/mark.gp" "${run[@]}" --alpha 0.2 --mark 0.3x3,0.4x4 --png "$tmp/mark.png" --json \
+        >"$tmp/mark.json" 2>"$tmp/mark.err" || { echo "FAIL: --mark --png: $(head -3 "$tmp/mark.err")"; fail=1; }
+    "${run[@]}" --alpha 0.2 --mark 0.3x3,0.4x4 --json >"$tmp/mark0.json" 2>&1
+    same "--png changes no byte of the JSON" "$tmp/mark.json" "$tmp/mark0.json"
+    if $py -c "import json, sys; m = json.load(open(sys.argv[1]))['marks']; sys.exit(sorted(x['overturns'] for x in m) != [False, True])" "$tmp/mark.json"
+    then echo "ok: one marked block overturns, one does not"; else echo "FAIL: the marks' premise"; fail=1; fi
+    $py "$(dirname "$0")/plot_check.py" spectrum "$tmp/mark.gp" "$tmp/mark.png" "$tmp/mark.json" || fail=1
 fi
 
 # A real record where Table 1's search met an island the grids step over:

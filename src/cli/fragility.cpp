@@ -21,6 +21,7 @@
 #include "cli/distinct_inputs.hpp"
 #include "cli/geometry.hpp"
 #include "cli/options.hpp"
+#include "cli/plots.hpp"
 #include "cli/set_words.hpp"
 #include "harness/table.hpp"
 #include "jobs/fragility_plan.hpp"
@@ -38,7 +39,7 @@ using studies::IdaInterval;
 const char* kUsage =
     "usage: rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N] "
     "[--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] "
-    "[--output CSV] [--json] [--rows FILE [--resume]] [--quiet]";
+    "[--output CSV] [--fits CSV] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]";
 
 std::string g7(double v) { return significant(v, 7); }
 
@@ -386,7 +387,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     c.files = file_arguments(count, args.data(), first, kUsage);
     c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
                                                "--dt", "--jobs", "--output", "--rows", "--method", "--width",
-                                               "--robust-width"});
+                                               "--robust-width", "--png", "--fits"});
     const Args& a = c.args;
     if (a.values.count("--block")) {
         c.blocks = study_blocks(a);
@@ -400,8 +401,9 @@ Command command_from(int argc, char** argv, bool mpi) {
     }
     c.study = options_from(a);
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
-    check_outputs(a, {"--output", "--rows"}, c.files);
-    refuse_engine_files_over(a, "--rows", {"--output"}, c.files);
+    check_outputs(a, {"--output", "--rows", "--fits", "--png"}, c.files);
+    refuse_engine_files_over(a, "--rows", {"--output", "--fits", "--png"}, c.files);
+    require_gnuplot(a);
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
         throw UsageError("--resume needs --rows FILE: the IDAs of an interrupted study are resumed from that file");
@@ -483,6 +485,8 @@ int cmd_fragility(int argc, char** argv) {
         [&](std::size_t b, BlockFragility& f) { study[b] = std::move(f); });
     const Args& a = c.args;
     if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, study);
+    if (a.values.count("--fits")) write_fragility_fits(a.values.at("--fits"), c.files, c.study, study);
+    if (a.values.count("--png")) write_fragility_png(a.values.at("--png"), c.files, c.study, study);
     if (a.json) print_json(c.files, c.study, study);
     else print_text(c.files, c.study, study);
     return 0;
