@@ -73,4 +73,21 @@ for side in ("below", "above"):
 print("ok: assess's margins against simulate, fragility and spectrum")
 PY
 then :; else echo "FAIL: assess's margins"; fail=1; fi
+# --floor T1,G (issue 40): the floor's record in place of the ground's, as
+# `record floor` writes it, on simulate, assess and spectrum alike.
+"$rocking" record floor "$a" --period 0.5 --participation 1.5 --output "$tmp/floor.txt" >/dev/null
+for cmd in "simulate --record" "assess" "spectrum"; do
+    case $cmd in
+        simulate*) block=(--thickness 0.25 --height 2); field='["max_theta_input_over_alpha"], d["collapse"]' ;;
+        assess) block=(--thickness 0.25 --height 2); field='[r["peak_theta_over_alpha"] for r in d["records"]], d["records"][0]["first_overturning"]' ;;
+        spectrum) block=(--alpha 0.15 --points 40); field='[s["intervals"] for s in d["spectra"]]' ;;
+    esac
+    via=$("$rocking" $cmd "$a" --floor 0.5,1.5 "${block[@]}" --json | $py -c "import json,sys; d=json.load(sys.stdin); print(d$field)" 2>&1)
+    file=$("$rocking" $cmd "$tmp/floor.txt" --unit m/s2 "${block[@]}" --json | $py -c "import json,sys; d=json.load(sys.stdin); print(d$field)" 2>&1)
+    if [[ -n "$via" && "$via" == "$file" ]]; then echo "ok: $cmd --floor is record floor's file"
+    else echo "FAIL: $cmd --floor: $via, against the file: $file"; fail=1; fi
+done
+check "floor named in the input" "floor T1=0.5 s zeta=0.05 G=1.5" "$rocking" simulate --record "$a" --floor 0.5,1.5 --thickness 0.25 --height 2
+check "floor's grammar" "--floor: floor model '0.5': takes T1,G[,zeta]" "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
+status "floor's grammar" 2 "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
 exit $fail

@@ -420,6 +420,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         const studies::RecordAssessment& r = a.records[k];
         py::dict d = result();
         d["file"] = file_of(*held[k]);
+        d["name"] = text(held[k]->name);
         d["pga_g"] = r.motion.pga / dynamics::kGravity;
         d["to5"] = r.motion.to5;
         d["x"] = r.x;

@@ -22,7 +22,7 @@ namespace {
 
 const char* kUsage =
     "usage: rocking assess FILE... (--thickness B --height H | --alpha A (--height H | --half-height h | --p P)) "
-    "[--width W] [--unit U [--dt DT]] [--json]";
+    "[--width W] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]";
 
 // PGA, PGV and to_5 alone: the CWT and the Fourier peaks of the eleven half-periods
 // took 1.1 s of a 30,001-sample record and assess reports none of them.
@@ -46,14 +46,15 @@ std::string scale_text(const studies::IdaPoint& at, double scale, double q_max) 
     return "x" + four(scale) + " (q = " + four(at.q) + ")";
 }
 
-void print_text(const std::vector<std::string>& files, const GivenBlock& given, const studies::Assessment& s,
-                const studies::AssessOptions& o) {
+void print_text(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
+                const studies::Assessment& s, const studies::AssessOptions& o) {
     std::printf("assess: %s\n  model: %s\n", describe_block(given).c_str(), o.describe().c_str());
     for (std::size_t k = 0; k < files.size(); ++k) {
         const studies::RecordAssessment& r = s.records[k];
         std::printf("%s: eq. 27 check %s (the record's q is %s eq. 27's: ratio %s, margin %s)\n", files[k].c_str(),
                     r.passes ? "PASSES" : "FAILS", r.passes ? "below" : "at or above", four(r.ratio).c_str(),
                     percent(r.margin).c_str());
+        std::printf("  input: %s\n", names[k].c_str());
         std::printf("  record: PGA = %s g, to_5 = pi PGV/PGA = %s s; x = p to_5 = %s; q from eq. 27 = %s; the "
                     "record's q = PGA/(alpha g) = %s\n",
                     four(r.motion.pga / dynamics::kGravity).c_str(), four(r.motion.to5).c_str(), four(r.x).c_str(),
@@ -91,15 +92,16 @@ std::string side_json(const studies::SpectrumFirst& f, double height) {
                    : std::string("{\"found\": false}");
 }
 
-void print_json(const std::vector<std::string>& files, const GivenBlock& given, const studies::Assessment& s,
-                const studies::AssessOptions& o) {
+void print_json(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
+                const studies::Assessment& s, const studies::AssessOptions& o) {
     std::ostringstream js;
     js << "{\"alpha\": " << json_number(given.block.alpha) << ", \"p\": " << json_number(given.block.p) << ", "
        << block_json(given) << ", \"model\": " << json_string(o.describe()) << ", \"width\": " << json_number(o.width)
        << ", \"check\": \"eq. 27: the record's q below q2_n6(p to_5)\", \"records\": [";
     for (std::size_t k = 0; k < files.size(); ++k) {
         const studies::RecordAssessment& r = s.records[k];
-        js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"pga_g\": "
+        js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"name\": " << json_string(names[k])
+           << ", \"pga_g\": "
            << json_number(r.motion.pga / dynamics::kGravity) << ", \"to5\": " << json_number(r.motion.to5)
            << ", \"x\": " << json_number(r.x) << ", \"q_eq27\": " << json_number(r.q_eq27)
            << ", \"q_record\": " << json_number(r.q_record) << ", \"ratio\": " << json_number(r.ratio)
@@ -128,7 +130,7 @@ int cmd_assess(int argc, char** argv) {
     int first = 0;
     const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
     if (files.size() > 1000) throw UsageError("at most 1000 files");
-    std::vector<std::string> allowed = {"--unit", "--dt", "--width"};
+    std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor"};
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(argc, argv, first, allowed);
     const GivenBlock given = block_option(a);
@@ -169,8 +171,10 @@ int cmd_assess(int argc, char** argv) {
     }
     const studies::Assessment s =
         studies::assess_block(views, motions, studies::BlockShape{alpha, given.block.p, given.label}, o);
-    if (a.json) print_json(files, given, s, o);
-    else print_text(files, given, s, o);
+    std::vector<std::string> names;
+    for (const records::Record& r : records) names.push_back(r.name);
+    if (a.json) print_json(files, names, given, s, o);
+    else print_text(files, names, given, s, o);
     return 0;
 }
 

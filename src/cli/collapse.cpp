@@ -23,7 +23,7 @@ int cmd_collapse(int argc, char** argv) {
         file_argument(argc, argv, 2, "usage: rocking collapse FILE (--alpha A | --thickness B --height H) [options]");
     const Args a = parse(argc, argv, 3,
                          {"--alpha", "--thickness", "--height", "--half-height", "--model", "--solver", "--criterion",
-                          "--restitution", "--rtol", "--atol", "--unit", "--dt"});
+                          "--restitution", "--rtol", "--atol", "--unit", "--dt", "--floor"});
     // The search is over p: of a block given as built only its alpha counts,
     // and its own p is printed beside the search's.
     std::optional<GivenBlock> given;

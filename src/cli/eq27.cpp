@@ -127,7 +127,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     int first = 0;
     c.files = file_arguments(count, args.data(), first, kUsage);
     c.args = parse(count, args.data(), first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
-                                               "--seed", "--unit", "--dt", "--jobs", "--output",
+                                               "--seed", "--unit", "--dt", "--floor", "--jobs", "--output",
                                                "--method", "--width", "--robust-width", "--png"});
     c.study = options_from(c.args);
     c.blocks = c.study.grid.blocks();

@@ -385,7 +385,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     const int count = static_cast<int>(args.size());
     int first = 0;
     c.files = file_arguments(count, args.data(), first, kUsage);
-    c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
+    c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit", "--floor",
                                                "--dt", "--jobs", "--output", "--rows", "--method", "--width",
                                                "--robust-width", "--png", "--fits"});
     const Args& a = c.args;

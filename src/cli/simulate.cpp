@@ -49,7 +49,7 @@ int cmd_simulate(int argc, char** argv) {
         else ++it;
     std::vector<std::string> allowed = {"--case", "--train", "--pulses", "--x", "--to", "--pga", "--q", "--rd", "--ap",
                                         "--wp", "--model", "--solver", "--rtol", "--atol", "--criterion", "--restitution",
-                                        "--output", "--dt", "--record", "--unit", "--record-dt"};
+                                        "--output", "--dt", "--record", "--unit", "--record-dt", "--floor"};
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(static_cast<int>(args.size()), args.data(), 2, allowed);
     auto has = [&](const char* f) { return a.values.count(f) > 0; };
@@ -90,8 +90,8 @@ int cmd_simulate(int argc, char** argv) {
     std::unique_ptr<GroundInput> input;
     if (one_sine + has("--record") + (has("--case") || has("--train")) != 1)
         throw UsageError("give exactly one input: --case or --train, --one-sine, or --record");
-    if (!has("--record") && (has("--unit") || has("--record-dt")))
-        throw UsageError("--unit and --record-dt go with --record");
+    if (!has("--record") && (has("--unit") || has("--record-dt") || has("--floor")))
+        throw UsageError("--unit, --record-dt and --floor go with --record");
     if (has("--record")) {
         for (const char* f : {"--rd", "--to", "--x", "--pulses", "--ap", "--wp"})
             if (has(f)) throw UsageError(std::string(f) + " does not apply to --record");

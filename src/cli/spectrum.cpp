@@ -339,7 +339,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     std::vector<char*> args = without_engine_switches(argc, argv, c.engine.resume, c.engine.quiet);
     const int count = static_cast<int>(args.size());
     c.path = file_argument(count, args.data(), 2, kUsage);
-    c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--jobs",
+    c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--floor", "--jobs",
                                            "--output", "--png", "--rows", "--method", "--width", "--robust-width",
                                            "--mark"});
     const Args& a = c.args;
