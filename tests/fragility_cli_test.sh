@@ -112,6 +112,18 @@ sim=("$rocking" simulate --record "$tmp/sine1.txt" --unit g --record-dt 0.01 --a
 over() { "${sim[@]}" --q "$1" | $py -c "import json,sys; print(json.load(sys.stdin)['collapse'])"; }
 check "simulate overturns at the first q" "True"  over "$qc"
 check "simulate spares the safe end"      "False" over "$q"
+# --restitution on the study (issue 40): the model says so, and its first collapse q is
+# simulate's under the same restitution at both ends of its bracket.
+check "restitution stated" "restitution 0.7" "${run[@]}" --alpha 0.1 --p 2 --restitution 0.7
+q7=$("${run[@]}" --alpha 0.1 --p 2 --restitution 0.7 --json | $py -c "import json,sys; r=json.load(sys.stdin)['blocks'][0]['records'][0]; print(repr(r['q']), repr(r['intervals'][0]['lower']['q_safe']))")
+read -r qc7 qs7 <<<"$q7"
+sim7=("$rocking" simulate --record "$tmp/sine1.txt" --unit g --record-dt 0.01 --alpha 0.1 --p 2 --restitution 0.7 --json)
+over7() { "${sim7[@]}" --q "$1" | $py -c "import json,sys; print(json.load(sys.stdin)['collapse'])"; }
+check "restitution 0.7: simulate overturns at the first q" "True" over7 "$qc7"
+check "restitution 0.7: simulate spares the safe end" "False" over7 "$qs7"
+check "restitution refused" "--restitution" "${run[@]}" --alpha 0.1 --p 2 --restitution 1.5
+status "restitution refused" 2 "${run[@]}" --alpha 0.1 --p 2 --restitution 1.5
+
 # Blocks as built (issue 40): --block BxH is alpha = atan(B/H), p = sqrt(3 g/(4 R)),
 # R = sqrt(B^2 + H^2)/2 (eqs. 2, 4), here computed by Python, and the study the same
 # as with those alpha and p given, but for the block's name.

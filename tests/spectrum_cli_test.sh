@@ -310,5 +310,14 @@ else
     echo "skipped: shared records folder absent ($norcia)"
 fi
 
+# --restitution (issue 40): stated in the model, and each boundary seen by simulate under it.
+"$rocking" spectrum "$rec" --unit g --dt 0.01 --alpha 0.1 --points 40 --restitution 0.5 --json >"$tmp/e05.json"
+if $py - "$tmp/e05.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert "restitution 0.5" in d["model"], d["model"]
+PY
+then echo "ok: spectrum --restitution stated"; else echo "FAIL: spectrum --restitution"; fail=1; fi
+
 if [[ $fail != 0 ]]; then echo "spectrum_cli_test: FAILED"; exit 1; fi
 echo "spectrum_cli_test: all passed"

@@ -58,7 +58,7 @@ py::object boundary(const studies::Interval& in, bool lower) {
 py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min, const Real& p_max, const Whole& points,
                   const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
                   const std::optional<Real>& robust_width_given, const std::optional<Text>& mark_given,
-                  const py::kwargs& extra) {
+                  const py::object& restitution, const py::kwargs& extra) {
     no_other_keywords(extra, "spectrum", "spectrum");
     // As rocking spectrum --mark: the marked blocks' alphas join alpha's.
     std::vector<double> alphas;
@@ -90,6 +90,7 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     if (m.refine) o.method = studies::SpectrumOptions::Method::refine;
     o.width = m.width;
     o.robust_width = m.robust_width;
+    restitution_into(restitution, o.model);
     const int threads = jobs_argument(jobs);
     const RecordPtr r = record_argument(record, "record");
     std::vector<Study> found;
@@ -278,10 +279,24 @@ void add_refine_fields(py::dict& d, const Ida& ida) {
 py::dict fragility(const py::object& records_given, const py::object& alpha, const py::object& p, const Real& q_max,
                    const Whole& points, const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed,
                    const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
-                   const std::optional<Real>& robust_width_given, const py::kwargs& extra) {
+                   const std::optional<Real>& robust_width_given, const std::optional<Text>& block_given,
+                   const py::object& restitution, const py::kwargs& extra) {
     no_other_keywords(extra, "fragility", "fragility");
-    const std::vector<double> alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 50);
-    const std::vector<double> ps = values_in(p, "p", 0.01, 1000, "(0.01, 1000) rad/s", 50);
+    // The blocks as rocking fragility's: --block BxH,... or every --alpha with every --p.
+    std::vector<studies::BlockShape> built;
+    if (const std::optional<std::string> text_given = string_argument(block_given, "block")) {
+        if (!alpha.is_none() || !p.is_none()) refuse("block gives each block's alpha and p: give it without alpha and p");
+        try {
+            built = studies::blocks_as_built(*text_given, "block");
+        } catch (const std::invalid_argument& e) {
+            refuse(e.what());
+        }
+    } else if (alpha.is_none() || p.is_none()) {
+        refuse("give alpha and p, or block='BxH,...'");
+    }
+    const std::vector<double> alphas =
+        built.empty() ? values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 50) : std::vector<double>{};
+    const std::vector<double> ps = built.empty() ? values_in(p, "p", 0.01, 1000, "(0.01, 1000) rad/s", 50) : std::vector<double>{};
     studies::refuse_repeated_values("alpha", alphas);
     studies::refuse_repeated_values("p", ps);
     studies::FragilityStudyOptions o;
@@ -298,15 +313,17 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     o.threads = jobs_argument(jobs);
     const std::vector<RecordPtr> recs = record_list(records_given, "records");
     if (recs.size() > 1000) refuse("records: at most 1000");
-    std::vector<studies::BlockShape> blocks;
+    std::vector<studies::BlockShape> blocks = built;
     for (double a : alphas)
         for (double v : ps) blocks.push_back({a, v, ""});
+    restitution_into(restitution, o.ida.model);
     std::vector<BlockFragility> study;
     {
         py::gil_scoped_release unlocked;
         std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
         std::vector<std::string> labels;
-        const double p_max = *std::max_element(ps.begin(), ps.end());
+        double p_max = 0;
+        for (const studies::BlockShape& b : blocks) p_max = std::max(p_max, b.p);
         for (const RecordPtr& r : recs) {
             inputs.push_back(input_of(*r));
             labels.push_back(label_of(*r));
@@ -344,6 +361,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         py::dict b = result();
         b["alpha"] = f.block.alpha;
         b["p"] = f.block.p;
+        if (!f.block.built.empty()) b["built"] = f.block.built;
         py::list rows;
         for (std::size_t k = 0; k < recs.size(); ++k) {
             const Ida& ida = f.idas[k];
@@ -397,7 +415,7 @@ void init_studies(py::module_& m) {
     using namespace py::literals;
     m.def("spectrum", gsl_checked(&spectrum), "record"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = 0.3, "p_max"_a = 30.0,
           "points"_a = 200, "jobs"_a = py::none(), "method"_a = "grid", "width"_a = py::none(),
-          "robust_width"_a = py::none(), "mark"_a = py::none(),
+          "robust_width"_a = py::none(), "mark"_a = py::none(), "restitution"_a = "housner",
           R"(`rocking spectrum --json`: for each alpha (a number or a list), the overturning intervals in p
 (rad/s), each end bisected to 1e-6 and checked, beside Table 1's first collapse, and the grid: each
 spectrum's points as arrays (p, grid, max_theta, final_rotation, peak_rotation, overturning,
@@ -408,9 +426,10 @@ to, share), samples, accepted, at_width, with_margins and unguaranteed_from, as 
 does.  mark='0.6x4,0.45x3' (thickness x height, m) reads those blocks against the spectra of their
 alphas (added to alpha's), as --mark: marks (each block's run at its own p, the nearest
 overturning p on either side and their heights).  An alpha given twice is refused.  Releases the GIL.)");
-    m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a, "p"_a, "q_max"_a = 20.0, "points"_a = 100,
-          "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(), "method"_a = "grid",
-          "width"_a = py::none(), "robust_width"_a = py::none(),
+    m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p"_a = py::none(),
+          "q_max"_a = 20.0, "points"_a = 100, "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
+          "method"_a = "grid", "width"_a = py::none(), "robust_width"_a = py::none(), "block"_a = py::none(),
+          "restitution"_a = "housner",
           R"(`rocking fragility --json`: for each block (every alpha with every p) and record, the IDA's
 overturning intervals in q = PGA/(alpha g), the first collapse q or a censored point, the lognormal
 fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).

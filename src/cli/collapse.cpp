@@ -48,11 +48,7 @@ int cmd_collapse(int argc, char** argv) {
         throw UsageError(e.what());
     }
     tolerance_options(a.values, alpha, o.solver);
-    if (a.values.count("--restitution")) {
-        const double e = restitution_option(a.values.at("--restitution"));
-        o.housner_restitution = std::isnan(e);
-        if (!o.housner_restitution) o.restitution = e;
-    }
+    restitution_into(a, o);
     if (o.equation == Equation::full && o.solver.kind == SolverKind::exact)
         throw UsageError("the exact solver handles the linearised equation only");
     const records::Record r = load_record(path, a);

@@ -103,6 +103,7 @@ studies::Eq27Options options_from(const Args& a) {
     if (m.refine) o.ida.method = studies::IdaOptions::Method::refine;
     o.ida.width = m.width;
     o.ida.robust_width = m.robust_width;
+    restitution_into(a, o.ida.model);
     // As rocking fragility's: no bootstrap unless asked, and then from a stated seed.
     const Bootstrap b = bootstrap_options(a);
     o.bootstrap.resamples = b.resamples;
@@ -127,7 +128,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     int first = 0;
     c.files = file_arguments(count, args.data(), first, kUsage);
     c.args = parse(count, args.data(), first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
-                                               "--seed", "--unit", "--dt", "--floor", "--jobs", "--output",
+                                               "--seed", "--unit", "--dt", "--floor", "--restitution", "--jobs", "--output",
                                                "--method", "--width", "--robust-width", "--png"});
     c.study = options_from(c.args);
     c.blocks = c.study.grid.blocks();

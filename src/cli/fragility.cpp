@@ -67,6 +67,7 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     o.resamples = b.resamples;
     o.seed = b.seed;
     o.threads = jobs_option(a);
+    restitution_into(a, o.ida.model);
     return o;
 }
 
@@ -385,7 +386,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     const int count = static_cast<int>(args.size());
     int first = 0;
     c.files = file_arguments(count, args.data(), first, kUsage);
-    c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit", "--floor",
+    c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit", "--floor", "--restitution",
                                                "--dt", "--jobs", "--output", "--rows", "--method", "--width",
                                                "--robust-width", "--png", "--fits"});
     const Args& a = c.args;

@@ -453,6 +453,13 @@ records::Record read_ground(const std::string& path, const Args& a, const std::s
 // --floor T1,G[,zeta] (issue 40): the floor's motion of the building's first
 // mode in place of the ground's, the record's name stating the model, so that
 // every output that names its input names the floor.
+void restitution_into(const Args& a, records::CollapseOptions& model) {
+    if (!a.values.count("--restitution")) return;
+    const double e = restitution_option(a.values.at("--restitution"));
+    model.housner_restitution = std::isnan(e);
+    if (!model.housner_restitution) model.restitution = e;
+}
+
 records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag) {
     records::Record ground = read_ground(path, a, dt_flag);
     if (!a.values.count("--floor")) return ground;
