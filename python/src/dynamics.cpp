@@ -61,7 +61,7 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
     no_other_keywords(extra, "simulate", "simulate");
     // Each argument converted, or refused naming it, in the signature's order.
     const dynamics::GivenBlock given = block_argument(thickness_given, height_given, half_height_given, alpha_given, p_given);
-    const double alpha = given.block.alpha;
+    const double alpha = given.alpha;
     const std::optional<double> to = number(to_given, "to"),
                                 x = number(x_given, "x"), pga = number(pga_given, "pga"), q = number(q_given, "q"),
                                 rd = number(rd_given, "rd");

@@ -363,7 +363,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
                 const std::optional<Real>& p_given, const Real& width_given, const py::kwargs& extra) {
     no_other_keywords(extra, "assess", "assess");
     const dynamics::GivenBlock given = block_argument(thickness, height, half_height, alpha_given, p_given);
-    const double alpha = given.block.alpha;
+    const double alpha = given.alpha;
     studies::AssessOptions o;
     o.width = number(width_given, "width");
     if (!(o.width >= 1e-7 && o.width <= 0.1)) refuse("width: must be in [1e-7, 0.1] (got " + significant(o.width, 17) + ")");

@@ -95,7 +95,7 @@ std::string side_json(const studies::SpectrumFirst& f, double height) {
 void print_json(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
                 const studies::Assessment& s, const studies::AssessOptions& o) {
     std::ostringstream js;
-    js << "{\"alpha\": " << json_number(given.block.alpha) << ", \"p\": " << json_number(given.block.p) << ", "
+    js << "{\"alpha\": " << json_number(given.alpha) << ", \"p\": " << json_number(given.block.p) << ", "
        << block_json(given) << ", \"model\": " << json_string(o.describe()) << ", \"width\": " << json_number(o.width)
        << ", \"check\": \"eq. 27: the record's q below q2_n6(p to_5)\", \"records\": [";
     for (std::size_t k = 0; k < files.size(); ++k) {
@@ -134,7 +134,7 @@ int cmd_assess(int argc, char** argv) {
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(argc, argv, first, allowed);
     const GivenBlock given = block_option(a);
-    const double alpha = given.block.alpha;
+    const double alpha = given.alpha;
     studies::AssessOptions o;
     if (a.values.count("--width")) {
         o.width = number("--width", a.values.at("--width"));

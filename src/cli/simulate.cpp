@@ -55,7 +55,7 @@ int cmd_simulate(int argc, char** argv) {
     auto has = [&](const char* f) { return a.values.count(f) > 0; };
     auto num = [&](const char* f) { return number(f, a.values.at(f)); };
     const GivenBlock given = block_option(a);
-    const double alpha = given.block.alpha;
+    const double alpha = given.alpha;
     Model model;
     model.block = given.block;
     const std::string model_name = has("--model") ? a.values.at("--model") : "linearised";

@@ -38,6 +38,7 @@ GivenBlock block_of_dimensions(double B, double H, const std::string& what) {
         throw std::invalid_argument(what + ": B/H = " + g6(B / H) + " gives no usable alpha and p (alpha " +
                                     g6(g.block.alpha) + ", p " + g6(g.block.p) + " rad/s)");
     g.given = GivenBlock::Given::dimensions;
+    g.alpha = g.block.alpha;
     g.thickness = B;
     g.height = H;
     return g;
@@ -71,6 +72,7 @@ GivenBlock given_block(const BlockSpec& s, const ArgumentName& name) {
         throw std::invalid_argument(name("alpha") + " A goes with exactly one of " + name("p") + ", " +
                                     name("half_height") + " and " + name("height"));
     GivenBlock g;
+    g.alpha = *s.alpha;
     if (s.p) {
         g.block = Block::from_p(*s.p, *s.alpha);
         return g;

@@ -28,6 +28,10 @@ struct BlockSpec {
 struct GivenBlock {
     enum class Given { dimensions, alpha_and_size, alpha_and_p };
     Block block{};
+    // The slenderness the outputs divide by and the thresholds use: the alpha
+    // typed where it was given (block.alpha, recomputed from the half-width
+    // and half-height, may differ from it in the last bit), else block.alpha.
+    double alpha = 0;
     Given given = Given::alpha_and_p;
     double thickness = 0, height = 0;  // m, where known (not with alpha and p)
     std::string label;                 // "0.6x4" for a block of a list, else empty
