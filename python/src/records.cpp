@@ -5,6 +5,7 @@
 #include <map>
 
 #include "common.hpp"
+#include "study_arguments.hpp"
 #include "studies/assessment.hpp"
 #include "dynamics/ground_input.hpp"
 #include "qfactor/closed_forms.hpp"
@@ -406,15 +407,6 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         d["scale"] = scale;
         return d;
     };
-    auto side = [](const studies::SpectrumFirst& f, double h) {
-        py::dict d = result();
-        d["found"] = f.found;
-        if (f.found) {
-            d["p"] = f.p;
-            d["height"] = h;
-        }
-        return d;
-    };
     py::list rows;
     for (std::size_t k = 0; k < held.size(); ++k) {
         const studies::RecordAssessment& r = a.records[k];
@@ -434,8 +426,8 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         d["peak_theta_over_alpha"] = r.peak_theta_over_alpha;
         d["first_overturning"] = first(r.ida.first_overturning, r.scale_first_overturning);
         d["first_robust_collapse"] = first(r.ida.first_robust_collapse, r.scale_first_robust);
-        d["nearest_overturning_below"] = side(r.mark.below, r.mark.height_below);
-        d["nearest_overturning_above"] = side(r.mark.above, r.mark.height_above);
+        d["nearest_overturning_below"] = nearest_side(r.mark.below, r.mark.height_below);
+        d["nearest_overturning_above"] = nearest_side(r.mark.above, r.mark.height_above);
         d["in_spectrum_set"] = r.mark.in_set;
         if (r.has_probability) d["probability"] = r.probability;
         rows.append(d);

@@ -208,15 +208,6 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     out["spectra"] = spectra;
     py::list marks_out;
     for (const studies::SpectrumMark& m : marked) {
-        auto side = [](const studies::SpectrumFirst& f, double h) {
-            py::dict d = result();
-            d["found"] = f.found;
-            if (f.found) {
-                d["p"] = f.p;
-                d["height"] = h;
-            }
-            return d;
-        };
         py::dict d = result();
         d["built"] = m.block.built;
         d["alpha"] = m.block.alpha;
@@ -224,8 +215,8 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
         d["height"] = studies::height_at_p(m.block.alpha, m.block.p);
         d["overturns"] = m.overturns;
         d["in_set"] = m.in_set;
-        d["nearest_below"] = side(m.below, m.height_below);
-        d["nearest_above"] = side(m.above, m.height_above);
+        d["nearest_below"] = nearest_side(m.below, m.height_below);
+        d["nearest_above"] = nearest_side(m.above, m.height_above);
         d["text"] = studies::describe_mark(m);
         marks_out.append(d);
     }

@@ -77,6 +77,16 @@ void method_argument(const Text& method_given, const std::optional<Real>& width_
     ida.robust_width = m.robust_width;
 }
 
+py::dict nearest_side(const studies::SpectrumFirst& f, double height) {
+    py::dict d = result();
+    d["found"] = f.found;
+    if (f.found) {
+        d["p"] = f.p;
+        d["height"] = height;
+    }
+    return d;
+}
+
 void restitution_into(const py::object& value, records::CollapseOptions& model) {
     const double e = restitution_argument(value);
     model.housner_restitution = std::isnan(e);

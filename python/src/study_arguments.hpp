@@ -11,6 +11,7 @@
 #include "common.hpp"
 #include "dynamics/ground_input.hpp"
 #include "studies/ida.hpp"
+#include "studies/spectrum.hpp"
 
 namespace rocking::python {
 
@@ -41,6 +42,10 @@ MethodChoice method_argument(const Text& method_given, const std::optional<Real>
 // The same into an IDA's options (unit q).
 void method_argument(const Text& method_given, const std::optional<Real>& width_given,
                      const std::optional<Real>& robust_width_given, studies::IdaOptions& ida);
+
+// The nearest overturning p of a spectrum on one side, as --json writes it:
+// {"found": ..., "p": ..., "height": ...} (p and height where found).
+py::dict nearest_side(const studies::SpectrumFirst& f, double height);
 
 // restitution=E|"housner" into a study's model, as the command line's --restitution.
 void restitution_into(const py::object& value, records::CollapseOptions& model);

@@ -64,13 +64,7 @@ void write_floor(const records::Record& r, const std::string& path) {
         if (key != "model" && key != "method") out.write("# " + key + ": " + one_line(value) + "\n");
     out.write("# samples: as many as the ground record's, at its dt: the floor record ends with it, without the "
               "building's free vibration after it (end_amplitude_m_s2)\n");
-    out.write("# columns: t (s), acceleration (m/s^2); read with --unit m/s2\n");
-    std::string lines;
-    for (std::size_t k = 0; k < r.accel.size(); ++k) {
-        lines += harness::format_number(r.dt * k) + "," + harness::format_number(r.accel[k]) + "\n";
-        if (lines.size() > (1u << 20)) out.write(lines), lines.clear();
-    }
-    out.write(lines);
+    write_record_samples(out, r);
     out.commit();
 }
 

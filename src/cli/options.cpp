@@ -453,6 +453,16 @@ records::Record read_ground(const std::string& path, const Args& a, const std::s
 // --floor T1,G[,zeta] (issue 40): the floor's motion of the building's first
 // mode in place of the ground's, the record's name stating the model, so that
 // every output that names its input names the floor.
+void write_record_samples(harness::AtomicFile& out, const records::Record& r) {
+    out.write("# columns: t (s), acceleration (m/s^2); read with --unit m/s2\n");
+    std::string lines;
+    for (std::size_t k = 0; k < r.accel.size(); ++k) {
+        lines += harness::format_number(r.dt * k) + "," + harness::format_number(r.accel[k]) + "\n";
+        if (lines.size() > (1u << 20)) out.write(lines), lines.clear();
+    }
+    out.write(lines);
+}
+
 void restitution_into(const Args& a, records::CollapseOptions& model) {
     if (!a.values.count("--restitution")) return;
     const double e = restitution_option(a.values.at("--restitution"));

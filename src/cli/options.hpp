@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/atomic_file.hpp"
 #include "harness/table.hpp"
 #include "pulse/pulse_train.hpp"
 #include "dynamics/simulate.hpp"
@@ -91,6 +92,10 @@ void check_outputs(const Args& a, const std::vector<std::string>& output_flags, 
 // the file the duration came from.
 void refuse_unresolvable_run(double p, double duration, const Args& a, const std::vector<std::string>& culprits,
                              const std::string& path);
+// A record's samples as "t,acceleration" lines (m/s^2, to the last bit), the
+// body of a two-column record file under its '#' lines: what record synth
+// and record floor write, and record info reads back with --unit m/s2.
+void write_record_samples(harness::AtomicFile& out, const records::Record& r);
 // table written to path (atomically), a failure named as --output's.
 void write_output(const harness::Table& table, const std::string& path);
 PulseTrain train_from(const Args& a, std::string& equation);

@@ -166,12 +166,7 @@ std::string script(const std::string& output, const std::vector<std::string>& fi
        << "set key at " << fig.screen(kPanelWidth + kLeft - 40, key_top)
        << " left top vertical maxrows 4 Left reverse font ',9' samplen 1.5 spacing 0.9 width -4\n"
        << cases_panel(o, by.first_overturning, to);
-    for (std::size_t i = 0; i < lines.size(); ++i)
-        gp << "set label " << 100 + i << " " << gp_text(lines[i]) << " at "
-           << fig.screen(width / 2, fig.height - footer + 16 + 16 * static_cast<int>(i)) << " center font ',10'\n";
-    // The caption's labels are drawn by a plot: an empty one over the last panel's area.
-    gp << "unset title\nunset xlabel\nunset ylabel\nunset tics\nunset border\nunset grid\nunset key\n"
-       << "plot NaN notitle\nunset multiplot\n";
+    gp << caption_and_end(fig, lines, footer);
     return gp.str();
 }
 

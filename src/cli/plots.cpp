@@ -184,4 +184,15 @@ void draw_png(const std::string& png, const std::function<std::string(const std:
     }
 }
 
+std::string caption_and_end(const Figure& fig, const std::vector<std::string>& lines, int footer) {
+    std::ostringstream gp;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        gp << "set label " << 100 + i << " " << gp_text(lines[i]) << " at "
+           << fig.screen(fig.width / 2, fig.height - footer + 16 + 16 * static_cast<int>(i)) << " center font ',10'\n";
+    // The caption's labels are drawn by a plot: an empty one over the last panel's area.
+    gp << "unset title\nunset xlabel\nunset ylabel\nunset tics\nunset border\nunset grid\nunset key\n"
+       << "plot NaN notitle\nunset multiplot\n";
+    return gp.str();
+}
+
 }  // namespace rocking::cli

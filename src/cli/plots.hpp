@@ -76,6 +76,10 @@ std::string log_tics(const std::string& axis, double lo, double hi);
 // The text cut into lines of at most `width` characters at spaces.
 std::vector<std::string> wrapped(const std::string& text, std::size_t width);
 
+// A multiplot's end: the caption's lines centred in its footer (`footer`
+// pixels above the bottom), drawn by an empty plot, and unset multiplot.
+std::string caption_and_end(const Figure& fig, const std::vector<std::string>& lines, int footer);
+
 // ---- The plots ----
 
 // rocking spectrum --png: per alpha, max |theta|/alpha of the runs that do

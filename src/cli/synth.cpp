@@ -69,13 +69,7 @@ void write_two_columns(const records::Record& r, const std::string& path) {
     out.write("# name: " + r.name + "\n");
     for (const auto& [key, value] : r.header)
         if (key != "generator") out.write("# " + key + ": " + value + "\n");
-    out.write("# columns: t (s), acceleration (m/s^2); read with --unit m/s2\n");
-    std::string lines;
-    for (std::size_t k = 0; k < r.accel.size(); ++k) {
-        lines += harness::format_number(r.dt * k) + "," + harness::format_number(r.accel[k]) + "\n";
-        if (lines.size() > (1u << 20)) out.write(lines), lines.clear();
-    }
-    out.write(lines);
+    write_record_samples(out, r);
     out.commit();
 }
 
