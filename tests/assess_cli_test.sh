@@ -26,6 +26,16 @@ check "assess: the check is named" "eq. 27 check FAILS (the record's q is at or 
     "$rocking" assess "$a" --thickness 0.6 --height 4
 status "assess: a bad width" 2 "$rocking" assess "$a" --thickness 0.6 --height 4 --width 0.5
 check "assess: the block is required" "give the block as --thickness B --height H" "$rocking" assess "$a"
+check "assess: a record twice is refused" "the same record as" "$rocking" assess "$a" "$a" --thickness 0.6 --height 4
+status "assess: a record twice is refused" 2 "$rocking" assess "$a" "$a" --thickness 0.6 --height 4
+check "assess: its restitution stated" "restitution 0.8" "$rocking" assess "$a" --thickness 0.6 --height 4 --restitution 0.8
+# A block far weaker than the record (q = 324 at H = 400 m): the scale search reaches
+# twice the record's q, and the first overturning lies below the record as recorded.
+if "$rocking" assess "$b" --thickness 0.6 --height 400 --json | $py -c "
+import json, sys
+r = json.load(sys.stdin)['records'][0]
+assert r['q_record'] > 20 and r['first_overturning']['found'] and r['first_overturning']['scale'] < 1, r
+"; then echo "ok: assess reaches a weak block's scale"; else echo "FAIL: assess on a weak block"; fail=1; fi
 "$rocking" assess "$a" "$b" --thickness 0.6 --height 4 --json >"$tmp/assess.json" || { echo "FAIL: assess ran"; exit 1; }
 "$rocking" fragility "$a" "$b" --block 0.6x4 --method refine --width 1e-3 --json >"$tmp/fragility.json"
 "$rocking" spectrum "$a" --mark 0.6x4 --method refine --width 1e-3 --json >"$tmp/spectrum.json"
@@ -65,7 +75,7 @@ for r, path in zip(d["records"], files):
 m = spec["marks"][0]
 r = d["records"][0]
 for side in ("below", "above"):
-    got, want = r["nearest_overturning_" + side], m["nearest_" + side]
+    got, want = r["change_" + side], m["change_" + side]
     assert got == want, (side, got, want)
     if got["found"]:
         R = 3 * 9.81 / (4 * got["p"] ** 2)

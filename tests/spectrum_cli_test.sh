@@ -286,23 +286,33 @@ if [[ -f "$norcia" ]]; then
     if $py - "$tmp/marks.json" "$rocking" "$norcia" <<'PY'
 import json, math, subprocess, sys
 d = json.load(open(sys.argv[1]))
-checked = 0
+checked, checked_inside = 0, False
 for m in d["marks"]:
     sp = [s for s in d["spectra"] if s["alpha"] == m["alpha"]][0]
     B, H = (float(v) for v in m["built"].split("x"))
     assert abs(m["alpha"] - math.atan(B / H)) < 1e-15 and abs(m["height"] - H) < 1e-12 * H, m
-    if m["in_set"] or not m["nearest_above"]["found"]:
+    run = lambda p: json.loads(subprocess.run([sys.argv[2], "simulate", "--record", sys.argv[3], "--alpha", repr(m["alpha"]),
+                                               "--p", repr(p), "--json"], capture_output=True, check=True).stdout)["collapse"]
+    if m["in_set"]:
+        # Inside an interval: the changes are its own ends, and just beyond them the blocks survive.
+        inside = [i for i in sp["intervals"] if i["from"] <= m["p"] <= i["to"]][0]
+        lo, hi = m["change_below"], m["change_above"]
+        assert lo["found"] and lo["p"] == inside["from"] and not run(inside["lower"]["p_safe"]), (m, inside)
+        if hi["found"]:
+            assert hi["p"] == inside["to"] and not run(inside["upper"]["p_safe"]), (m, inside)
+        checked_inside = True
         continue
-    up = m["nearest_above"]
+    if not m["change_above"]["found"]:
+        continue
+    up = m["change_above"]
     assert up["p"] > m["p"] and any(i["from"] == up["p"] for i in sp["intervals"]), (m, sp["intervals"][:3])
     assert not any(i["from"] <= m["p"] <= i["to"] for i in sp["intervals"])
     R = 3 * 9.81 / (4 * up["p"] ** 2)
     assert abs(up["height"] - 2 * R * math.cos(m["alpha"])) < 1e-12 * up["height"], up
-    run = lambda p: json.loads(subprocess.run([sys.argv[2], "simulate", "--record", sys.argv[3], "--alpha", repr(m["alpha"]),
-                                               "--p", repr(p), "--json"], capture_output=True, check=True).stdout)["collapse"]
     assert run(up["p"] * (1 + 1e-9)) and not run(m["p"]), m
     checked += 1
 assert checked >= 1, "no safe mark with an overturning p above it"
+assert checked_inside, "no mark inside an interval"
 PY
     then echo "ok: marks' nearest overturning p"; else echo "FAIL: marks' nearest overturning p"; fail=1; fi
     expect "mark grammar" 2 "--mark: each block is THICKNESSxHEIGHT in m" "$rocking" spectrum "$norcia" --mark 0.6

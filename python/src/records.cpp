@@ -5,6 +5,7 @@
 #include <map>
 
 #include "common.hpp"
+#include "studies/distinct_inputs.hpp"
 #include "study_arguments.hpp"
 #include "studies/assessment.hpp"
 #include "dynamics/ground_input.hpp"
@@ -361,11 +362,13 @@ py::dict collapse(py::handle record, const Real& alpha_given, const Text& model,
 // `rocking assess --json`: one record or several (studies/assessment.hpp).
 py::dict assess(py::handle records_given, const std::optional<Real>& thickness, const std::optional<Real>& height,
                 const std::optional<Real>& half_height, const std::optional<Real>& alpha_given,
-                const std::optional<Real>& p_given, const Real& width_given, const py::kwargs& extra) {
+                const std::optional<Real>& p_given, const Real& width_given, const py::object& restitution,
+                const py::kwargs& extra) {
     no_other_keywords(extra, "assess", "assess");
     const dynamics::GivenBlock given = block_argument(thickness, height, half_height, alpha_given, p_given);
     const double alpha = given.alpha;
     studies::AssessOptions o;
+    restitution_into(restitution, o.model);
     o.width = number(width_given, "width");
     if (!(o.width >= 1e-7 && o.width <= 0.1)) refuse("width: must be in [1e-7, 0.1] (got " + significant(o.width, 17) + ")");
     if (!studies::in_search_alpha_range(alpha))
@@ -394,6 +397,13 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         if (!(inputs.back()->peak() > 0)) throw std::invalid_argument(label_of(*r) + ": the record never moves (PGA 0)");
         refuse_unresolvable_run(std::max(o.p_max, given.block.p), inputs.back()->t_end(), "record " + label_of(*r));
         views.push_back(inputs.back().get());
+    }
+    std::vector<std::string> labels;
+    for (const RecordPtr& r : held) labels.push_back(label_of(*r));
+    try {
+        studies::refuse_repeated_records(labels, views);  // as rocking assess: it would count twice in the fit
+    } catch (const std::invalid_argument& e) {
+        refuse(e.what());
     }
     studies::Assessment a;
     {
@@ -426,8 +436,8 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         d["peak_theta_over_alpha"] = r.peak_theta_over_alpha;
         d["first_overturning"] = first(r.ida.first_overturning, r.scale_first_overturning);
         d["first_robust_collapse"] = first(r.ida.first_robust_collapse, r.scale_first_robust);
-        d["nearest_overturning_below"] = nearest_side(r.mark.below, r.mark.height_below);
-        d["nearest_overturning_above"] = nearest_side(r.mark.above, r.mark.height_above);
+        d["change_below"] = nearest_side(r.mark.below, r.mark.height_below);
+        d["change_above"] = nearest_side(r.mark.above, r.mark.height_above);
         d["in_spectrum_set"] = r.mark.in_set;
         if (r.has_probability) d["probability"] = r.probability;
         rows.append(d);
@@ -532,6 +542,7 @@ linear between samples (Nigam & Jennings 1969), at its samples.  Releases the GI
 record overturns the block, then refined.  Not a bound (docs/findings.md, T1b).  Releases the GIL.)");
     m.def("assess", gsl_checked(&assess), "record"_a, py::kw_only(), "thickness"_a = py::none(), "height"_a = py::none(),
           "half_height"_a = py::none(), "alpha"_a = py::none(), "p"_a = py::none(), "width"_a = 1e-3,
+          "restitution"_a = "housner",
           R"(`rocking assess --json`: the block (thickness and height in m, or alpha with height, half_height or p)
 against one record or a list: eq. 27's check with its ratio and margin, the run on each record, the
 scale factors at which the block first overturns and first robustly collapses, the nearest

@@ -215,8 +215,8 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
         d["height"] = studies::height_at_p(m.block.alpha, m.block.p);
         d["overturns"] = m.overturns;
         d["in_set"] = m.in_set;
-        d["nearest_below"] = nearest_side(m.below, m.height_below);
-        d["nearest_above"] = nearest_side(m.above, m.height_above);
+        d["change_below"] = nearest_side(m.below, m.height_below);
+        d["change_above"] = nearest_side(m.above, m.height_above);
         d["text"] = studies::describe_mark(m);
         marks_out.append(d);
     }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/distinct_inputs.hpp"
 #include "cli/geometry.hpp"
 #include "cli/options.hpp"
 #include "qfactor/superposition.hpp"
@@ -22,7 +23,7 @@ namespace {
 
 const char* kUsage =
     "usage: rocking assess FILE... (--thickness B --height H | --alpha A (--height H | --half-height h | --p P)) "
-    "[--width W] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]";
+    "[--width W] [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]";
 
 // PGA, PGV and to_5 alone: the CWT and the Fourier peaks of the eleven half-periods
 // took 1.1 s of a 30,001-sample record and assess reports none of them.
@@ -41,9 +42,10 @@ std::string percent(double v) {
     return text;
 }
 
-std::string scale_text(const studies::IdaPoint& at, double scale, double q_max) {
-    if (!at.collapsed) return "not up to q = " + significant(q_max, 6) + " (censored)";
-    return "x" + four(scale) + " (q = " + four(at.q) + ")";
+std::string scale_text(const studies::IdaPoint& at, double scale, double q_record) {
+    if (!at.collapsed)
+        return "no scale up to " + four(at.q / q_record) + " times the record (q = " + four(at.q) + ", the search's end)";
+    return four(scale) + " times the record (q = " + four(at.q) + ")";
 }
 
 void print_text(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
@@ -65,9 +67,9 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
             std::printf("  the model on this record: %s (peak |theta|/alpha during the input %s)\n",
                         r.overturns ? "OVERTURNS (in the free rocking after it)" : "does not overturn",
                         four(r.peak_theta_over_alpha).c_str());
-        std::printf("  the record scaled: first overturns the block at %s, first robustly collapses at %s\n",
-                    scale_text(r.ida.first_overturning, r.scale_first_overturning, o.q_max).c_str(),
-                    scale_text(r.ida.first_robust_collapse, r.scale_first_robust, o.q_max).c_str());
+        std::printf("  the record scaled: the block first overturns at %s; first robustly collapses at %s\n",
+                    scale_text(r.ida.first_overturning, r.scale_first_overturning, r.q_record).c_str(),
+                    scale_text(r.ida.first_robust_collapse, r.scale_first_robust, r.q_record).c_str());
         std::printf("  blocks of this alpha: %s\n", studies::describe_mark(r.mark).c_str());
         if (r.has_probability)
             std::printf("  fragility over the %zu records: P(overturn) at this record's q = %s\n", files.size(),
@@ -111,8 +113,8 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
            << ", \"peak_theta_over_alpha\": " << json_number(r.peak_theta_over_alpha)
            << ", \"first_overturning\": " << first_json(r.ida.first_overturning, r.scale_first_overturning)
            << ", \"first_robust_collapse\": " << first_json(r.ida.first_robust_collapse, r.scale_first_robust)
-           << ", \"nearest_overturning_below\": " << side_json(r.mark.below, r.mark.height_below)
-           << ", \"nearest_overturning_above\": " << side_json(r.mark.above, r.mark.height_above)
+           << ", \"change_below\": " << side_json(r.mark.below, r.mark.height_below)
+           << ", \"change_above\": " << side_json(r.mark.above, r.mark.height_above)
            << ", \"in_spectrum_set\": " << (r.mark.in_set ? "true" : "false");
         if (r.has_probability) js << ", \"probability\": " << json_number(r.probability);
         js << "}";
@@ -130,12 +132,13 @@ int cmd_assess(int argc, char** argv) {
     int first = 0;
     const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
     if (files.size() > 1000) throw UsageError("at most 1000 files");
-    std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor"};
+    std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor", "--restitution"};
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(argc, argv, first, allowed);
     const GivenBlock given = block_option(a);
     const double alpha = given.alpha;
     studies::AssessOptions o;
+    restitution_into(a, o.model);
     if (a.values.count("--width")) {
         o.width = number("--width", a.values.at("--width"));
         if (!(o.width >= 1e-7 && o.width <= 0.1)) throw UsageError("--width: must be in [1e-7, 0.1] (got " + a.values.at("--width") + ")");
@@ -169,6 +172,8 @@ int cmd_assess(int argc, char** argv) {
         refuse_unresolvable_run(std::max(o.p_max, given.block.p), inputs.back()->t_end(), a, {"--dt"}, path);
         views.push_back(inputs.back().get());
     }
+    // As fragility: a record given twice (the same samples, whatever the path) would count twice in the fit.
+    refuse_repeated_records(files, views);
     const studies::Assessment s =
         studies::assess_block(views, motions, studies::BlockShape{alpha, given.block.p, given.label}, o);
     std::vector<std::string> names;

@@ -277,8 +277,8 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
            << ", \"p\": " << json_number(m.block.p)
            << ", \"height\": " << json_number(studies::height_at_p(m.block.alpha, m.block.p))
            << ", \"overturns\": " << (m.overturns ? "true" : "false") << ", \"in_set\": " << (m.in_set ? "true" : "false")
-           << ", \"nearest_below\": " << side(m.below, m.height_below)
-           << ", \"nearest_above\": " << side(m.above, m.height_above) << ", \"text\": " << json_string(describe_mark(m))
+           << ", \"change_below\": " << side(m.below, m.height_below)
+           << ", \"change_above\": " << side(m.above, m.height_above) << ", \"text\": " << json_string(describe_mark(m))
            << "}";
     }
     js << "]}\n";

@@ -1,5 +1,6 @@
 #include "studies/assessment.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -14,7 +15,7 @@ std::string AssessOptions::describe() const {
     IdaOptions ida;
     ida.model = model;
     char range[200];
-    std::snprintf(range, sizeof range, "q in [1, %g]", q_max);
+    std::snprintf(range, sizeof range, "q in [1, %g] (or to twice the record's q, at most 1e4)", q_max);
     char p_range[200];
     std::snprintf(p_range, sizeof p_range, "p in [%g, %g] rad/s", p_min, p_max);
     char w[40];
@@ -46,7 +47,9 @@ RecordAssessment assess_record(const dynamics::SampledInput& input, const record
 
     IdaOptions ida;
     ida.model = o.model;
-    ida.q_max = o.q_max;
+    // The scale factors of interest lie about 1: the search reaches twice the
+    // record's own q where that is above q_max (a block far weaker than the record).
+    ida.q_max = std::min(1e4, std::max(o.q_max, 2 * a.q_record));
     ida.method = IdaOptions::Method::refine;
     ida.width = o.width;
     a.ida = incremental_dynamic_analysis(input, block.alpha, block.p, ida);

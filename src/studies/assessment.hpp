@@ -32,7 +32,7 @@ namespace rocking::studies {
 struct AssessOptions {
     records::CollapseOptions model{};  // Table 1's
     double width = 1e-3;               // the refine searches' w, in ln q and ln p
-    double q_max = 20;                 // the IDA's range, from q = 1
+    double q_max = 20;                 // the IDA's range, from q = 1, or to twice the record's q where higher (at most 1e4)
     double p_min = 0.3, p_max = 30;    // the spectrum's range, rad/s
     std::string describe() const;
 };

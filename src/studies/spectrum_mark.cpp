@@ -23,7 +23,9 @@ SpectrumMark mark_block(const dynamics::GroundInput& input, const Spectrum& s, c
     for (const Interval& in : s.intervals) {
         if (in.from <= block.p && block.p <= in.to) {
             m.in_set = true;
-            m.below = m.above = SpectrumFirst{block.p, true};
+            // Its ends where they are boundaries, not the grid's own ends.
+            m.below = SpectrumFirst{in.from, in.has_lower};
+            m.above = SpectrumFirst{in.to, in.has_upper};
             break;
         }
         if (in.to < block.p) m.below = SpectrumFirst{in.to, true};
@@ -41,18 +43,21 @@ std::string describe_mark(const SpectrumMark& m) {
                   m.block.alpha, m.block.p, height_at_p(m.block.alpha, m.block.p),
                   m.overturns ? "OVERTURNS" : "does not overturn");
     std::string out = text;
+    auto side = [&](const SpectrumFirst& f, double h, const char* which, const char* what) {
+        if (!f.found) return std::string("; no ") + what + " p " + which + " it on the spectrum's range";
+        std::snprintf(text, sizeof text, "; %s p %s it %.6g rad/s (%+.3g %%: H = %.4g m)", what, which, f.p,
+                      100 * (f.p / m.block.p - 1), h);
+        return std::string(text);
+    };
     if (m.in_set) {
-        out += "; inside an overturning interval of the spectrum";
+        out += "; inside an overturning interval of the spectrum, the blocks between its ends overturn too: "
+               "the nearest surviving blocks lie beyond them";
+        out += side(m.below, m.height_below, "below", "its interval ends, for taller blocks, at");
+        out += side(m.above, m.height_above, "above", "its interval ends, for shorter blocks, at");
     } else {
         if (m.overturns) out += ", on an island the spectrum's method did not resolve";
-        auto side = [&](const SpectrumFirst& f, double h, const char* which) {
-            if (!f.found) return std::string("; no overturning p ") + which + " it on the spectrum's range";
-            std::snprintf(text, sizeof text, "; nearest overturning p %s it %.6g rad/s (%+.3g %%: the block with H = %.4g m)",
-                          which, f.p, 100 * (f.p / m.block.p - 1), h);
-            return std::string(text);
-        };
-        out += side(m.below, m.height_below, "below");
-        out += side(m.above, m.height_above, "above");
+        out += side(m.below, m.height_below, "below", "nearest overturning");
+        out += side(m.above, m.height_above, "above", "nearest overturning");
     }
     return out;
 }

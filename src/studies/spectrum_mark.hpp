@@ -19,8 +19,11 @@ struct SpectrumMark {
     BlockShape block;
     bool overturns = false;        // a run at the block's p, the spectrum's model
     bool in_set = false;           // the spectrum's set (its intervals) holds p
-    // The nearest p of the set at or below p (the larger blocks) and at or
-    // above it (the smaller), found false where the set has none on that side.
+    // The nearest p below p (the larger blocks) and above it (the smaller)
+    // at which the set's outcome changes: outside the set, the nearest end
+    // of an overturning interval; inside one, that interval's own ends (the
+    // nearest surviving blocks lie just beyond them).  Found false where
+    // there is none on that side (the spectrum's range ends first).
     SpectrumFirst below, above;
     // The heights (m) of the blocks of this alpha at below.p and above.p
     // (H = 2 R cos alpha, R = 3 g/(4 p^2)); 0 where not found.
