@@ -85,6 +85,10 @@ check "an unknown topic is named"    "rocking: no command 'nosuch' (the commands
 status "and exits 2"                 2 "$rocking" help nosuch
 status "an unknown command's --help exits 2" 2 "$rocking" nosuch --help
 status "an unknown record command's help exits 2" 2 "$rocking" help record nosuch
+check "help -h is the overview"      "usage: rocking q --case I" "$rocking" help -h
+# The errors quote the help's synopsis: spectrum's had lost --mark and --floor.
+check "a missing FILE quotes the synopsis" "usage: rocking spectrum FILE [--alpha A[,A...]] [--mark BxH[,BxH...]]" "$rocking" spectrum
+check "an option before FILE quotes it" "FILE comes first, before '--block': usage: rocking fragility FILE... (--alpha A[,A...] --p P[,P...] | --block BxH[,BxH...])" "$rocking" fragility --block 0.6x4
 status "impossible train exits 1"    1 "$rocking" q --train 1:1,-5:1 --x 1
 status "good call exits 0"           0 "$rocking" q --case 4 --x 0.3 --json
 # simulate: case 2 at Rd = 0.9 keeps theta(t_fin)/alpha = 0.845691936518 (x = 0.5; the jump sum).

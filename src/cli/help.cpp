@@ -3,6 +3,8 @@
 #include "cli/help.hpp"
 
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli/help_entries.hpp"
 #include "cli/options.hpp"
@@ -11,7 +13,8 @@ namespace rocking::cli {
 
 namespace {
 
-const char* kBlockDefinitions = R"(The block (eqs. 2, 4):
+const char* kBlockDefinitions = R"(
+The block (eqs. 2, 4):
   B, H              its full thickness and full height (m); h = H/2, its half-height (eq. 2's H)
   alpha             its slenderness, alpha = atan(B/H) (rad)
   R                 its half-diagonal, R = sqrt(B^2 + H^2)/2 = h/cos(alpha) (m)
@@ -22,7 +25,8 @@ const char* kBlockDefinitions = R"(The block (eqs. 2, 4):
   x                 x = p to, to the input's half-period (s); a record's to_5 = pi PGV/PGA (eq. 31)
 )";
 
-const char* kModelDefinitions = R"(The model, unless said otherwise above: linearised eq. 3, exact solver (closed form between
+const char* kModelDefinitions = R"(
+The model, unless said otherwise above: linearised eq. 3, exact solver (closed form between
 events); at each impact theta' times Housner's restitution 1 - 1.5 sin^2 alpha; collapse is
 overturning: the block falls (|theta| reaches pi/2) at any time, the free rocking after the input
 followed (ground at rest, up to 200/p s; a block still rocking then is judged by its energy).
@@ -30,7 +34,8 @@ simulate --paper sets restitution 1 and the final-rotation criterion
 (|theta(t_fin)| >= alpha at the input's end t_fin): the paper's Section 3 setting.
 )";
 
-const char* kRecordDefinitions = R"(Records, read by content: ESM/ITACA ASCII or PEER AT2 (each states its unit and step), or plain
+const char* kRecordDefinitions = R"(
+Records, read by content: ESM/ITACA ASCII or PEER AT2 (each states its unit and step), or plain
 text ('#' lines skipped; comma, space or tab separated) of one column (give --unit U and the step
 --dt DT in s; simulate: --record-dt) or two, time (s) and acceleration (give --unit U); U = g,
 m/s2 or cm/s2. --unit and --dt apply to plain text only. Decimal commas are refused. A FILE may
@@ -38,7 +43,8 @@ be a pipe, a FIFO or /dev/stdin (not under mpirun): read once, up to 256 MiB, li
 10 s of silence at most. PGA in m/s^2 (in g over 9.81 m/s^2), PGV in m/s.
 )";
 
-const char* kFloorDefinitions = R"(A floor (--floor T1,G[,zeta]): the motion of a floor in place of the ground's, for an element at
+const char* kFloorDefinitions = R"(
+A floor (--floor T1,G[,zeta]): the motion of a floor in place of the ground's, for an element at
 height (a parapet on a roof), the building as its first mode: a linear oscillator of period T1 (s,
 above 2 dt) and damping ratio zeta (in [0, 1), default 0.05) driven by the record, G = Gamma phi(z)
 the floor's participation in that mode (3N/(2N + 1) at the roof of N equal storeys with a linear
@@ -46,10 +52,13 @@ mode shape); a_f = a_g + G D'' (docs/floor_motion.md; rocking record floor write
 The outputs name the floor's model with the record.
 )";
 
+// A text of the help without the line break it starts with in the source.
+std::string body(const char* text) { return text[0] == '\n' ? text + 1 : text; }
+
 // "rocking record synth ...": the form's lines, each as the overview prints it.
 std::vector<std::string> lines_of(const char* text) {
     std::vector<std::string> lines;
-    std::istringstream in(text);
+    std::istringstream in(body(text));
     for (std::string line; std::getline(in, line);) lines.push_back(line);
     return lines;
 }
@@ -64,7 +73,8 @@ const HelpEntry* entry_of(const std::string& topic) {
 std::string synopsis_block(const std::vector<const HelpEntry*>& entries) {
     std::string out;
     for (const HelpEntry* e : entries)
-        for (const std::string& line : lines_of(e->synopsis)) out += (out.empty() ? "usage: " : "       ") + line + "\n";
+        for (const std::string& line : lines_of(e->synopsis))
+            out += (out.empty() ? "usage: " : "       ") + line + "\n";
     return out;
 }
 
@@ -75,11 +85,11 @@ std::string commands() {
 }
 
 std::string entry_help(const HelpEntry& e) {
-    std::string out = synopsis_block({&e}) + "\n" + e.details;
-    if (e.shared & kTheBlock) out += std::string("\n") + kBlockDefinitions;
-    if (e.shared & kTheModel) out += std::string("\n") + kModelDefinitions;
-    if (e.shared & kTheRecords) out += std::string("\n") + kRecordDefinitions;
-    if (e.shared & kTheFloor) out += std::string("\n") + kFloorDefinitions;
+    std::string out = synopsis_block({&e}) + "\n" + body(e.details);
+    if (e.shared & kTheBlock) out += "\n" + body(kBlockDefinitions);
+    if (e.shared & kTheModel) out += "\n" + body(kModelDefinitions);
+    if (e.shared & kTheRecords) out += "\n" + body(kRecordDefinitions);
+    if (e.shared & kTheFloor) out += "\n" + body(kFloorDefinitions);
     return out;
 }
 
@@ -96,12 +106,6 @@ std::string record_help() {
 bool asks_help(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
 }  // namespace
-
-std::vector<std::string> help_topics() {
-    std::vector<std::string> topics;
-    for (const HelpEntry& e : help_entries()) topics.push_back(e.topic);
-    return topics;
-}
 
 std::string topic_of(int argc, char** argv) {
     if (argc < 2) return "";
@@ -120,7 +124,7 @@ std::optional<std::string> help_request(int argc, char** argv) {
         std::string topic;
         for (int i = 2; i < argc && i < 4; ++i) topic += (topic.empty() ? "" : " ") + std::string(argv[i]);
         if (topic.rfind("record ", 0) != 0 && argc > 2) topic = argv[2];
-        return topic == "help" ? "" : topic;
+        return topic == "help" || asks_help(topic) ? "" : topic;
     }
     bool help = false;
     for (int i = 1; i < argc; ++i) help = help || asks_help(argv[i]);
@@ -144,7 +148,8 @@ std::string overview() {
            "\nEach command's options, with units and defaults, and the definitions it uses (alpha, p, q, the\n"
            "model, the records): 'rocking COMMAND --help', -h or 'rocking help COMMAND', e.g.\n"
            "'rocking assess --help', 'rocking record floor --help'. Every command but batch takes --json.\n"
-           "Exit 0 with an answer, 2 on a bad argument, 1 on an input that cannot be answered.\n"
+           "Exit 0 with an answer, 2 on a bad argument, 1 on an input that cannot be answered (batch: 3\n"
+           "when some job failed).\n"
            "mpirun: spectrum, fragility, eq27 and batch share their work across the ranks; the other commands\n"
            "refuse to start under mpirun (exit 2), as does an input on standard input or a pipe, which the\n"
            "ranks cannot share (save it to a file).\n";

@@ -8,14 +8,8 @@
 
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace rocking::cli {
-
-// The commands with a help of their own, in the overview's order: "q",
-// "response", "simulate", "record info", "record synth", "record floor",
-// "collapse", "assess", "spectrum", "fragility", "eq27", "batch".
-std::vector<std::string> help_topics();
 
 // The help argv asks for: "" for the overview (`rocking --help`, `rocking
 // help`), a topic ("assess", "record floor", "record" for the three record

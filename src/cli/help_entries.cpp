@@ -8,10 +8,12 @@ namespace rocking::cli {
 
 namespace {
 
-const char* kQ = R"(rocking q --case I --x X [--pulses N] [--json]
+const char* kQ = R"(
+rocking q --case I --x X [--pulses N] [--json]
 rocking q --train A:d,A:d,... --x X [--json]
 )";
-const char* kQDetails = R"(The collapse q of a pulse input on the paper's closed form: linearised eq. 3, rocking on one
+const char* kQDetails = R"(
+The collapse q of a pulse input on the paper's closed form: linearised eq. 3, rocking on one
 corner, no impact, collapse when theta(t_fin) = alpha (eqs. 12-28; a train by superposition, S2).
 It says whether that form holds at that q: the first pulse lifts the block, and theta stays above
 0 up to t_fin (below 0 is outside the model: rocking simulate follows the impacts).
@@ -23,9 +25,11 @@ It says whether that form holds at that q: the first pulse lifts the block, and 
   --json            machine-readable output
 )";
 
-const char* kResponse = R"(rocking response (--case I [--pulses N] | --train A:d,...) --x X [--q Q] [--steps K] [--json]
+const char* kResponse = R"(
+rocking response (--case I [--pulses N] | --train A:d,...) --x X [--q Q] [--steps K] [--json]
 )";
-const char* kResponseDetails = R"(The motion up to t_fin on rocking q's closed form (linearised eq. 3, one corner, no impact):
+const char* kResponseDetails = R"(
+The motion up to t_fin on rocking q's closed form (linearised eq. 3, one corner, no impact):
 rows t/to, theta/alpha, theta'/(alpha p), at the collapse q (evaluated exactly) or at --q. Off the
 collapse q theta grows like e^(x t/to): the rows stop where it leaves the double range, saying so.
   --case I, --pulses N, --train A:d,...   the input, as for rocking q
@@ -35,10 +39,12 @@ collapse q theta grows like e^(x t/to): the rows stop where it leaves the double
   --json            machine-readable output
 )";
 
-const char* kSimulate = R"(rocking simulate INPUT BLOCK [--paper] [--model M] [--solver S] [--rtol R] [--atol A]
+const char* kSimulate = R"(
+rocking simulate INPUT BLOCK [--paper] [--model M] [--solver S] [--rtol R] [--atol A]
                  [--criterion C] [--restitution E|housner] [--output FILE [--dt DT]] [--json]
 )";
-const char* kSimulateDetails = R"(One block under a pulse train, a one-sine pulse or a record, with impacts, the free rocking
+const char* kSimulateDetails = R"(
+One block under a pulse train, a one-sine pulse or a record, with impacts, the free rocking
 after the input followed; the outcome under --criterion and under each of the three criteria.
 INPUT, exactly one of:
   --case I [--pulses N] | --train A:d,...   a step-pulse train, as for rocking q, of length
@@ -78,20 +84,25 @@ Output:
   --json            machine-readable output
 )";
 
-const char* kRecordInfo = R"(rocking record info FILE [--unit U [--dt DT]] [--json]
+const char* kRecordInfo = R"(
+rocking record info FILE [--unit U [--dt DT]] [--json]
 )";
-const char* kRecordInfoDetails = R"(A record's PGA (m/s^2 and g), PGV (m/s), Amax (m/s, the area of its largest pulse) and its
-eleven half-periods to_1..to_11 (s; Table 2's and the CWT's), to_5 = pi PGV/PGA (eq. 31). A CWT
-half-period at the edge of the band scanned (0.1 Hz to min(25 Hz, 0.25/dt)) is warned of.
+const char* kRecordInfoDetails = R"(
+A record's PGA (m/s^2 and g), PGV (m/s), Amax (m/s, the area of its largest pulse) and its
+eleven half-periods to_1..to_11 (s): its pulses' (to_3, to_4: eqs. 29, 30; to_5 = pi PGV/PGA,
+eq. 31), Fourier and CWT measures. A CWT half-period at the edge of the band scanned (0.1 Hz to
+min(25 Hz, 0.25/dt)) is warned of.
   --unit U          a plain-text record's unit: g, m/s2 or cm/s2
   --dt DT           a one-column record's sampling step (s)
   --json            machine-readable output
 )";
 
-const char* kRecordSynth = R"(rocking record synth (--pulse A,fp,nu,gamma[,t0] | --stochastic SEED [--params K=V,...])
+const char* kRecordSynth = R"(
+rocking record synth (--pulse A,fp,nu,gamma[,t0] | --stochastic SEED [--params K=V,...])
                      --dt DT --duration D [--output FILE] [--json]
 )";
-const char* kRecordSynthDetails = R"(A synthetic record, its generator and parameters stated (docs/synthetic.md); prints its PGA,
+const char* kRecordSynthDetails = R"(
+A synthetic record, its generator and parameters stated (docs/synthetic.md); prints its PGA,
 PGV and to_5.
   --pulse A,fp,nu,gamma[,t0]   Mavroeidis & Papageorgiou (2003) velocity pulse: A (m/s), fp (Hz,
                     period 1/fp), nu (rad), gamma > 1, t0 (s, the envelope's peak; default
@@ -110,10 +121,12 @@ PGV and to_5.
   --json            machine-readable output
 )";
 
-const char* kRecordFloor = R"(rocking record floor FILE --period T1 --participation G [--damping Z] [--unit U [--dt DT]]
+const char* kRecordFloor = R"(
+rocking record floor FILE --period T1 --participation G [--damping Z] [--unit U [--dt DT]]
                      [--output FILE] [--json]
 )";
-const char* kRecordFloorDetails = R"(The absolute acceleration of a floor, for an element at height (a parapet on a roof), the
+const char* kRecordFloorDetails = R"(
+The absolute acceleration of a floor, for an element at height (a parapet on a roof), the
 building idealised as its first mode: a linear oscillator of period T1 and damping ratio Z driven
 by the record FILE, a_f = a_g + G D'' with D the oscillator's displacement relative to the ground
 (docs/floor_motion.md). Exact for the record read linear between samples (Nigam & Jennings 1969),
@@ -130,11 +143,13 @@ record's end (its amplitude there is printed). Prints the ground's and the floor
 The other commands take the same floor with --floor T1,G[,zeta], without the file.
 )";
 
-const char* kCollapse = R"(rocking collapse FILE (--alpha A | --thickness B (--height H | --half-height h)) [--model M]
+const char* kCollapse = R"(
+rocking collapse FILE (--alpha A | --thickness B (--height H | --half-height h)) [--model M]
                  [--solver S] [--rtol R] [--atol A] [--criterion C] [--restitution E|housner]
                  [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]
 )";
-const char* kCollapseDetails = R"(Table 1's search: the first pulsation p (rad/s) at which the record overturns a block of
+const char* kCollapseDetails = R"(
+Table 1's search: the first pulsation p (rad/s) at which the record overturns a block of
 slenderness alpha, p raised from 0.3 by 1 % up to 30 rad/s, then bisected to 1e-4 relative inside
 the last step. Not a bound: a lower p may overturn the block too (docs/findings.md, T1b; rocking
 spectrum finds every interval).
@@ -153,11 +168,13 @@ spectrum finds every interval).
   --json            machine-readable output
 )";
 
-const char* kAssess = R"(rocking assess FILE... (--thickness B (--height H | --half-height h)
+const char* kAssess = R"(
+rocking assess FILE... (--thickness B (--height H | --half-height h)
                        | --alpha A (--height H | --half-height h | --p P))
                [--width W] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]
 )";
-const char* kAssessDetails = R"(The engineer's check of one block against one record or several (1 to 1000 FILEs), the model
+const char* kAssessDetails = R"(
+The engineer's check of one block against one record or several (1 to 1000 FILEs), the model
 named in the output. For each record:
   - the paper's eq. 27 check: x = p to_5 (to_5 = pi PGV/PGA, eq. 31), q_27 = eq. 27 at x, and the
     record's q = PGA/(alpha g); it PASSES when q < q_27. Ratio q/q_27 and margin 1 - q/q_27
@@ -185,14 +202,16 @@ named in the output. For each record:
   --json            machine-readable output, one member a record
 )";
 
-const char* kSpectrum = R"(rocking spectrum FILE [--alpha A[,A...]] [--mark BxH[,BxH...]] [--p-min P] [--p-max P]
+const char* kSpectrum = R"(
+rocking spectrum FILE [--alpha A[,A...]] [--mark BxH[,BxH...]] [--p-min P] [--p-max P]
                  [--points N] [--method grid|refine [--width W] [--robust-width R]]
                  [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
                  [--jobs N] [--output CSV] [--png PNG] [--json] [--rows FILE [--resume]]
                  [--quiet]
 mpirun -np K rocking spectrum FILE --alpha A[,A...] ... [--rows FILE [--resume]]
 )";
-const char* kSpectrumDetails = R"(Which blocks the record overturns. For each alpha, max |theta|/alpha and the three criteria over
+const char* kSpectrumDetails = R"(
+Which blocks the record overturns. For each alpha, max |theta|/alpha and the three criteria over
 a log grid of p (and a second grid offset by half a step), and the overturning intervals in p:
 each end bisected to 1e-6 relative and confirmed by gsl-rk8pd at rtol 1e-13, or flagged
 ill-conditioned (the record times 1 +- 1e-13 flips it); beside Table 1's first collapse (rocking
@@ -226,23 +245,27 @@ missed.
   --json            machine-readable output
 )";
 
-const char* kFragility = R"(rocking fragility FILE... (--alpha A[,A...] --p P[,P...] | --block BxH[,BxH...])
+const char* kFragility = R"(
+rocking fragility FILE... (--alpha A[,A...] --p P[,P...] | --block BxH[,BxH...])
                   [--q-max Q] [--points N] [--bootstrap K --seed S] [--restitution E|housner]
                   [--method grid|refine [--width W] [--robust-width R]]
                   [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--jobs N] [--output CSV]
                   [--fits CSV] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]
 mpirun -np K rocking fragility FILE... --alpha ... --p ... [--rows FILE [--resume]]
 )";
-const char* kFragilityDetails = R"(At what intensity records overturn a block. For each block and record (1 to 1000 FILEs), the
+const char* kFragilityDetails = R"(
+At what intensity records overturn a block. For each block and record (1 to 1000 FILEs), the
 record scaled so that q = PGA/(alpha g) runs over a log grid from 1 (and a second grid offset by
 half a step), every overturning interval in q (ends bisected to 1e-6 relative), the first
 collapse q or a point censored at --q-max; then, per block, the lognormal fit (median q, beta;
-Baker 2015), a bootstrap interval over records on request, and the empirical curve.
+Baker 2015), a bootstrap interval over records on request, and the empirical curve. A record
+given twice (the same samples, whatever the path) is refused.
   --alpha A[,A...]  slendernesses (rad), 1 to 50, each in (0, 0.7), none twice
   --p P[,P...]      pulsations (rad/s), 1 to 50, each in (0.01, 1000), none twice: the blocks are
                     every alpha with every p
   --block BxH[,...] instead of --alpha and --p: the blocks as built, full thickness x full height
-                    in m (0.6x4; at most 50), each its alpha = atan(B/H) and its p
+                    in m (0.6x4; at most 50), each its alpha = atan(B/H), in (0, 0.7), and its p,
+                    in (0.01, 1000) rad/s
   --q-max Q         the grid's top, in (1, 10000] (default 20)
   --points N        the grid's points, log-spaced, 2 to 10000 (default 100)
   --method M        grid (the default) or refine (issue 39): every island and gap wider than
@@ -268,13 +291,15 @@ Baker 2015), a bootstrap interval over records on request, and the empirical cur
 // fragility --nrml FILE (issue 40, under way on another branch): its synopsis goes beside
 // [--fits CSV] and its option line after --fits's (help_options_test.sh fails until the help names it).
 
-const char* kEq27 = R"(rocking eq27 FILE... [--alpha A[,A...]] [--p-min P] [--p-max P] [--p-points N] [--q-max Q]
+const char* kEq27 = R"(
+rocking eq27 FILE... [--alpha A[,A...]] [--p-min P] [--p-max P] [--p-points N] [--q-max Q]
              [--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S]
              [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--jobs N]
              [--output CSV] [--png PNG] [--json] [--quiet]
 mpirun -np K rocking eq27 FILE... [--alpha A,...] ...
 )";
-const char* kEq27Details = R"(Whether eq. 27 is conservative on many blocks: each record's first collapse q (rocking
+const char* kEq27Details = R"(
+Whether eq. 27 is conservative on many blocks: each record's first collapse q (rocking
 fragility's IDA) on every block (every alpha with every p) against eq. 27 at x = p to_k. For each
 half-period to_k (k = 1..11, as record info), the share of non-conservative cases (the collapse q
 below eq. 27's; a record censored at --q-max counts as conservative) with its 95 % Wilson interval
@@ -300,10 +325,12 @@ alpha or a record given twice (the same samples, whatever the path) is refused.
   (--resume is refused: eq27 keeps no rows file to resume from.)
 )";
 
-const char* kBatch = R"(rocking batch MANIFEST [--jobs N] [--output FILE] [--resume] [--quiet]
+const char* kBatch = R"(
+rocking batch MANIFEST [--jobs N] [--output FILE] [--resume] [--quiet]
 mpirun -np K rocking batch MANIFEST --output FILE [--resume]
 )";
-const char* kBatchDetails = R"(Many studies from a CSV manifest, one job a row (docs/batch.md): one results row per job in
+const char* kBatchDetails = R"(
+Many studies from a CSV manifest, one job a row (docs/batch.md): one results row per job in
 the manifest's order, whatever the threads or ranks; a job that fails gets its error in its row
 and the rest run. Exit 0, or 3 when some job failed.
 The manifest: a header row naming its columns in any order, then the jobs; '#' lines and blank

@@ -14,6 +14,8 @@ enum SharedDefinitions : unsigned {
     kTheFloor = 8u,       // --floor T1,G[,zeta]
 };
 
+// Each text starts with a line break, dropped (so that its first line lines up with the rest
+// in the source).
 struct HelpEntry {
     const char* topic;     // "assess", "record floor"
     // Its forms, one a line: the first starts "rocking TOPIC", a line that
