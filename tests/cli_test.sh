@@ -44,11 +44,51 @@ status "bad x exits 2"               2 "$rocking" q --case 2 --x abc
 status "unknown option exits 2"      2 "$rocking" q --case 2 --x 1 --frobnicate 3
 status "no command exits 2"          2 "$rocking"
 check "no command shows the usage"   $'rocking: no command given\nusage: rocking q' "$rocking"
-# A usage error is one line and a pointer, not the whole usage after it.
-check "usage error points to --help" $'--x: \'abc\' is not a number\nrun \'rocking --help\' for the usage' "$rocking" q --case 2 --x abc
+# A usage error is one line and a pointer to the command's own help, not the whole usage after it.
+check "usage error points to --help" $'--x: \'abc\' is not a number\nrun \'rocking q --help\' for its usage' "$rocking" q --case 2 --x abc
+check "a record command's error points to its help" "run 'rocking record floor --help' for its usage" "$rocking" record floor
+check "an unknown command points to the overview" "run 'rocking --help' for the commands" "$rocking" frobnicate
 status "help exits 0"                0 "$rocking" help
-status "a command's --help exits 0"  0 "$rocking" simulate --help
-check "a command's --help is the usage" "usage: rocking q" "$rocking" simulate --case 2 -h
+# Issue 40, item 7: `rocking COMMAND --help` (-h, `rocking help COMMAND`) is that command's help
+# alone: its synopsis first, no other command's, and the definitions it relies on.
+topics=(q response simulate "record info" "record synth" "record floor" collapse assess spectrum fragility eq27 batch)
+takes_block=" simulate collapse assess spectrum fragility eq27 batch "
+overview=$("$rocking" --help)
+declare -A first_line
+for t in "${topics[@]}"; do first_line[$t]=$("$rocking" $t --help 2>&1 | head -1); done
+for t in "${topics[@]}"; do
+    status "rocking $t --help exits 0" 0 "$rocking" $t --help
+    help=$("$rocking" $t --help 2>&1)
+    if [[ ${first_line[$t]} == "usage: rocking $t "* ]]; then echo "ok: $t's help starts with its synopsis"
+    else echo "FAIL: $t's help starts: ${first_line[$t]}"; fail=1; fi
+    if grep -qE "^(usage: |       )rocking $t " <<<"$overview"; then echo "ok: rocking --help lists $t"
+    else echo "FAIL: rocking --help does not list $t"; fail=1; fi
+    for u in "${topics[@]}"; do
+        [[ $u == "$t" ]] && continue
+        if [[ $help == *"${first_line[$u]#usage: }"* ]]; then echo "FAIL: $t's help holds $u's synopsis"; fail=1; fi
+    done
+    if [[ $takes_block == *" $t "* ]]; then
+        for term in "alpha = atan(B/H)" "p = sqrt(3 g/(4 R))" "R = sqrt(B^2 + H^2)/2" "q = PGA/(alpha g)" \
+                    "Housner's restitution 1 - 1.5 sin^2 alpha" "ESM/ITACA ASCII or PEER AT2"; do
+            [[ $help == *"$term"* ]] || { echo "FAIL: $t's help lacks '$term'"; fail=1; }
+        done
+    fi
+    same "rocking help $t is rocking $t --help" <("$rocking" help $t) <(printf '%s\n' "$help")
+    same "rocking $t -h is rocking $t --help" <("$rocking" $t -h) <(printf '%s\n' "$help")
+done
+check "the overview says where the details are" "'rocking COMMAND --help'" "$rocking" --help
+check "-h alone is the overview" "usage: rocking q --case I" "$rocking" -h
+check "--help anywhere asks for it" "usage: rocking simulate INPUT BLOCK" "$rocking" simulate --case 2 -h
+check "simulate's help: --paper" "--paper           the paper's Section 3 setting: restitution 1 and the final-rotation" "$rocking" simulate --help
+check "rocking record --help: the three" "rocking record floor --help." "$rocking" record --help
+check "an unknown topic is named"    "rocking: no command 'nosuch' (the commands: q, response, simulate, record info" "$rocking" help nosuch
+status "and exits 2"                 2 "$rocking" help nosuch
+status "an unknown command's --help exits 2" 2 "$rocking" nosuch --help
+status "an unknown record command's help exits 2" 2 "$rocking" help record nosuch
+check "help -h is the overview"      "usage: rocking q --case I" "$rocking" help -h
+# The errors quote the help's synopsis: spectrum's had lost --mark and --floor.
+check "a missing FILE quotes the synopsis" "usage: rocking spectrum FILE [--alpha A[,A...]] [--mark BxH[,BxH...]]" "$rocking" spectrum
+check "an option before FILE quotes it" "FILE comes first, before '--block': usage: rocking fragility FILE... (--alpha A[,A...] --p P[,P...] | --block BxH[,BxH...])" "$rocking" fragility --block 0.6x4
 status "impossible train exits 1"    1 "$rocking" q --train 1:1,-5:1 --x 1
 status "good call exits 0"           0 "$rocking" q --case 4 --x 0.3 --json
 # simulate: case 2 at Rd = 0.9 keeps theta(t_fin)/alpha = 0.845691936518 (x = 0.5; the jump sum).

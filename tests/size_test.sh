@@ -68,7 +68,6 @@ status "and exits 2" 2 "${sim[@]}" --output "$tmp/o.csv" --dt 1e-7
 if [ -e "$tmp/o.csv" ]; then echo "FAIL: the refused run wrote $tmp/o.csv"; fail=1; else echo "ok: and writes nothing"; fi
 status "just below the bound is refused" 2 "${sim[@]}" --output "$tmp/o.csv" --dt 1.0049e-4
 status "just above it runs" 0 "${sim[@]}" --output "$tmp/o.csv" --dt 1.0051e-4
-check "the bound is in the usage" "at most
-  10^6 rows" "$rocking" --help
+check "the bound is in simulate's help" "most 10^6 rows" "$rocking" simulate --help
 
 exit $fail

@@ -12,6 +12,7 @@
 
 #include "cli/distinct_inputs.hpp"
 #include "cli/geometry.hpp"
+#include "cli/help.hpp"
 #include "cli/options.hpp"
 #include "qfactor/superposition.hpp"
 #include "studies/assessment.hpp"
@@ -20,10 +21,6 @@
 namespace rocking::cli {
 
 namespace {
-
-const char* kUsage =
-    "usage: rocking assess FILE... (--thickness B --height H | --alpha A (--height H | --half-height h | --p P)) "
-    "[--width W] [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]";
 
 // PGA, PGV and to_5 alone: the CWT and the Fourier peaks of the eleven half-periods
 // took 1.1 s of a 30,001-sample record and assess reports none of them.
@@ -130,7 +127,7 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
 
 int cmd_assess(int argc, char** argv) {
     int first = 0;
-    const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
+    const std::vector<std::string> files = file_arguments(argc, argv, first, usage_line("assess"));
     if (files.size() > 1000) throw UsageError("at most 1000 files");
     std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor", "--restitution"};
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());

@@ -15,6 +15,7 @@
 #include "batch/pool.hpp"
 #include "batch/results_file.hpp"
 #include "cli/cluster_front.hpp"
+#include "cli/help.hpp"
 #include "cli/options.hpp"
 #include "jobs/batch_plan.hpp"
 #include "jobs/record_store.hpp"
@@ -22,8 +23,6 @@
 namespace rocking::cli {
 
 namespace {
-
-const char* kUsage = "usage: rocking batch MANIFEST [--jobs N] [--output FILE] [--resume] [--quiet]";
 
 // The exit status of a batch that ran to its end with failed jobs.
 constexpr int kSomeJobsFailed = 3;
@@ -37,7 +36,7 @@ Options options_from(int argc, char** argv, bool mpi) {
     Options o;
     std::vector<char*> args = without_engine_switches(argc, argv, o.engine.resume, o.engine.quiet);
     const int count = static_cast<int>(args.size());
-    o.manifest = file_argument(count, args.data(), 2, kUsage);
+    o.manifest = file_argument(count, args.data(), 2, usage_line("batch"));
     const Args a = parse(count, args.data(), 3, {"--jobs", "--output"});
     if (a.json) throw UsageError("--json: the results of a batch are CSV (docs/batch.md)");
     if (a.values.count("--output")) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/geometry.hpp"
+#include "cli/help.hpp"
 #include "cli/options.hpp"
 #include "records/collapse.hpp"
 #include "harness/table.hpp"
@@ -20,7 +21,7 @@ namespace rocking::cli {
 int cmd_collapse(int argc, char** argv) {
     using namespace rocking::dynamics;
     const std::string path =
-        file_argument(argc, argv, 2, "usage: rocking collapse FILE (--alpha A | --thickness B --height H) [options]");
+        file_argument(argc, argv, 2, usage_line("collapse"));
     const Args a = parse(argc, argv, 3,
                          {"--alpha", "--thickness", "--height", "--half-height", "--model", "--solver", "--criterion",
                           "--restitution", "--rtol", "--atol", "--unit", "--dt", "--floor"});

@@ -23,6 +23,7 @@
 #include "batch/ranks.hpp"
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
+#include "cli/help.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "harness/table.hpp"
@@ -36,11 +37,6 @@ namespace {
 
 using studies::Eq27Study;
 using studies::kHalfPeriods;
-
-const char* kUsage =
-    "usage: rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q] "
-    "[--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] "
-    "[--output CSV] [--png PNG] [--json] [--quiet]";
 
 using studies::Eq27ByCapacity;
 using studies::kEq27FirstOverturningNote;
@@ -126,7 +122,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     if (resume) throw UsageError("--resume: eq27 keeps no rows file to resume from");
     const int count = static_cast<int>(args.size());
     int first = 0;
-    c.files = file_arguments(count, args.data(), first, kUsage);
+    c.files = file_arguments(count, args.data(), first, usage_line("eq27"));
     c.args = parse(count, args.data(), first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
                                                "--seed", "--unit", "--dt", "--floor", "--restitution", "--jobs", "--output",
                                                "--method", "--width", "--robust-width", "--png"});

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cli/help.hpp"
 #include "cli/options.hpp"
 #include "harness/atomic_file.hpp"
 #include "harness/table.hpp"
@@ -19,10 +20,6 @@ namespace rocking::cli {
 
 namespace {
 
-const char* kFloorUsage =
-    "usage: rocking record floor FILE --period T1 [--damping Z] --participation G [--unit U [--dt DT]] "
-    "[--output FILE] [--json]";
-
 // The option that sets each of FloorModel's parameters.
 std::string option_of(const std::string& parameter) {
     if (parameter == "T1") return "--period";
@@ -32,7 +29,7 @@ std::string option_of(const std::string& parameter) {
 
 records::FloorModel model_from(const Args& a) {
     for (const char* flag : {"--period", "--participation"})
-        if (!a.values.count(flag)) throw UsageError(std::string(flag) + " is required: " + kFloorUsage);
+        if (!a.values.count(flag)) throw UsageError(std::string(flag) + " is required: " + usage_line("record floor"));
     records::FloorModel m;
     m.T1 = number("--period", a.values.at("--period"));
     m.G = number("--participation", a.values.at("--participation"));
@@ -104,7 +101,7 @@ void print_summary(const std::string& path, const records::Record& ground, const
 }  // namespace
 
 int cmd_record_floor(int argc, char** argv) {
-    const std::string path = file_argument(argc, argv, 3, kFloorUsage);
+    const std::string path = file_argument(argc, argv, 3, usage_line("record floor"));
     const Args a = parse(argc, argv, 4, {"--period", "--damping", "--participation", "--unit", "--dt", "--output"});
     const records::FloorModel m = model_from(a);
     check_outputs(a, {"--output"}, {path});

@@ -20,6 +20,7 @@
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
 #include "cli/geometry.hpp"
+#include "cli/help.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
@@ -35,11 +36,6 @@ namespace {
 using studies::BlockFragility;
 using studies::Ida;
 using studies::IdaInterval;
-
-const char* kUsage =
-    "usage: rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N] "
-    "[--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] "
-    "[--output CSV] [--fits CSV] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]";
 
 std::string g7(double v) { return significant(v, 7); }
 
@@ -385,7 +381,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     std::vector<char*> args = without_engine_switches(argc, argv, c.engine.resume, c.engine.quiet);
     const int count = static_cast<int>(args.size());
     int first = 0;
-    c.files = file_arguments(count, args.data(), first, kUsage);
+    c.files = file_arguments(count, args.data(), first, usage_line("fragility"));
     c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit", "--floor", "--restitution",
                                                "--dt", "--jobs", "--output", "--rows", "--method", "--width",
                                                "--robust-width", "--png", "--fits"});

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/help.hpp"
 #include "cli/options.hpp"
 #include "harness/table.hpp"
 
@@ -18,8 +19,10 @@ namespace rocking::cli {
 int cmd_record(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "synth") return cmd_record_synth(argc, argv);
     if (argc > 2 && std::string(argv[2]) == "floor") return cmd_record_floor(argc, argv);
-    if (argc < 4 || std::string(argv[2]) != "info") throw UsageError("usage: rocking record info FILE [--json]");
-    const std::string path = file_argument(argc, argv, 3, "usage: rocking record info FILE [--json]");
+    if (argc < 3 || std::string(argv[2]) != "info")
+        throw UsageError(argc < 3 ? std::string("give info, synth or floor")
+                                  : "unknown record command '" + std::string(argv[2]) + "' (info, synth or floor)");
+    const std::string path = file_argument(argc, argv, 3, usage_line("record info"));
     const Args a = parse(argc, argv, 4, {"--unit", "--dt"});
     const records::Record r = load_record(path, a);
     const records::HalfPeriods h = half_periods_of(r, path);

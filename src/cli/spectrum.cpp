@@ -20,6 +20,7 @@
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
 #include "cli/geometry.hpp"
+#include "cli/help.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
@@ -38,10 +39,6 @@ using studies::Boundary;
 using studies::Interval;
 using studies::Spectrum;
 using studies::SpectrumOptions;
-
-const char* kUsage =
-    "usage: rocking spectrum FILE --alpha A[,A...] [--p-min P] [--p-max P] [--points N] [--unit U [--dt DT]] "
-    "[--method grid|refine [--width W] [--robust-width R]] [--jobs N] [--output CSV] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]";
 
 using Study = jobs::SpectrumStudy;
 
@@ -339,7 +336,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     Command c;
     std::vector<char*> args = without_engine_switches(argc, argv, c.engine.resume, c.engine.quiet);
     const int count = static_cast<int>(args.size());
-    c.path = file_argument(count, args.data(), 2, kUsage);
+    c.path = file_argument(count, args.data(), 2, usage_line("spectrum"));
     c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--floor", "--restitution", "--jobs",
                                            "--output", "--png", "--rows", "--method", "--width", "--robust-width",
                                            "--mark"});
