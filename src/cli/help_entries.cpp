@@ -171,7 +171,7 @@ spectrum finds every interval).
 const char* kAssess = R"(
 rocking assess FILE... (--thickness B (--height H | --half-height h)
                        | --alpha A (--height H | --half-height h | --p P))
-               [--width W] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]
+               [--width W] [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]
 )";
 const char* kAssessDetails = R"(
 The engineer's check of one block against one record or several (1 to 1000 FILEs), the model
@@ -182,12 +182,15 @@ named in the output. For each record:
     (docs/findings.md, F11);
   - the run on the record as recorded: the peak |theta|/alpha during the input, and whether the
     block overturns, during the input or in the free rocking after it;
-  - the record scaled (an IDA over q from 1 to 20, by the refine search at width W): the scale
-    factors (q over the record's q) at which the block first overturns and first robustly
-    collapses (the first interval of overturning wider than 5e-3 in ln q), or censored at q = 20;
-  - the nearest overturning blocks of its alpha, in size below and above it: the record's rocking
-    spectrum at alpha (p from 0.3 to 30 rad/s, refine search at width W), each as p (rad/s) and
-    its height H = 2 R cos(alpha), R = 3 g/(4 p^2);
+  - the record scaled (an IDA over q from 1 to 20, or to twice the record's q where higher, at
+    most 1e4; the refine search at width W): the scale factors (q over the record's q) at which
+    the block first overturns and first robustly collapses (the first interval of overturning
+    wider than 5e-3 in ln q), or censored at the search's end;
+  - where the outcome changes among the blocks of its alpha, larger (lower p) and smaller (higher
+    p): the record's rocking spectrum at alpha (p from 0.3 to 30 rad/s, refine search at width W),
+    the nearest overturning p on each side for a block the spectrum holds safe, the ends of its
+    overturning interval for a block inside one, each as p (rad/s) and the height
+    H = 2 R cos(alpha), R = 3 g/(4 p^2);
   - with two records or more: the lognormal fragility over their first overturnings (median q,
     beta) and each record's probability of overturning at its own q.
   --thickness B --height H   the block as built, full thickness and full height (m); or
@@ -197,9 +200,11 @@ named in the output. For each record:
                     two must agree to 0.1 %. alpha in (0, 0.7)
   --width W         the refine searches' width, in ln q and ln p, in [1e-7, 0.1] (default 1e-3):
                     an island of overturning narrower than W may be missed
+  --restitution E   the restitution on angular velocity at impact, in [0, 1], or housner (the default)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --json            machine-readable output, one member a record
+A record given twice (the same samples, whatever the path) is refused: it would count twice in the fit.
 )";
 
 const char* kSpectrum = R"(
