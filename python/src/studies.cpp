@@ -302,6 +302,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
             const Ida& ida = f.idas[k];
             py::dict d = result();
             d["file"] = file_of(*recs[k]);
+            d["sha256"] = f.identities[k];
             d["q_input"] = ida.q_input;
             d["q"] = ida.point.q;
             d["collapsed"] = ida.point.collapsed;

@@ -276,7 +276,8 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
            << ", \"records\": [";
         for (std::size_t k = 0; k < files.size(); ++k) {
             const Ida& ida = f.idas[k];
-            js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"q_input\": " << json_number(ida.q_input)
+            js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"sha256\": "
+               << json_string(f.identities[k]) << ", \"q_input\": " << json_number(ida.q_input)
                << ", \"q\": " << json_number(ida.point.q) << ", \"collapsed\": " << (ida.point.collapsed ? "true" : "false")
                << ", \"point_check\": "
                << (ida.point.collapsed && ida.intervals.front().has_lower
@@ -468,10 +469,14 @@ int cmd_fragility(int argc, char** argv) {
     if (ranks && ranks->rank() != 0) return 0;
     if (first_error) std::rethrow_exception(first_error);
 
+    // The fits draw the records in the order of their samples' digests (the
+    // plan's, studies/record_order.hpp), not the command line's.
+    std::vector<std::string> identities;
+    for (const batch::InputDigest& in : plan.inputs) identities.push_back(in.digest);
     std::vector<BlockFragility> study(c.blocks.size());
     batch::run_ordered<BlockFragility>(
         c.blocks.size(), batch::PoolOptions{c.engine.threads},
-        [&](std::size_t b) { return studies::block_fragility(c.blocks[b], std::move(idas[b]), c.study); },
+        [&](std::size_t b) { return studies::block_fragility(c.blocks[b], std::move(idas[b]), identities, c.study); },
         [&](std::size_t b, BlockFragility& f) { study[b] = std::move(f); });
     const Args& a = c.args;
     if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, study);
