@@ -73,14 +73,15 @@ inline std::string identity_of(const dynamics::SampledInput& input, bool generat
 }
 
 inline const char* kIdentityNote =
-    "identity: the SHA-256 (hex) by whose order every bootstrap draws the records, in place of the order listed: "
+    "the SHA-256 (hex) by whose order every bootstrap draws the records, in place of the order listed: "
     "of the record's step (%.17g text and ';') and samples in g as doubles (studies::sample_digest) for a shared "
     "record, of its label for a generated one";
 
 inline std::string bootstrap_text() {
-    char boot[200];
+    char boot[300];
     std::snprintf(boot, sizeof boot,
                   "%d resamples of the records with replacement, GSL mt19937 seeded %llu (machine-independent), "
+                  "the records drawn in the order of their identities (the points file's identity column), "
                   "percentile interval at %.0f %%",
                   kResamples, static_cast<unsigned long long>(kSeed), 100 * kBootstrapLevel);
     return boot;
