@@ -19,6 +19,7 @@
 #include "batch/ranks.hpp"
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
+#include "cli/nrml_output.hpp"
 #include "cli/options.hpp"
 #include "cli/set_words.hpp"
 #include "harness/table.hpp"
@@ -37,7 +38,7 @@ using studies::IdaInterval;
 const char* kUsage =
     "usage: rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N] "
     "[--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] "
-    "[--output CSV] [--json] [--rows FILE [--resume]] [--quiet]";
+    "[--output CSV] [--nrml XML] [--json] [--rows FILE [--resume]] [--quiet]";
 
 std::string g7(double v) { return significant(v, 7); }
 
@@ -383,7 +384,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     c.files = file_arguments(count, args.data(), first, kUsage);
     c.args = parse(count, args.data(), first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
                                                "--dt", "--jobs", "--output", "--rows", "--method", "--width",
-                                               "--robust-width"});
+                                               "--robust-width", "--nrml"});
     const Args& a = c.args;
     const std::vector<double> alphas = list_in(a, "--alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange);
     const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
@@ -391,8 +392,8 @@ Command command_from(int argc, char** argv, bool mpi) {
     refuse_repeated_values("--p", ps);
     c.study = options_from(a);
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
-    check_outputs(a, {"--output", "--rows"}, c.files);
-    refuse_engine_files_over(a, "--rows", {"--output"}, c.files);
+    check_outputs(a, {"--output", "--rows", "--nrml"}, c.files);
+    refuse_engine_files_over(a, "--rows", {"--output", "--nrml"}, c.files);
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
         throw UsageError("--resume needs --rows FILE: the IDAs of an interrupted study are resumed from that file");
@@ -480,6 +481,7 @@ int cmd_fragility(int argc, char** argv) {
         [&](std::size_t b, BlockFragility& f) { study[b] = std::move(f); });
     const Args& a = c.args;
     if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, study);
+    if (a.values.count("--nrml")) write_nrml(a.values.at("--nrml"), c.files, c.study, study);
     if (a.json) print_json(c.files, c.study, study);
     else print_text(c.files, c.study, study);
     return 0;
