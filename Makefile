@@ -25,6 +25,9 @@ deps:
 # Debian's /usr/bin/python3, its headers (pybind11-dev does not pull them in), numpy and pytest.
 PACKAGES += python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
 
+# pdftotext and pdffonts, with which ctest report_text reads the report as a reader's search does.
+PACKAGES += poppler-utils
+
 $(BUILD)/Makefile: CMakeLists.txt | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 

@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
     }
     std::vector<studies::BlockShape> blocks;
     for (double alpha : {0.05, 0.1, 0.15, 0.2, 0.25})
-        for (double p : {1.0, 2.0, 3.0, 5.0, 8.0}) blocks.push_back({alpha, p});
+        for (double p : {1.0, 2.0, 3.0, 5.0, 8.0}) blocks.push_back({alpha, p, ""});
 
     fs::create_directories(out);
     std::FILE* summary = std::fopen((out + "/fragility.txt").c_str(), "w");

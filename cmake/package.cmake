@@ -27,6 +27,7 @@ set(ROCKING_PUBLIC_HEADERS
   records/measures.hpp
   records/collapse.hpp
   records/synthetic.hpp
+  records/floor_motion.hpp
   studies/intervals.hpp
   studies/overturning_set.hpp
   studies/resampling.hpp

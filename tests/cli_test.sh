@@ -53,14 +53,32 @@ status "impossible train exits 1"    1 "$rocking" q --train 1:1,-5:1 --x 1
 status "good call exits 0"           0 "$rocking" q --case 4 --x 0.3 --json
 # simulate: case 2 at Rd = 0.9 keeps theta(t_fin)/alpha = 0.845691936518 (x = 0.5; the jump sum).
 check "simulate below collapse"      "theta(t_fin)/alpha = 0.8456919365" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2
-check "simulate criterion named"     "no collapse under final-rotation" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2
+check "simulate criterion named"     "no collapse under final-rotation" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --paper
+# One model by default (issue 40): Housner's restitution, 1 - 1.5 sin^2 0.15 = 0.966502, and
+# overturning with the free rocking after the input; the same run safe under --paper falls.
+check "simulate defaults to the physical model" "COLLAPSE under overturning" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2
+check "simulate's default restitution is Housner's" "restitution 0.966502" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2
+check "--paper is named in the model line" "restitution 1 (--paper: the paper's setting)" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --paper
+check "--paper refuses its own settings" "--paper sets restitution 1 and the final-rotation criterion" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --paper --restitution housner
+check "simulate json: the preset"    '"preset": "physical"' "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --json
+# The block as built: B = 0.6 m, H = 4 m give alpha = atan(0.15) = 0.148889947609 rad,
+# R = sqrt(16.36)/2 = 2.022374842 m, p = sqrt(3 g/(4 R)) = 1.907367 rad/s (eqs. 2, 4).
+check "a block by its thickness and height" "alpha = atan(B/H) = 0.14889 rad (8.531 deg), R = sqrt(B^2 + H^2)/2 = 2.02237 m, p = sqrt(3 g/(4 R)) = 1.90737 rad/s" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --thickness 0.6 --height 4
+check "thickness with the half-height" "alpha = atan(B/H) = 0.14889 rad" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --thickness 0.6 --half-height 2
+check "a block given both ways that agree" "COLLAPSE" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --thickness 0.6 --height 4 --alpha 0.1489 --p 1.907
+check "a block given both ways that differ" "give alpha = atan(B/H) = 0.14889 rad, but --alpha is 0.2" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --thickness 0.6 --height 4 --alpha 0.2
+check "a p that differs from the size's" "give p = sqrt(3 g / (4 R)) = 1.90737 rad/s, but --p is 2" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --thickness 0.6 --height 4 --p 2
+check "a block wider than tall"      "alpha = atan(B/H) = 0.896055 rad is not below pi/4" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --thickness 5 --height 4
+check "thickness needs a height"     "--thickness B goes with exactly one of --height H and --half-height h" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --thickness 0.6
+check "simulate json: the block's size" '"given": "dimensions", "thickness": 0.59999999999999998, "height": 4, "R": 2.0223748416156684' "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --thickness 0.6 --height 4 --json
 # Case 1 at x = 10 has q = 1.0001: Rd = 0.99 keeps the PGA below alpha g, and the output says why theta stays 0.
 check "simulate says the input never lifts" "the input never lifts the block: its peak, 0.099009 g, is at or below the uplift threshold alpha = 0.1 g" "$rocking" simulate --case 1 --x 10 --rd 0.99 --alpha 0.1 --p 2
 check "simulate json: never lifts"   '"input_lifts_block": false' "$rocking" simulate --case 1 --x 10 --rd 0.99 --alpha 0.1 --p 2 --json
 check "simulate json"                '"collapse_overturning": true' "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --json
-check "simulate at collapse"         "COLLAPSE under final-rotation" "$rocking" simulate --case 2 --x 0.5 --rd 1.0001 --alpha 0.15 --p 2
+check "simulate at collapse"         "COLLAPSE under final-rotation" "$rocking" simulate --case 2 --x 0.5 --rd 1.0001 --alpha 0.15 --p 2 --paper
 check "full model needs an ODE solver" "exact solver handles the linearised equation only" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --p 2 --model full --solver exact
-check "simulate geometry required"   "give exactly one of --p, --half-height and --height" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15
+check "simulate geometry required"   "--alpha A goes with exactly one of --p, --half-height and --height" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15
+check "simulate block required"      "give the block as --thickness B --height H (m), or as --alpha A" "$rocking" simulate --case 2 --x 0.5 --rd 0.9
 # A height whose p = sqrt(3 g / 4 R) overflows: p was inf (assess --json wrote "p": null).
 check "a height too small for a double" "block: height is too small for a double" "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --height 2.3e-308
 status "a height too small exits 2"   2 "$rocking" simulate --case 2 --x 0.5 --rd 0.9 --alpha 0.15 --height 2.3e-308
@@ -118,7 +136,7 @@ step=$(mktemp)
 for k in $(seq 11); do echo 0.2; done > "$step"
 check "simulate a step record"       "theta(t_fin)/alpha = 0.5430806348" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1
 check "simulate a scaled record"     "theta(t_fin)/alpha = 1.08616127" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 3
-check "scaled record collapses"      "COLLAPSE under final-rotation" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 3
+check "scaled record collapses"      "COLLAPSE under final-rotation" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 3 --paper
 check "record's scale is stated"     "PGA 0.2 g, scaled to 0.3 g" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --q 3
 check "record json"                  '"theta_tfin_over_alpha": 0.54308063481524' "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --json
 # Scaled to q = 40 (4 g) the block falls within the input: 39 (cosh t - 1) = (pi/2)/alpha
@@ -170,7 +188,7 @@ if [ -d "$records" ]; then
     # alpha, the block rocks at that amplitude to the record's end; the run
     # used to stop at 1e6 impacts ("impact cascade did not end", exit 1).
     check "a hairline rocking to the end" "impacts: 1062" "$rocking" simulate \
-        --record "$records/esm/IT.NRC..HGE.D.20161026.171036.C.ACC.ASC" --alpha 0.3 --p 0.7
+        --record "$records/esm/IT.NRC..HGE.D.20161026.171036.C.ACC.ASC" --alpha 0.3 --p 0.7 --paper
     check "collapse below uplift says so" "the record never lifts the block at all (PGA 0.359399 g <= alpha = 0.5)" \
         "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.5
     check "collapse json" '"found": true' "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15 --json

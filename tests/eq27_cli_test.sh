@@ -48,6 +48,11 @@ check "jobs range"        "--jobs: must be a whole number from 1 to 4096 (got 50
 check "missing file"      "no-such-file"                                 "$rocking" eq27 "$tmp/sine1.txt" no-such-file --unit g --dt 0.01
 status "missing file"     1                                              "$rocking" eq27 "$tmp/sine1.txt" no-such-file --unit g --dt 0.01
 status "output in no folder" 1                                           "${run[@]}" "${small[@]}" --output "$tmp/no/dir/m.csv"
+# The plot's file refused before the study runs (the record is not read: it does not exist).
+check "png in no folder"  "--png: $tmp/no/dir/m.png"                     "$rocking" eq27 no-such-file --png "$tmp/no/dir/m.png"
+status "png in no folder" 1                                              "$rocking" eq27 no-such-file --png "$tmp/no/dir/m.png"
+check "png without gnuplot" "--png $tmp/ng.png: gnuplot is not installed" env PATH=/nonexistent "$rocking" eq27 no-such-file --png "$tmp/ng.png"
+status "png without gnuplot" 1                                           env PATH=/nonexistent "$rocking" eq27 no-such-file --png "$tmp/ng.png"
 
 # Text: the shares, the censoring rule and the conservative list.
 check "text share"        "to_5 "                                        "${run[@]}" "${small[@]}"
@@ -196,6 +201,22 @@ for study in (e, robust):
         assert all(abs(a - b) <= 1e-15 for a, b in zip(s["bootstrap"], want)), (s, want)
 PY
 then echo "ok: refine json"; else echo "FAIL: refine json"; fail=1; fi
+
+# The PNG (issue 40), read by tests/plot_check.py against the same run's JSON: its size;
+# the shares and both intervals drawn per to_k the JSON's (both capacities under refine);
+# every case at to_5 drawn at x = p to_5 (record info's to_5, recomputed), its verdict
+# flagged as its capacity q below eq. 27's, eq. 27's q that of rocking q at three cases,
+# as many non-conservative and censored as the JSON counts.  The JSON unchanged by --png.
+if command -v gnuplot >/dev/null; then
+    ROCKING_PLOT_SCRIPT="$tmp/e.gp" "${run[@]}" "${small[@]}" --json --bootstrap 300 --seed 11 --png "$tmp/e.png" >"$tmp/ep.json"
+    same "--png changes no byte of the JSON" "$tmp/ep.json" "$tmp/e.json"
+    $py "$(dirname "$0")/plot_check.py" eq27 "$tmp/e.gp" "$tmp/e.png" "$tmp/ep.json" "$tmp/info.jsonl" "$rocking" || fail=1
+    ROCKING_PLOT_SCRIPT="$tmp/r.gp" "${run[@]}" "${small[@]}" "${refine[@]}" --json --bootstrap 300 --seed 11 --png "$tmp/r.png" >"$tmp/rp.json"
+    same "--png changes no byte of the refine JSON" "$tmp/rp.json" "$tmp/r.json"
+    $py "$(dirname "$0")/plot_check.py" eq27 "$tmp/r.gp" "$tmp/r.png" "$tmp/rp.json" "$tmp/info.jsonl" "$rocking" || fail=1
+else
+    echo "FAIL: gnuplot is not installed (make deps): the PNG cannot be checked"; fail=1
+fi
 
 # CSV: one row per block, the notes naming model, solver, inputs, grids and the rule.
 "${run[@]}" "${small[@]}" --output "$tmp/m.csv" --bootstrap 50 --seed 2 >/dev/null

@@ -51,6 +51,7 @@ invocations=(
     "simulate --case 2 --x 1 --rd 0.9 --alpha 0.15 --p 2 --json"
     "record info sine1.txt ${plain[*]} --json"
     "record synth --pulse 0.5,1,0,2 --dt 0.01 --duration 3 --json"
+    "record floor sine1.txt ${plain[*]} --period 0.5 --participation 1.5 --json"
     "collapse sine1.txt ${plain[*]} --alpha 0.15 --json"
     "assess sine1.txt ${plain[*]} --alpha 0.15 --height 2 --json"
     "spectrum sine1.txt ${plain[*]} --alpha 0.1,0.2 --points 10 --json"

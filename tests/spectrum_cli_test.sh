@@ -60,6 +60,8 @@ expect "output in no folder"   1 "--output: $tmp/no/such/dir/s.csv"          "${
 expect "png in no folder"      1 "--png: $tmp/no/such/dir/s.png"             "${run[@]}" --alpha 0.1 --points 5 --png "$tmp/no/such/dir/s.png"
 expect "png without gnuplot"   1 "--png $tmp/nognuplot.png: gnuplot is not installed" env PATH=/nonexistent "${run[@]}" --alpha 0.1 --points 5 --png "$tmp/nognuplot.png"
 if [[ -e "$tmp/nognuplot.png" ]]; then echo "FAIL: a PNG left behind without gnuplot"; fail=1; fi
+# Before any work: the missing gnuplot is said before the record is read.
+expect "no gnuplot said before the record" 1 "--png $tmp/nognuplot.png: gnuplot is not installed" env PATH=/nonexistent "$rocking" spectrum no-such-file --alpha 0.1 --png "$tmp/nognuplot.png"
 
 # The text: intervals with their checks, the grid's limit, Table 1's p.
 expect "text intervals"        0 $'alpha = 0.2: overturns for p (rad/s) in\n  [' "${run[@]}" --alpha 0.1,0.2
@@ -247,15 +249,75 @@ if [[ $status == 0 ]]; then
     fi
 fi
 
+# The PNG drawn (issue 40), read from its gnuplot script (ROCKING_PLOT_SCRIPT) by
+# tests/plot_check.py against the same run's JSON: the PNG's size for its panels, one
+# y range for all, the data drawn the JSON's points with the overturned runs apart, the
+# top axis's heights H = 2 R cos(alpha), R = 3 g/(4 p^2) at their p (recomputed there),
+# and each marked block a line at its p labelled with its outcome.  Two blocks of one
+# alpha (0.3x3 overturns, 0.4x4 does not: the premise, checked) and another alpha.
+if command -v gnuplot >/dev/null; then
+    ROCKING_PLOT_SCRIPT="$tmp/mark.gp" "${run[@]}" --alpha 0.2 --mark 0.3x3,0.4x4 --png "$tmp/mark.png" --json \
+        >"$tmp/mark.json" 2>"$tmp/mark.err" || { echo "FAIL: --mark --png: $(head -3 "$tmp/mark.err")"; fail=1; }
+    "${run[@]}" --alpha 0.2 --mark 0.3x3,0.4x4 --json >"$tmp/mark0.json" 2>&1
+    same "--png changes no byte of the JSON" "$tmp/mark.json" "$tmp/mark0.json"
+    if $py -c "import json, sys; m = json.load(open(sys.argv[1]))['marks']; sys.exit(sorted(x['overturns'] for x in m) != [False, True])" "$tmp/mark.json"
+    then echo "ok: one marked block overturns, one does not"; else echo "FAIL: the marks' premise"; fail=1; fi
+    $py "$(dirname "$0")/plot_check.py" spectrum "$tmp/mark.gp" "$tmp/mark.png" "$tmp/mark.json" || fail=1
+fi
+
 # A real record where Table 1's search met an island the grids step over:
 # the output says so (docs/spectrum.md).
 norcia="$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC"
 if [[ -f "$norcia" ]]; then
     expect "Table 1's island named" 0 "p = 1.908956 rad/s (safe at 1.908809); it lies on an island narrower than the grids' step, found through its bracket" \
         "$rocking" spectrum "$norcia" --alpha 0.1
+    # Marked blocks (issue 40): each one's outcome is simulate's at its own size
+    # (the same default model), and the nearest overturning p above a safe one
+    # is the start of a spectrum interval that simulate sees overturn, with the
+    # height of eqs. 2 and 4 at it.
+    "$rocking" spectrum "$norcia" --mark 1x4,0.6x4,0.25x3 --json >"$tmp/marks.json"
+    for block in 1x4 0.6x4 0.25x3; do
+        B=${block%x*} H=${block#*x}
+        sim=$("$rocking" simulate --record "$norcia" --thickness "$B" --height "$H" --json |
+              $py -c "import json,sys; print(json.load(sys.stdin)['collapse_overturning'])")
+        mark=$($py -c "import json,sys; print([m for m in json.load(open(sys.argv[1]))['marks'] if m['built'] == sys.argv[2]][0]['overturns'])" "$tmp/marks.json" "$block")
+        if [[ "$sim" == "$mark" ]]; then echo "ok: mark $block: overturns $mark, as simulate"; else echo "FAIL: mark $block: $mark, simulate $sim"; fail=1; fi
+    done
+    if $py - "$tmp/marks.json" "$rocking" "$norcia" <<'PY'
+import json, math, subprocess, sys
+d = json.load(open(sys.argv[1]))
+checked = 0
+for m in d["marks"]:
+    sp = [s for s in d["spectra"] if s["alpha"] == m["alpha"]][0]
+    B, H = (float(v) for v in m["built"].split("x"))
+    assert abs(m["alpha"] - math.atan(B / H)) < 1e-15 and abs(m["height"] - H) < 1e-12 * H, m
+    if m["in_set"] or not m["nearest_above"]["found"]:
+        continue
+    up = m["nearest_above"]
+    assert up["p"] > m["p"] and any(i["from"] == up["p"] for i in sp["intervals"]), (m, sp["intervals"][:3])
+    assert not any(i["from"] <= m["p"] <= i["to"] for i in sp["intervals"])
+    R = 3 * 9.81 / (4 * up["p"] ** 2)
+    assert abs(up["height"] - 2 * R * math.cos(m["alpha"])) < 1e-12 * up["height"], up
+    run = lambda p: json.loads(subprocess.run([sys.argv[2], "simulate", "--record", sys.argv[3], "--alpha", repr(m["alpha"]),
+                                               "--p", repr(p), "--json"], capture_output=True, check=True).stdout)["collapse"]
+    assert run(up["p"] * (1 + 1e-9)) and not run(m["p"]), m
+    checked += 1
+assert checked >= 1, "no safe mark with an overturning p above it"
+PY
+    then echo "ok: marks' nearest overturning p"; else echo "FAIL: marks' nearest overturning p"; fail=1; fi
+    expect "mark grammar" 2 "--mark: each block is THICKNESSxHEIGHT in m" "$rocking" spectrum "$norcia" --mark 0.6
 else
     echo "skipped: shared records folder absent ($norcia)"
 fi
+
+# --restitution (issue 40): stated in the model, and each boundary seen by simulate under it.
+"$rocking" spectrum "$rec" --unit g --dt 0.01 --alpha 0.1 --points 40 --restitution 0.5 --json >"$tmp/e05.json"
+if $py - "$tmp/e05.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert "restitution 0.5" in d["model"], d["model"]
+PY
+then echo "ok: spectrum --restitution stated"; else echo "FAIL: spectrum --restitution"; fail=1; fi
 
 if [[ $fail != 0 ]]; then echo "spectrum_cli_test: FAILED"; exit 1; fi
 echo "spectrum_cli_test: all passed"

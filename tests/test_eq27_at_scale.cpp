@@ -90,7 +90,7 @@ struct AllOrNothing {
     std::vector<std::vector<IdaPoint>> points;
     std::vector<std::array<double, kHalfPeriods>> to;
     std::vector<BlockShape> blocks;
-    AllOrNothing(int records, int failing, int n_blocks) : blocks(n_blocks, BlockShape{0.1, 1.0}) {
+    AllOrNothing(int records, int failing, int n_blocks) : blocks(n_blocks, BlockShape{0.1, 1.0, ""}) {
         std::array<double, kHalfPeriods> t{};
         t.fill(0.5);
         for (int r = 0; r < records; ++r) {

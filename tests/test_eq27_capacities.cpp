@@ -190,7 +190,7 @@ TEST(Eq27Capacities, BothBootstrapsDrawTheSameRecords) {
     std::array<double, kHalfPeriods> to{};
     to.fill(0.5);
     const std::vector<std::array<double, kHalfPeriods>> tos(n, to);
-    const std::vector<BlockShape> bl(blocks, BlockShape{0.1, 1.0});
+    const std::vector<BlockShape> bl(blocks, BlockShape{0.1, 1.0, ""});
     const Eq27Bootstrap b{400, 17, 0.9};
     const Eq27ByCapacity s = eq27_by_capacity(capacities, tos, rocking::testing::listed_order(n), bl, 0.95, b);
     const Eq27ByCapacity again = eq27_by_capacity(capacities, tos, rocking::testing::listed_order(n), bl, 0.95, b);

@@ -97,12 +97,13 @@ TEST(Jobs, TheHeaderMustNameKnownColumnsAndARecordAndAlpha) {
 
 TEST(Jobs, EmptyCellsTakeTheDefaultsOfTheCommandThatRunsTheStudyAlone) {
     const Columns c(kHeader);
-    // rocking simulate: restitution 1, final-rotation, exact for the linearised equation, dopri5 for the full one.
+    // rocking simulate (issue 40: one model by default): Housner's restitution, overturning,
+    // exact for the linearised equation, dopri5 for the full one.
     Job s = parse_job(c, row({{"record", "r.txt"}, {"alpha", "0.1"}, {"p", "2"}}), "/data");
     EXPECT_EQ(s.kind, Kind::simulate);
     EXPECT_EQ(s.record.path, "/data/r.txt");
-    EXPECT_EQ(s.restitution_factor(), 1.0);
-    EXPECT_EQ(s.criterion, dynamics::Criterion::final_rotation);
+    EXPECT_EQ(s.restitution_factor(), dynamics::housner_restitution(0.1));
+    EXPECT_EQ(s.criterion, dynamics::Criterion::overturning);
     EXPECT_EQ(s.solver_text(), "exact");
     EXPECT_EQ(s.block->p, 2.0);
     Job full = parse_job(c, row({{"record", "/abs/r.txt"}, {"alpha", "0.1"}, {"height", "3"}, {"model", "full"}}), "/data");

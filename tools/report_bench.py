@@ -43,11 +43,11 @@ def pages(L):
         L.page("The speed-accuracy trade (make bench)", compares_wp)
         L.text("Each solver swept from rtol 1e-3 to 1e-12 (atol = rtol α); the exact solver is one point. Pulse scene: "
                "error |θ(t_fin) − (S1)|/α; record: error in max|θ|/α against the exact solver.", 8)
-        L.figure(6.8, drawwp)
+        L.figure(5.0, drawwp)
         if outputs.BENCH_LINES:
             L.text("out/bench/summary.txt:", 8, weight="bold", gap=0.04)
             for line in outputs.BENCH_LINES:
                 L.text(line, 7, indent=0.1, gap=0.025)
     else:
-        L.page("The speed-accuracy trade", compares_wp)
+        L.section("The speed-accuracy trade", compares_wp)
         L.text("Run make bench to include the work-precision diagram.", 8.5)

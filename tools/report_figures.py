@@ -59,7 +59,7 @@ def figure5(L):
                f"({verdicts(['F5a', 'F5b', 'F5c', 'F5d'])}); {run_status(['fig05'])}.")
         scene_status(L, "fig05", h5[0])
         L.text("Red dashed: θ = ±α; dotted: t_fin.", 7.5)
-        L.figure(6.0, draw5)
+        L.figure(5.3, draw5)
         if s5:
             L.text("Collapses below the closed-form PGA (Rd < 1), x = 0.2..0.8 (fig05_summary.csv):", 8, gap=0.03)
             for crit in ("final-rotation", "peak-rotation", "overturning"):

@@ -255,7 +255,7 @@ def pages(L):
             "", "of the shared records"):
         entry_verdicts(L, ["F11b"])
     else:
-        L.page("Fragility over the shared records, and eq. 27 at scale",
+        L.section("Fragility over the shared records, and eq. 27 at scale",
                "Would compare each block's lognormal fragility curve with the records' empirical share, and eq. 27's "
                "share of non-conservative cases per to_k.")
         L.text(f"No fragility_fits.csv in {outputs.OUT}/fragility: the scene writes its shared records' files only "

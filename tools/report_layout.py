@@ -5,10 +5,19 @@ before saving it (an overlap goes to Layout.problems, which tools/report.py prin
 
 Also the page's measures (A4, the margins), INK (the report's blue) and plain_log_ticks, the
 log axis labelled 0.3, 1, 3, 10 that the spectrum and fragility pages share.  Importing this
-module selects matplotlib's Agg backend: no display is needed.
+module selects matplotlib's Agg backend (no display is needed) and the report's font.
+
+The font: DejaVu Sans (shipped with matplotlib, so always found) embedded as TrueType
+(pdf.fonttype 42) with its Unicode map, so that a reader can search and copy the text.
+matplotlib's default, Type 3, draws every glyph beyond Latin-1 (θ, α, ω, ≥, −, ⁻¹) as a
+picture that pdftotext and a viewer's search do not see (issue 40).  The prose, tables and
+axis labels write Greek as Unicode characters, never as mathtext ($\\alpha$): _place
+escapes "$", so no paragraph is parsed as mathtext; only the log axes' 10^n tick labels are
+matplotlib's mathtext, set in the same DejaVu Sans.
 """
 import matplotlib
 matplotlib.use("Agg")
+matplotlib.rcParams.update({"pdf.fonttype": 42, "font.family": "DejaVu Sans", "mathtext.fontset": "dejavusans"})
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.font_manager import FontProperties  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
@@ -50,6 +59,18 @@ class Layout:
         self.text(self.title + (" (continued)" if continued else ""), 14, weight="bold", gap=0.08, split=False)
         self.text(self.compares, 9, style="italic", color=INK, gap=0.14, split=False)
         self.fresh = True       # nothing but the header yet: never worth a new page
+
+    def section(self, title, compares, room=1.5):
+        """A page's worth of title and sentence at the cursor, for a section too short to deserve a
+        page of its own (a note that an output is missing): a new page only when less than `room`
+        inches would remain below them.  Its continuation pages carry its title."""
+        if self.fig is None or self.room < 0.15 + self.line_height(12)[1] + 2 * self.line_height(9)[0] + room:
+            self.page(title, compares)
+            return
+        self.y += 0.15
+        self.title, self.compares = title, compares
+        self.text(title, 12, weight="bold", gap=0.06, split=False)
+        self.text(compares, 9, style="italic", color=INK, gap=0.12, split=False)
 
     def continue_page(self):
         self.finish()

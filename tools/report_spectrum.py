@@ -185,7 +185,7 @@ def pages(L):
                   r["ill_conditioned"], r["disagrees"], r["table1_on_island_off_grid"]] for r in SM],
                 [20, 5, 5, 10, 13, 9, 6, 6, 5, 5, 7], size=6.5)
     else:
-        L.page("The rocking spectrum of the Norcia records",
+        L.section("The rocking spectrum of the Norcia records",
                "Would compare the Norcia records' overturning intervals in p with Table 1's p.")
         L.text(f"No spectrum_intervals.csv / spectrum_summary.csv in {outputs.OUT}/spectrum: the scene writes them "
                "only with the shared records folder (../shared/records or $ROCKING_RECORDS).", 8.5)

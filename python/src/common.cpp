@@ -561,4 +561,27 @@ std::string significant(double v, int n) {
     return text;
 }
 
+dynamics::GivenBlock block_argument(const std::optional<Real>& thickness, const std::optional<Real>& height,
+                                    const std::optional<Real>& half_height, const std::optional<Real>& alpha,
+                                    const std::optional<Real>& p) {
+    dynamics::BlockSpec s;
+    s.thickness = number(thickness, "thickness");
+    s.height = number(height, "height");
+    s.half_height = number(half_height, "half_height");
+    s.alpha = number(alpha, "alpha");
+    s.p = number(p, "p");
+    try {
+        return dynamics::given_block(s, [](const std::string& name) { return name; });
+    } catch (const std::invalid_argument& e) {
+        refuse(e.what());
+    }
+}
+
+void add_block_members(py::dict& out, const dynamics::GivenBlock& b) {
+    out["given"] = dynamics::given_name(b);
+    out["thickness"] = b.sized() ? py::object(py::float_(b.thickness)) : py::object(py::none());
+    out["height"] = b.sized() ? py::object(py::float_(b.height)) : py::object(py::none());
+    out["R"] = b.sized() ? py::object(py::float_(b.block.R)) : py::object(py::none());
+}
+
 }  // namespace rocking::python

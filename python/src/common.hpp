@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/block_geometry.hpp"
 #include "dynamics/simulate.hpp"
 #include "pulse/pulse_train.hpp"
 #include "records/measures.hpp"
@@ -136,6 +137,13 @@ void refuse_unresolvable_run(double p, double duration, const std::string& given
 
 // --restitution: a factor in [0, 1] or "housner" (NaN).
 double restitution_argument(const py::object& value);
+// The block from thickness and height (m) or alpha with p, half_height or
+// height, as the command line reads it (dynamics/block_geometry.hpp), refused
+// naming the keywords; its members (given, thickness, height, R) added to out.
+dynamics::GivenBlock block_argument(const std::optional<Real>& thickness, const std::optional<Real>& height,
+                                    const std::optional<Real>& half_height, const std::optional<Real>& alpha,
+                                    const std::optional<Real>& p);
+void add_block_members(py::dict& out, const dynamics::GivenBlock& b);
 // --rtol and --atol (rad) into the solver's options, as tolerance_options.
 void tolerance_arguments(const std::optional<double>& rtol, const std::optional<double>& atol, double alpha,
                          dynamics::SolverOptions& solver);

@@ -14,18 +14,6 @@ namespace {
 
 using namespace rocking::dynamics;
 
-Block block_of(double alpha, const std::optional<double>& p, const std::optional<double>& half_height,
-               const std::optional<double>& height) {
-    if (p.has_value() + half_height.has_value() + height.has_value() != 1)
-        refuse("give exactly one of p, half_height and height");
-    try {
-        return p ? Block::from_p(*p, alpha) : half_height ? Block::from_half_height(*half_height, alpha)
-                                                          : Block::from_full_height(*height, alpha);
-    } catch (const std::invalid_argument& e) {
-        refuse(e.what());
-    }
-}
-
 // What the command line refuses before the run: a theta(t) record that could
 // exceed its rows (the refusal's message, empty when it does not), or
 // rotations that overflow once divided by alpha.
@@ -58,21 +46,23 @@ std::unique_ptr<GroundInput> record_input(const records::Record& r, const std::o
     return std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
 }
 
-py::dict simulate_of(const Real& alpha_given, const std::optional<Real>& p_given, const std::optional<Real>& half_height_given,
-                     const std::optional<Real>& height_given, const std::optional<Whole>& which_case,
+py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional<Real>& p_given,
+                     const std::optional<Real>& half_height_given, const std::optional<Real>& height_given,
+                     const std::optional<Real>& thickness_given, const std::optional<Whole>& which_case,
                      const std::optional<Whole>& pulses, const py::object& train, const std::optional<Real>& to_given,
                      const std::optional<Real>& x_given, const std::optional<Real>& pga_given,
                      const std::optional<Real>& q_given, const std::optional<Real>& rd_given, const Flag& one_sine_given,
                      const std::optional<Real>& ap_given, const std::optional<Real>& wp_given, const py::object& record,
                      const Text& model_given, const std::optional<Text>& solver_given,
                      const std::optional<Real>& rtol_given, const std::optional<Real>& atol_given,
-                     const Text& criterion_given, const py::object& restitution, const std::optional<Real>& dt_given,
-                     const Real& free_time_given, const py::kwargs& extra) {
+                     const std::optional<Text>& criterion_given, const py::object& restitution_given,
+                     const Flag& paper_given, const std::optional<Real>& dt_given, const Real& free_time_given,
+                     const py::kwargs& extra) {
     no_other_keywords(extra, "simulate", "simulate");
     // Each argument converted, or refused naming it, in the signature's order.
-    const double alpha = number(alpha_given, "alpha");
-    const std::optional<double> p = number(p_given, "p"), half_height = number(half_height_given, "half_height"),
-                                height = number(height_given, "height"), to = number(to_given, "to"),
+    const dynamics::GivenBlock given = block_argument(thickness_given, height_given, half_height_given, alpha_given, p_given);
+    const double alpha = given.alpha;
+    const std::optional<double> to = number(to_given, "to"),
                                 x = number(x_given, "x"), pga = number(pga_given, "pga"), q = number(q_given, "q"),
                                 rd = number(rd_given, "rd");
     const bool one_sine = flag(one_sine_given, "one_sine");
@@ -80,15 +70,20 @@ py::dict simulate_of(const Real& alpha_given, const std::optional<Real>& p_given
     const std::string model_name = string_argument(model_given, "model");
     const std::optional<std::string> solver = string_argument(solver_given, "solver");
     const std::optional<double> rtol = number(rtol_given, "rtol"), atol = number(atol_given, "atol");
-    const std::string criterion_name_ = string_argument(criterion_given, "criterion");
+    const bool paper = flag(paper_given, "paper");
+    const std::optional<std::string> criterion_name_ = string_argument(criterion_given, "criterion");
     const std::optional<double> dt = number(dt_given, "dt");
     const double free_time = number(free_time_given, "free_time");
 
     Model model;
-    model.block = block_of(alpha, p, half_height, height);
+    model.block = given.block;
     if (model_name == "full") model.equation = Equation::full;
     else if (model_name != "linearised") refuse("model: linearised or full (got '" + model_name + "')");
-    const double e = restitution_argument(restitution);
+    // One model by default (issue 40), as `rocking simulate`: Housner's restitution and
+    // overturning; paper=True is the paper's Section 3 setting.
+    if (paper && (!restitution_given.is_none() || criterion_name_))
+        refuse("paper=True sets restitution 1 and the final-rotation criterion: give it without restitution and criterion");
+    const double e = restitution_given.is_none() ? (paper ? 1.0 : NAN) : restitution_argument(restitution_given);
     model.restitution = std::isnan(e) ? housner_restitution(alpha) : e;
     SimulationOptions options;
     try {
@@ -98,9 +93,9 @@ py::dict simulate_of(const Real& alpha_given, const std::optional<Real>& p_given
         refuse(std::string("solver: ") + err.what());
     }
     tolerance_arguments(rtol, atol, alpha, options.solver);
-    Criterion criterion = Criterion::final_rotation;
+    Criterion criterion = paper ? Criterion::final_rotation : Criterion::overturning;
     try {
-        criterion = parse_criterion(criterion_name_);
+        if (criterion_name_) criterion = parse_criterion(*criterion_name_);
     } catch (const std::invalid_argument& err) {
         refuse(std::string("criterion: ") + err.what());
     }
@@ -170,18 +165,19 @@ py::dict simulate_of(const Real& alpha_given, const std::optional<Real>& p_given
     }
 
     // The arguments that set p and the input's duration, as rocking simulate names its options.
-    std::string given = p ? "p" : half_height ? "half_height" : "height";
+    std::string culprits = !p_given ? (thickness_given || height_given ? "height" : "half_height") : "p";
+    if (thickness_given) culprits = "thickness, " + culprits;
     for (const auto& [name, has] : {std::pair<const char*, bool>{"to", to.has_value()}, {"x", x.has_value()},
                                     {"wp", wp.has_value()}})
-        if (has) given += std::string(", ") + name;
-    if (kept) given += ", record " + label_of(*kept);
+        if (has) culprits += std::string(", ") + name;
+    if (kept) culprits += ", record " + label_of(*kept);
 
     SimulationResult r;
     std::string too_many_rows;
     {
         py::gil_scoped_release unlocked;
         if (kept) input = record_input(*kept, scaled_to);
-        refuse_unresolvable_run(model.block.p, input->t_end(), given);
+        refuse_unresolvable_run(model.block.p, input->t_end(), culprits);
         too_many_rows = options.record_dt > 0 ? rows_refusal(model, *input, options) : "";
         if (too_many_rows.empty()) {
             r = simulate(model, *input, options);
@@ -197,6 +193,8 @@ py::dict simulate_of(const Real& alpha_given, const std::optional<Real>& p_given
     const bool collapse = r.collapse(criterion, alpha);
     py::dict out = result();
     out["model"] = text(model.describe());
+    out["preset"] = paper ? "paper" : "physical";
+    add_block_members(out, given);
     out["input"] = text(input->describe());
     out["solver"] = solver_name(options.solver.kind);
     out["rtol"] = options.solver.rtol;
@@ -243,15 +241,18 @@ py::dict simulate_of(const Real& alpha_given, const std::optional<Real>& p_given
 
 void init_dynamics(py::module_& m) {
     using namespace py::literals;
-    m.def("simulate", gsl_checked(&simulate_of), py::kw_only(), "alpha"_a, "p"_a = py::none(), "half_height"_a = py::none(),
-          "height"_a = py::none(), "case"_a = py::none(), "pulses"_a = py::none(), "train"_a = py::none(),
+    m.def("simulate", gsl_checked(&simulate_of), py::kw_only(), "alpha"_a = py::none(), "p"_a = py::none(),
+          "half_height"_a = py::none(), "height"_a = py::none(), "thickness"_a = py::none(), "case"_a = py::none(), "pulses"_a = py::none(), "train"_a = py::none(),
           "to"_a = py::none(), "x"_a = py::none(), "pga"_a = py::none(), "q"_a = py::none(), "rd"_a = py::none(),
           "one_sine"_a = false, "ap"_a = py::none(), "wp"_a = py::none(), "record"_a = py::none(),
           "model"_a = "linearised", "solver"_a = py::none(), "rtol"_a = py::none(), "atol"_a = py::none(),
-          "criterion"_a = "final-rotation", "restitution"_a = 1.0, "dt"_a = 0.01, "free_time"_a = 0.0,
+          "criterion"_a = py::none(), "restitution"_a = py::none(), "paper"_a = false, "dt"_a = 0.01, "free_time"_a = 0.0,
           R"(`rocking simulate --json`: one block under a pulse train, a one-sine pulse or a record.
 
-Geometry: alpha with p (rad/s), half_height (m, eq. 2's H) or height (m).
+Geometry: thickness and height (m, full dimensions: alpha = atan(B/H), eqs. 2, 4), or alpha with
+p (rad/s), half_height (m, eq. 2's H) or height (m); given both ways they must agree to 0.1 %.
+Model: Housner's restitution and overturning by default; paper=True is the paper's setting
+(restitution 1, final rotation).
 Input: case (1..5, with pulses) or train, with to (s) or x = p*to, and pga (g), q (PGA = q alpha g)
 or rd (PGA = q_I(x) rd alpha g); or one_sine=True with ap (g) and wp (rad/s); or record
 (a Record or a path), as recorded or scaled to pga (g) or q.
@@ -263,23 +264,27 @@ without --output: the record kernel then runs, whose last digits may differ), fr
 of free rocking after t_fin to keep.  Releases the GIL.)");
     m.def(
         "block",
-        [](const Real& alpha, const std::optional<Real>& p, const std::optional<Real>& half_height,
-           const std::optional<Real>& height, const py::kwargs& extra) {
+        [](const std::optional<Real>& alpha, const std::optional<Real>& p, const std::optional<Real>& half_height,
+           const std::optional<Real>& height, const std::optional<Real>& thickness, const py::kwargs& extra) {
             no_other_keywords(extra, "block", "block");
-            const Block b = block_of(number(alpha, "alpha"), number(p, "p"), number(half_height, "half_height"),
-                                     number(height, "height"));
+            const dynamics::GivenBlock g = block_argument(thickness, height, half_height, alpha, p);
+            const Block& b = g.block;
             py::dict out = result();
             out["alpha"] = b.alpha;
             out["p"] = b.p;
+            add_block_members(out, g);
             out["R"] = b.R;
             out["half_height"] = b.R > 0 ? py::object(py::float_(b.R * std::cos(b.alpha))) : py::object(py::none());
             out["housner_restitution"] = housner_restitution(b.alpha);
             out["uplift_threshold_linearised"] = b.alpha;
             out["uplift_threshold_full"] = std::tan(b.alpha);
+            out["text"] = dynamics::describe_block(g);
             return out;
         },
-        py::kw_only(), "alpha"_a, "p"_a = py::none(), "half_height"_a = py::none(), "height"_a = py::none(),
-        "A block's alpha, p (rad/s, eqs. 2, 4), R (m; 0 when given by p), half-height, Housner's restitution and uplift thresholds (g).");
+        py::kw_only(), "alpha"_a = py::none(), "p"_a = py::none(), "half_height"_a = py::none(), "height"_a = py::none(),
+        "thickness"_a = py::none(),
+        "A block's alpha, p (rad/s, eqs. 2, 4), R (m; 0 when given by p), half-height, Housner's restitution and uplift "
+        "thresholds (g): from thickness and height (m, full dimensions), or alpha with p, half_height or height.");
 }
 
 }  // namespace rocking::python

@@ -1,14 +1,16 @@
-// Records (rocking record info, record synth), the collapse search (rocking
-// collapse) and the paper's check (rocking assess): src/records.
+// Records (rocking record info, record synth, record floor), the collapse search
+// (rocking collapse) and the paper's check (rocking assess): src/records.
 #include <cmath>
 #include <cstdio>
 #include <map>
 
 #include "common.hpp"
+#include "studies/assessment.hpp"
 #include "dynamics/ground_input.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "qfactor/superposition.hpp"
 #include "records/collapse.hpp"
+#include "records/floor_motion.hpp"
 #include "records/synthetic.hpp"
 #include "studies/search_alpha.hpp"
 
@@ -257,6 +259,44 @@ std::shared_ptr<Record> record_synth(const py::object& pulse_given, const std::o
     return r;
 }
 
+// rocking record floor: the floor's Record of a ground record (records/floor_motion.hpp).
+// A model out of range is a ValueError naming the keyword as the command line names its option
+// (period, damping, participation); a floor beyond a double's range a RuntimeError naming the
+// record, as the command's exit 1.
+const char* floor_keyword(const std::string& parameter) {
+    return parameter == "T1" ? "period" : parameter == "zeta" ? "damping" : "participation";
+}
+
+std::shared_ptr<Record> record_floor(py::handle record, const Real& period_given, const Real& participation_given,
+                                     const Real& damping_given, const py::kwargs& extra) {
+    no_other_keywords(extra, "record_floor", "record_floor");
+    const records::FloorModel m{number(period_given, "period"), number(participation_given, "participation"),
+                                number(damping_given, "damping")};
+    try {
+        records::check_floor_model(m);
+    } catch (const records::FloorModelError& e) {
+        refuse(std::string(floor_keyword(e.parameter)) + ": " + e.what());
+    }
+    const RecordPtr ground = record_argument(record, "record");
+    std::string refused, overflow;
+    std::shared_ptr<Record> r;
+    {
+        py::gil_scoped_release unlocked;
+        try {
+            r = std::make_shared<Record>(records::floor_record(*ground, m));
+        } catch (const records::FloorModelError& e) {
+            refused = std::string(floor_keyword(e.parameter)) + ": " + e.what();
+        } catch (const std::overflow_error& e) {
+            overflow = label_of(*ground) + ": " + e.what();
+        }
+    }
+    if (!refused.empty()) refuse(refused);
+    if (!overflow.empty()) throw std::runtime_error(overflow);
+    for (const std::string& w : records::warnings_of(*r))
+        if (PyErr_WarnEx(PyExc_RuntimeWarning, ("record_floor: " + w).c_str(), 1) != 0) throw py::error_already_set();
+    return r;
+}
+
 // --alpha of collapse, the options of its search.
 records::CollapseOptions collapse_options(const Real& alpha_given, const Text& model_given,
                                           const std::optional<Text>& solver_given,
@@ -317,47 +357,106 @@ py::dict collapse(py::handle record, const Real& alpha_given, const Text& model,
     return out;
 }
 
-py::dict assess(py::handle record, const Real& alpha_given, const std::optional<Real>& height_given,
-                const std::optional<Real>& half_height_given, const py::kwargs& extra) {
+// `rocking assess --json`: one record or several (studies/assessment.hpp).
+py::dict assess(py::handle records_given, const std::optional<Real>& thickness, const std::optional<Real>& height,
+                const std::optional<Real>& half_height, const std::optional<Real>& alpha_given,
+                const std::optional<Real>& p_given, const Real& width_given, const py::kwargs& extra) {
     no_other_keywords(extra, "assess", "assess");
-    const double alpha = number(alpha_given, "alpha");
-    const std::optional<double> height = number(height_given, "height"), half_height = number(half_height_given, "half_height");
-    if (height.has_value() == half_height.has_value()) refuse("give exactly one of height and half_height");
-    dynamics::Block b{};
-    try {
-        b = height ? dynamics::Block::from_full_height(*height, alpha) : dynamics::Block::from_half_height(*half_height, alpha);
-    } catch (const std::invalid_argument& e) {
-        refuse(e.what());
+    const dynamics::GivenBlock given = block_argument(thickness, height, half_height, alpha_given, p_given);
+    const double alpha = given.alpha;
+    studies::AssessOptions o;
+    o.width = number(width_given, "width");
+    if (!(o.width >= 1e-7 && o.width <= 0.1)) refuse("width: must be in [1e-7, 0.1] (got " + significant(o.width, 17) + ")");
+    if (!studies::in_search_alpha_range(alpha))
+        refuse("the block's alpha, " + significant(alpha, 6) + " rad, is outside the searches' " + studies::kSearchAlphaRange);
+    // One record (a Record or a path) or a list of them.
+    std::vector<RecordPtr> held;
+    if (py::isinstance<py::list>(records_given) || py::isinstance<py::tuple>(records_given)) held = record_list(records_given, "record");
+    else held.push_back(record_argument(records_given, "record"));
+    std::vector<records::PeakMotion> motions;
+    std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
+    std::vector<const dynamics::SampledInput*> views;
+    for (const RecordPtr& r : held) {
+        motions.push_back(checked_peak_motion(*r));
+        const double x = given.block.p * motions.back().to5;
+        if (!(x >= kSmallestX)) {
+            char text[200];
+            std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
+                          "1e-150, where eq. 27 overflows", height ? "height" : half_height ? "half_height" : "p",
+                          given.block.p, motions.back().to5);
+            refuse(text);
+        }
+        if (!std::isfinite(motions.back().pga / (alpha * dynamics::kGravity)))
+            throw std::runtime_error(label_of(*r) + ": the record's q = PGA/(alpha g) overflows a double at alpha = " +
+                                     significant(alpha, 6));
+        inputs.push_back(std::make_unique<dynamics::SampledInput>(r->in_g(dynamics::kGravity), r->dt, r->name));
+        if (!(inputs.back()->peak() > 0)) throw std::invalid_argument(label_of(*r) + ": the record never moves (PGA 0)");
+        refuse_unresolvable_run(std::max(o.p_max, given.block.p), inputs.back()->t_end(), "record " + label_of(*r));
+        views.push_back(inputs.back().get());
     }
-    const RecordPtr r = record_argument(record, "record");
-    records::PeakMotion m;
+    studies::Assessment a;
     {
         py::gil_scoped_release unlocked;
-        m = checked_peak_motion(*r);
+        a = studies::assess_block(views, motions, studies::BlockShape{alpha, given.block.p, given.label}, o);
     }
-    const double to5 = m.to5, x = b.p * to5;
-    if (!(x >= kSmallestX)) {
-        char text[200];
-        std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
-                      "1e-150, where eq. 27 overflows", height ? "height" : "half_height", b.p, to5);
-        refuse(text);
+    auto first = [](const studies::IdaPoint& at, double scale) {
+        py::dict d = result();
+        d["found"] = at.collapsed;
+        d["q"] = at.q;
+        d["scale"] = scale;
+        return d;
+    };
+    auto side = [](const studies::SpectrumFirst& f, double h) {
+        py::dict d = result();
+        d["found"] = f.found;
+        if (f.found) {
+            d["p"] = f.p;
+            d["height"] = h;
+        }
+        return d;
+    };
+    py::list rows;
+    for (std::size_t k = 0; k < held.size(); ++k) {
+        const studies::RecordAssessment& r = a.records[k];
+        py::dict d = result();
+        d["file"] = file_of(*held[k]);
+        d["name"] = text(held[k]->name);
+        d["pga_g"] = r.motion.pga / dynamics::kGravity;
+        d["to5"] = r.motion.to5;
+        d["x"] = r.x;
+        d["q_eq27"] = r.q_eq27;
+        d["q_record"] = r.q_record;
+        d["ratio"] = r.ratio;
+        d["margin"] = r.margin;
+        d["passes"] = r.passes;
+        d["overturns"] = r.overturns;
+        d["fell_during_input"] = r.fell_during_input;
+        d["peak_theta_over_alpha"] = r.peak_theta_over_alpha;
+        d["first_overturning"] = first(r.ida.first_overturning, r.scale_first_overturning);
+        d["first_robust_collapse"] = first(r.ida.first_robust_collapse, r.scale_first_robust);
+        d["nearest_overturning_below"] = side(r.mark.below, r.mark.height_below);
+        d["nearest_overturning_above"] = side(r.mark.above, r.mark.height_above);
+        d["in_spectrum_set"] = r.mark.in_set;
+        if (r.has_probability) d["probability"] = r.probability;
+        rows.append(d);
     }
-    const double q27 = q2_n6(x), q_record = m.pga / (alpha * dynamics::kGravity);
-    if (!std::isfinite(q_record))
-        throw std::runtime_error(label_of(*r) + ": the record's q = PGA/(alpha g) overflows a double at alpha " +
-                                 significant(alpha, 17));
     py::dict out = result();
-    out["file"] = file_of(*r);
     out["alpha"] = alpha;
-    out["p"] = b.p;
-    out["to5"] = to5;
-    out["x"] = x;
-    out["q_eq27"] = q27;
-    out["q_record"] = q_record;
-    out["passes"] = q_record < q27;
-    out["name"] = text(r->name);
-    out["half_height"] = b.R * std::cos(alpha);
-    out["pga_g"] = m.pga / dynamics::kGravity;
+    out["p"] = given.block.p;
+    add_block_members(out, given);
+    out["model"] = o.describe();
+    out["width"] = o.width;
+    out["check"] = "eq. 27: the record's q below q2_n6(p to_5)";
+    out["records"] = rows;
+    py::dict fragility = result();
+    fragility["fitted"] = a.fitted;
+    if (a.fitted) {
+        fragility["median"] = a.fit.median;
+        fragility["beta"] = a.fit.beta;
+    } else {
+        fragility["no_fit"] = a.no_fit;
+    }
+    out["fragility"] = fragility;
     return out;
 }
 
@@ -429,13 +528,23 @@ A malformed file raises RecordError naming the file and line.)");
 
 pulse=(A, fp, nu, gamma[, t0]): Mavroeidis & Papageorgiou's velocity pulse (m/s, Hz, rad, -, s);
 stochastic=SEED with params={"Ia": ..., "D5_95": ..., ...}: Rezaeian & Der Kiureghian's filtered noise.)");
+    m.def("record_floor", gsl_checked(&record_floor), "record"_a, py::kw_only(), "period"_a, "participation"_a,
+          "damping"_a = records::FloorModel{}.zeta,
+          R"(`rocking record floor`: the floor's Record of a ground record (a Record or a path), the building
+idealised as its first mode (docs/floor_motion.md): a linear oscillator of period (s) and damping
+ratio, with the floor's participation G = Gamma phi(z); a_f = a_g + G D'', exact for the record read
+linear between samples (Nigam & Jennings 1969), at its samples.  Releases the GIL.)");
     m.def("collapse", gsl_checked(&collapse), "record"_a, py::kw_only(), "alpha"_a, "model"_a = "linearised", "solver"_a = py::none(),
           "criterion"_a = py::none(), "restitution"_a = "housner", "rtol"_a = py::none(), "atol"_a = py::none(),
           R"(`rocking collapse --json`: Table 1's search, the first p (rad/s) raised from 0.3 by 1 % at which the
 record overturns the block, then refined.  Not a bound (docs/findings.md, T1b).  Releases the GIL.)");
-    m.def("assess", gsl_checked(&assess), "record"_a, py::kw_only(), "alpha"_a, "height"_a = py::none(), "half_height"_a = py::none(),
-          R"(`rocking assess --json`: the block's p (eqs. 2, 4), the record's to_5, eq. 27's q at x = p to_5 and
-the record's q = PGA/(alpha g); passes when the record's q is below eq. 27's (the paper's check).)");
+    m.def("assess", gsl_checked(&assess), "record"_a, py::kw_only(), "thickness"_a = py::none(), "height"_a = py::none(),
+          "half_height"_a = py::none(), "alpha"_a = py::none(), "p"_a = py::none(), "width"_a = 1e-3,
+          R"(`rocking assess --json`: the block (thickness and height in m, or alpha with height, half_height or p)
+against one record or a list: eq. 27's check with its ratio and margin, the run on each record, the
+scale factors at which the block first overturns and first robustly collapses, the nearest
+overturning blocks of its alpha, and with several records the fragility's P(overturn) at each
+record's q (docs/assess.md).  Releases the GIL.)");
 }
 
 }  // namespace rocking::python

@@ -7,6 +7,8 @@
 
 #include "batch/pool.hpp"
 #include "common.hpp"
+#include "studies/spectrum_mark.hpp"
+#include "studies/blocks_as_built.hpp"
 #include "fragility_fits.hpp"
 #include "study_arguments.hpp"
 #include "dynamics/ground_input.hpp"
@@ -56,10 +58,27 @@ py::object boundary(const studies::Interval& in, bool lower) {
 
 py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min, const Real& p_max, const Whole& points,
                   const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
-                  const std::optional<Real>& robust_width_given, const py::kwargs& extra) {
+                  const std::optional<Real>& robust_width_given, const std::optional<Text>& mark_given,
+                  const py::object& restitution, const py::kwargs& extra) {
     no_other_keywords(extra, "spectrum", "spectrum");
-    const std::vector<double> alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 20);
-    studies::refuse_repeated_values("alpha", alphas);
+    // As rocking spectrum --mark: the marked blocks' alphas join alpha's.
+    std::vector<double> alphas;
+    if (!alpha.is_none()) {
+        alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 20);
+        studies::refuse_repeated_values("alpha", alphas);
+    }
+    std::vector<studies::BlockShape> marks;
+    if (const std::optional<std::string> text_given = string_argument(mark_given, "mark")) {
+        try {
+            marks = studies::blocks_as_built(*text_given, "mark");
+        } catch (const std::invalid_argument& e) {
+            refuse(e.what());
+        }
+        for (const studies::BlockShape& b : marks)
+            if (std::find(alphas.begin(), alphas.end(), b.alpha) == alphas.end()) alphas.push_back(b.alpha);
+        if (alphas.size() > 20) refuse("alpha and mark: at most 20 alphas in all");
+    }
+    if (alphas.empty()) refuse("give alpha, or mark='BxH,...' for the alphas of the blocks marked");
     studies::SpectrumOptions o;
     o.p_min = number(p_min, "p_min"), o.p_max = number(p_max, "p_max");
     const long long points_given = whole(points, "points");
@@ -72,9 +91,11 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     if (m.refine) o.method = studies::SpectrumOptions::Method::refine;
     o.width = m.width;
     o.robust_width = m.robust_width;
+    restitution_into(restitution, o.model);
     const int threads = jobs_argument(jobs);
     const RecordPtr r = record_argument(record, "record");
     std::vector<Study> found;
+    std::vector<studies::SpectrumMark> marked;
     {
         py::gil_scoped_release unlocked;
         const auto input = input_of(*r);
@@ -84,6 +105,9 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
             alphas.size(), batch::PoolOptions{threads},
             [&](std::size_t k) { return jobs::spectrum_study(*input, alphas[k], o); },
             [&](std::size_t, Study& s) { found.push_back(std::move(s)); });
+        for (const studies::BlockShape& b : marks)
+            for (const Study& st : found)
+                if (st.spectrum.alpha == b.alpha) marked.push_back(studies::mark_block(*input, st.spectrum, b, o));
     }
     py::dict out = result();
     out["file"] = file_of(*r);
@@ -183,6 +207,30 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
         spectra.append(d);
     }
     out["spectra"] = spectra;
+    py::list marks_out;
+    for (const studies::SpectrumMark& m : marked) {
+        auto side = [](const studies::SpectrumFirst& f, double h) {
+            py::dict d = result();
+            d["found"] = f.found;
+            if (f.found) {
+                d["p"] = f.p;
+                d["height"] = h;
+            }
+            return d;
+        };
+        py::dict d = result();
+        d["built"] = m.block.built;
+        d["alpha"] = m.block.alpha;
+        d["p"] = m.block.p;
+        d["height"] = studies::height_at_p(m.block.alpha, m.block.p);
+        d["overturns"] = m.overturns;
+        d["in_set"] = m.in_set;
+        d["nearest_below"] = side(m.below, m.height_below);
+        d["nearest_above"] = side(m.above, m.height_above);
+        d["text"] = studies::describe_mark(m);
+        marks_out.append(d);
+    }
+    out["marks"] = marks_out;
     return out;
 }
 
@@ -232,11 +280,25 @@ void add_refine_fields(py::dict& d, const Ida& ida) {
 py::dict fragility(const py::object& records_given, const py::object& alpha, const py::object& p, const Real& q_max,
                    const Whole& points, const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed,
                    const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
-                   const std::optional<Real>& robust_width_given, const Flag& nrml_given, const py::kwargs& extra) {
+                   const std::optional<Real>& robust_width_given, const std::optional<Text>& block_given,
+                   const py::object& restitution, const Flag& nrml_given, const py::kwargs& extra) {
     no_other_keywords(extra, "fragility", "fragility");
     const bool nrml = flag(nrml_given, "nrml");
-    const std::vector<double> alphas = values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 50);
-    const std::vector<double> ps = values_in(p, "p", 0.01, 1000, "(0.01, 1000) rad/s", 50);
+    // The blocks as rocking fragility's: --block BxH,... or every --alpha with every --p.
+    std::vector<studies::BlockShape> built;
+    if (const std::optional<std::string> text_given = string_argument(block_given, "block")) {
+        if (!alpha.is_none() || !p.is_none()) refuse("block gives each block's alpha and p: give it without alpha and p");
+        try {
+            built = studies::blocks_as_built(*text_given, "block");
+        } catch (const std::invalid_argument& e) {
+            refuse(e.what());
+        }
+    } else if (alpha.is_none() || p.is_none()) {
+        refuse("give alpha and p, or block='BxH,...'");
+    }
+    const std::vector<double> alphas =
+        built.empty() ? values_in(alpha, "alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange, 50) : std::vector<double>{};
+    const std::vector<double> ps = built.empty() ? values_in(p, "p", 0.01, 1000, "(0.01, 1000) rad/s", 50) : std::vector<double>{};
     studies::refuse_repeated_values("alpha", alphas);
     studies::refuse_repeated_values("p", ps);
     studies::FragilityStudyOptions o;
@@ -253,15 +315,17 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     o.threads = jobs_argument(jobs);
     const std::vector<RecordPtr> recs = record_list(records_given, "records");
     if (recs.size() > 1000) refuse("records: at most 1000");
-    std::vector<studies::BlockShape> blocks;
+    std::vector<studies::BlockShape> blocks = built;
     for (double a : alphas)
-        for (double v : ps) blocks.push_back({a, v});
+        for (double v : ps) blocks.push_back({a, v, ""});
+    restitution_into(restitution, o.ida.model);
     std::vector<BlockFragility> study;
     {
         py::gil_scoped_release unlocked;
         std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
         std::vector<std::string> labels;
-        const double p_max = *std::max_element(ps.begin(), ps.end());
+        double p_max = 0;
+        for (const studies::BlockShape& b : blocks) p_max = std::max(p_max, b.p);
         for (const RecordPtr& r : recs) {
             inputs.push_back(input_of(*r));
             labels.push_back(label_of(*r));
@@ -299,6 +363,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         py::dict b = result();
         b["alpha"] = f.block.alpha;
         b["p"] = f.block.p;
+        if (!f.block.built.empty()) b["built"] = f.block.built;
         py::list rows;
         for (std::size_t k = 0; k < recs.size(); ++k) {
             const Ida& ida = f.idas[k];
@@ -362,9 +427,9 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
 
 void init_studies(py::module_& m) {
     using namespace py::literals;
-    m.def("spectrum", gsl_checked(&spectrum), "record"_a, py::kw_only(), "alpha"_a, "p_min"_a = 0.3, "p_max"_a = 30.0,
+    m.def("spectrum", gsl_checked(&spectrum), "record"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = 0.3, "p_max"_a = 30.0,
           "points"_a = 200, "jobs"_a = py::none(), "method"_a = "grid", "width"_a = py::none(),
-          "robust_width"_a = py::none(),
+          "robust_width"_a = py::none(), "mark"_a = py::none(), "restitution"_a = "housner",
           R"(`rocking spectrum --json`: for each alpha (a number or a list), the overturning intervals in p
 (rad/s), each end bisected to 1e-6 and checked, beside Table 1's first collapse, and the grid: each
 spectrum's points as arrays (p, grid, max_theta, final_rotation, peak_rotation, overturning,
@@ -372,10 +437,13 @@ t_overturn with NaN for null).  jobs: threads (default: the cores this process m
 method='refine' (width=w in ln p, default 1e-5; robust_width, default 5e-3) finds every island
 wider than w and adds first_overturning (p, found, boundary), first_robust_collapse, bands (from,
 to, share), samples, accepted, at_width, with_margins and unguaranteed_from, as --method refine
-does.  An alpha given twice is refused.  Releases the GIL.)");
-    m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a, "p"_a, "q_max"_a = 20.0, "points"_a = 100,
-          "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(), "method"_a = "grid",
-          "width"_a = py::none(), "robust_width"_a = py::none(), "nrml"_a = false,
+does.  mark='0.6x4,0.45x3' (thickness x height, m) reads those blocks against the spectra of their
+alphas (added to alpha's), as --mark: marks (each block's run at its own p, the nearest
+overturning p on either side and their heights).  An alpha given twice is refused.  Releases the GIL.)");
+    m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p"_a = py::none(),
+          "q_max"_a = 20.0, "points"_a = 100, "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
+          "method"_a = "grid", "width"_a = py::none(), "robust_width"_a = py::none(), "block"_a = py::none(),
+          "restitution"_a = "housner", "nrml"_a = false,
           R"(`rocking fragility --json`: for each block (every alpha with every p) and record, the IDA's
 overturning intervals in q = PGA/(alpha g), the first collapse q or a censored point, the lognormal
 fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).

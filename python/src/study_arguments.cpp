@@ -1,5 +1,7 @@
 #include "study_arguments.hpp"
 
+#include <cmath>
+
 #include "studies/overturning_set.hpp"
 
 namespace rocking::python {
@@ -73,6 +75,12 @@ void method_argument(const Text& method_given, const std::optional<Real>& width_
     if (m.refine) ida.method = studies::IdaOptions::Method::refine;
     ida.width = m.width;
     ida.robust_width = m.robust_width;
+}
+
+void restitution_into(const py::object& value, records::CollapseOptions& model) {
+    const double e = restitution_argument(value);
+    model.housner_restitution = std::isnan(e);
+    if (!model.housner_restitution) model.restitution = e;
 }
 
 }  // namespace rocking::python

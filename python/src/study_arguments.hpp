@@ -42,4 +42,7 @@ MethodChoice method_argument(const Text& method_given, const std::optional<Real>
 void method_argument(const Text& method_given, const std::optional<Real>& width_given,
                      const std::optional<Real>& robust_width_given, studies::IdaOptions& ida);
 
+// restitution=E|"housner" into a study's model, as the command line's --restitution.
+void restitution_into(const py::object& value, records::CollapseOptions& model);
+
 }  // namespace rocking::python

@@ -81,17 +81,17 @@ def test_figure4_is_the_fig04_scene(tmp_path):
 def test_check_wall_is_assess_and_simulate(records, tmp_path):
     path = str(records / NORCIA)
     check_wall = load("check_wall")
-    record, verdict, motion = check_wall.check(path, 0.15, 3)
-    assert_same(verdict, cli("assess", path, "--alpha", 0.15, "--height", 3))
+    record, verdict, motion = check_wall.check(path, 3, thickness=0.45)
+    assert_same(verdict, cli("assess", path, "--thickness", 0.45, "--height", 3))
     out = tmp_path / "theta.csv"
-    expected = cli("simulate", "--record", path, "--alpha", 0.15, "--height", 3, "--restitution", "housner",
-                   "--criterion", "overturning", "--output", out, "--dt", 0.01)
+    expected = cli("simulate", "--record", path, "--thickness", 0.45, "--height", 3, "--output", out, "--dt", 0.01)
     assert_same(motion, expected)
     assert motion.theta_over_alpha.tolist() == read_csv(out)[1]["theta_over_alpha"]
-    done = run("check_wall.py", path, "--alpha", 0.15, "--height", 3, "--png", tmp_path / "wall.png", cwd=tmp_path)
+    done = run("check_wall.py", path, "--thickness", 0.45, "--height", 3, "--png", tmp_path / "wall.png", cwd=tmp_path)
     assert_png(tmp_path / "wall.png")
     lines = done.stdout.splitlines()
-    # README's numbers for this wall and record (rocking assess's text output).
-    assert lines[0] == "IT.NRC HGE 20160824_013632: FAILS"
-    assert lines[3] == "  q from eq. 27 = 2.2346; the record's q = PGA/(alpha g) = 2.3960"
-    assert "%d impacts" % expected["impacts"] in lines[4]
+    r = verdict.records[0]
+    assert lines[0] == "IT.NRC HGE 20160824_013632: eq. 27 check FAILS (ratio %.4f, margin %+.1f %%)" % (
+        r.ratio, 100 * r.margin)
+    assert r.ratio == r.q_record / r.q_eq27
+    assert lines[4].startswith("  the record scaled by x") and "%d impacts" % expected["impacts"] in lines[5]

@@ -194,6 +194,7 @@ CALLS = [
     # Two p: one p with a range (p_min 1, p_max 2) is refused since issue 38 (it was cut to p_min).
     (rq.eq27, dict(records=[R], alpha=0.15, p_min=1, p_max=2, p_points=2, q_max=2), ["alpha", "p_min", "p_max", "q_max"]),
     (rq.record_synth, dict(pulse=(0.5, 1, 0.3, 2.5), dt=0.01, duration=5), ["dt", "duration"]),
+    (rq.record_floor, dict(record=R, period=0.5, participation=1.5, damping=0.05), ["period", "participation", "damping"]),
     (rq.Record, dict(accel=[0.1, 0.2, 0.3], dt=0.01), ["dt"]),
 ]
 NUMBERS = [(f, kwargs, name) for f, kwargs, names in CALLS for name in names]
@@ -330,8 +331,11 @@ def test_a_string_of_the_wrong_type_or_with_a_nul_is_refused_naming_it(f, kwargs
 
 
 def test_restitution_and_one_sine_are_named():
-    with pytest.raises(TypeError, match=r"^restitution: expected a factor in \[0, 1\] or 'housner', got NoneType$"):
-        rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, restitution=None)
+    # None is simulate's default since issue 40: Housner's, as the command line's.
+    assert rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, restitution=None).restitution == \
+        rq.block(alpha=0.15, p=2).housner_restitution
+    with pytest.raises(ValueError, match=r"^restitution: a factor in \[0, 1\] or 'housner' \(got 'none'\)$"):
+        rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, restitution="none")
     with pytest.raises(TypeError, match=r"^restitution: expected a factor in \[0, 1\] or 'housner', got list$"):
         rq.collapse(R, alpha=0.15, restitution=[0.9])
     with pytest.raises(TypeError, match=r"^one_sine: expected True or False, got str 'yes'$"):
@@ -352,6 +356,7 @@ def test_restitution_and_one_sine_are_named():
     (rq.Record, dict(accel=[0.1, 0.2], dt=0.01), "units", "unit"),
     (rq.read_record, dict(path="x.txt"), "dtt", "dt"),
     (rq.record_synth, dict(stochastic=1, dt=0.01, duration=5), "param", "params"),
+    (rq.record_floor, dict(record=R, period=0.5, participation=1.5), "dampin", "damping"),
     (rq.collapse, dict(record=R, alpha=0.15), "criterium", "criterion"),
     (rq.assess, dict(record=R, alpha=0.15, height=3), "halfheight", "half_height"),
     (rq.spectrum, dict(record=R, alpha=0.15), "pmax", "p_max"),

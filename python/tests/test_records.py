@@ -1,5 +1,6 @@
-"""Records (read_record, Record, record_info, peak_motion, record_synth), collapse and assess
-against `rocking record info`, `record synth`, `collapse` and `assess`."""
+"""Records (read_record, Record, record_info, peak_motion, record_synth, record_floor), collapse and assess
+against `rocking record info`, `record synth`, `record floor`, `collapse` and `assess`; record_floor also against
+a second exact method in numpy."""
 from pathlib import Path
 
 import numpy as np
@@ -143,9 +144,17 @@ def test_assess_is_rocking_assess(records, name):
         expected = cli("assess", path, "--alpha", alpha, "--" + geometry[0].replace("_", "-"), geometry[1])
         got = rq.assess(path, alpha=alpha, **{geometry[0]: geometry[1]})
         assert_same(got, expected)
-        assert rq.q2_n6(got.x) == expected["q_eq27"]
-        assert rq.peak_motion(path).to5_s == expected["to5"]
-    assert rq.assess(str(records / NORCIA), alpha=0.15, height=3).passes is False  # README: FAILS
+        r = got.records[0]
+        assert rq.q2_n6(r.x) == expected["records"][0]["q_eq27"]
+        assert rq.peak_motion(path).to5_s == expected["records"][0]["to5"]
+        assert r.ratio == r.q_record / r.q_eq27 and r.margin == 1 - r.ratio
+    assert rq.assess(str(records / NORCIA), alpha=0.15, height=3).records[0].passes is False  # README: FAILS
+    # Two records at once, and the block as built: the same per record, and the fragility over both.
+    both = [str(records / NORCIA), path]
+    expected = cli("assess", *both, "--thickness", 0.45, "--height", 3)
+    got = rq.assess(both, thickness=0.45, height=3)
+    assert_same(got, expected)
+    assert len(got.records) == 2 and got.thickness == 0.45 and got.given == "dimensions"
 
 
 def test_a_bad_record_names_its_file_and_line(tmp_path, records):
@@ -219,3 +228,79 @@ def test_record_synth_warns_below_ten_samples_per_period():
         warnings.simplefilter("error")
         fine = rq.record_synth(pulse=(0.5, 7.92, 0, 4), dt=0.01, duration=2)
     assert "warning" not in fine.header
+
+
+def test_record_floor_is_rocking_record_floor(tmp_path):
+    ground = tmp_path / "ground.txt"
+    cli("record", "synth", "--stochastic", 7, "--dt", 0.01, "--duration", 30, "--output", ground)
+    for words, kwargs in [(["--period", 0.5, "--participation", 1.5], dict(period=0.5, participation=1.5)),
+                          (["--period", 1.2, "--participation", -0.4, "--damping", 0.02],
+                           dict(period=1.2, participation=-0.4, damping=0.02))]:
+        out = tmp_path / "floor.txt"
+        expected = cli("record", "floor", ground, "--unit", "m/s2", *words, "--output", out)
+        got = rq.record_floor(rq.read_record(ground, unit="m/s2"), **kwargs)
+        assert got.accel.tolist() == rq.read_record(out, unit="m/s2").accel.tolist()
+        assert (got.name, got.format, got.samples, got.dt) == tuple(expected[k] for k in ("name", "format", "samples", "dt"))
+        assert got.pga_ms2 == expected["floor_pga_ms2"]
+        assert float(got.header["end_amplitude_m_s2"]) == expected["end_amplitude_ms2"]
+        assert {k: float(got.header[k]) for k in ("T1_s", "zeta", "G")} == expected["model"]
+        assert got.header["method"] == expected["method"]
+
+
+def exact_floor_by_expm(a_g, dt, period, participation, damping):
+    """A second exact method, numpy only: the state (D, D') with the input f = -a_g and its slope over
+    each step appended, z' = M z, M = [[F, b, 0], [0, 0, 1], [0, 0, 0]], stepped by expm(M dt) (Van Loan
+    1978), the exponential by scaling and squaring a Taylor series; a_f = (1 - G) a_g - G (2 zeta w D' + w^2 D)."""
+    w = 2 * np.pi / period
+    M = np.zeros((4, 4))
+    M[0, 1], M[1, 0], M[1, 1], M[1, 2], M[2, 3] = 1, -w * w, -2 * damping * w, 1, 1
+    A = M * dt
+    squarings = max(0, int(np.ceil(np.log2(max(np.abs(A).sum(axis=1).max(), 1e-300) / 0.25))))
+    A = A / 2.0 ** squarings
+    E, term = np.eye(4), np.eye(4)
+    for k in range(1, 20):
+        term = term @ A / k
+        E = E + term
+    for _ in range(squarings):
+        E = E @ E
+    f = -np.asarray(a_g)
+    x, out = np.zeros(2), np.empty(len(f))
+    for k in range(len(f)):
+        out[k] = (1 - participation) * a_g[k] - participation * (2 * damping * w * x[1] + w * w * x[0])
+        if k + 1 < len(f):
+            x = E[:2, :2] @ x + E[:2, 2] * f[k] + E[:2, 3] * (f[k + 1] - f[k]) / dt
+    return out
+
+
+def test_record_floor_against_a_second_exact_method(records):
+    # The same exact answer by another route: each method's rounding accumulates at most
+    # linearly over the N steps (the same rounded map every step), so within N eps of the floor's PGA.
+    for ground in (rq.record_synth(stochastic=7, dt=0.01, duration=30), rq.read_record(records / NORCIA)):
+        for period, participation, damping in [(0.5, 1.5, 0.05), (0.25, 1.2, 0.1), (2.0, 1.4, 0.02)]:
+            got = rq.record_floor(ground, period=period, participation=participation, damping=damping).accel
+            other = exact_floor_by_expm(ground.accel, ground.dt, period, participation, damping)
+            tol = len(got) * np.finfo(float).eps * np.abs(got).max()
+            assert np.abs(got - other).max() < tol, (ground.name, period)
+
+
+def test_record_floor_refuses_what_record_floor_refuses(tmp_path):
+    ground = tmp_path / "ground.txt"
+    cli("record", "synth", "--stochastic", 7, "--dt", 0.01, "--duration", 10, "--output", ground)
+    record = rq.read_record(ground, unit="m/s2")
+    for words, kwargs in [(["--period", 0.02, "--participation", 1], dict(period=0.02, participation=1)),
+                          (["--period", -1, "--participation", 1], dict(period=-1, participation=1)),
+                          (["--period", 1, "--participation", 1, "--damping", 1], dict(period=1, participation=1, damping=1))]:
+        message, code = cli_error("record", "floor", ground, "--unit", "m/s2", *words)
+        assert code == 2
+        with pytest.raises(ValueError) as raised:
+            rq.record_floor(record, **kwargs)
+        assert "--" + str(raised.value) == message
+    with pytest.raises(ValueError, match="^participation: inf is not a finite number"):
+        rq.record_floor(record, period=1, participation=float("inf"))
+    with pytest.raises(TypeError):
+        rq.record_floor(record, period=1)
+    with pytest.warns(RuntimeWarning, match=r"^record_floor: T1 = 0\.09 s has 9 samples per period at dt = 0\.01 s"):
+        rq.record_floor(record, period=0.09, participation=1.5)
+    huge = rq.Record(1e306 * np.sin(2 * np.pi * 0.01 * np.arange(2000) / 0.5), 0.01, unit="g", name="huge")
+    with pytest.raises(RuntimeError, match="^huge: the floor's acceleration at sample"):
+        rq.record_floor(huge, period=0.5, participation=1.5, damping=0.01)

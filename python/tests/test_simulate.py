@@ -87,7 +87,7 @@ def test_block_is_the_geometry_of_assess_and_simulate():
 
 
 def test_errors_are_the_command_line_s():
-    with pytest.raises(ValueError, match="give exactly one of p, half_height and height"):
+    with pytest.raises(ValueError, match="alpha A goes with exactly one of p, half_height and height"):
         rq.simulate(alpha=0.15, p=2, height=3, case=2, x=0.5, rd=0.9)
     with pytest.raises(ValueError, match="give exactly one input"):
         rq.simulate(alpha=0.15, p=2)

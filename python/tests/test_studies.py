@@ -85,6 +85,28 @@ def test_eq27_is_rocking_eq27(synthetic):
     assert expected["bootstrap"] is None
 
 
+def test_the_engineers_blocks_and_restitution_are_the_command_lines(synthetic):
+    # Issue 40: blocks as built (fragility's block, spectrum's mark) and restitution on
+    # every study, as the command line's --block, --mark and --restitution.
+    records = [rq.read_record(p, unit="m/s2") for p in synthetic]
+    expected = cli("fragility", *synthetic[:2], "--block", "0.6x4,0.45x3", "--restitution", 0.7, "--points", 15,
+                   "--unit", "m/s2")
+    got = rq.fragility(records[:2], block="0.6x4,0.45x3", restitution=0.7, points=15)
+    check_fragility(got, expected)
+    assert [b.built for b in got.blocks] == ["0.6x4", "0.45x3"] and "restitution 0.7" in got.model
+    expected = cli("spectrum", synthetic[0], "--mark", "0.6x4", "--alpha", 0.1, "--points", 30, "--p-min", 1,
+                   "--p-max", 10, "--restitution", 0.5, "--unit", "m/s2")
+    got = rq.spectrum(records[0], mark="0.6x4", alpha=0.1, points=30, p_min=1, p_max=10, restitution=0.5)
+    check_spectrum(got, expected)
+    assert [m.built for m in got.marks] == ["0.6x4"] and len(got.spectra) == 2
+    words = ["--alpha", 0.1, "--p-min", 2, "--p-max", 2, "--p-points", 1, "--q-max", 8, "--restitution", "0.8",
+             "--unit", "m/s2"]
+    assert_same(rq.eq27(records, alpha=0.1, p_min=2, p_max=2, p_points=1, q_max=8, restitution=0.8),
+                cli("eq27", *synthetic, *words))
+    with pytest.raises(ValueError, match="block gives each block's alpha and p"):
+        rq.fragility(records[:2], block="0.6x4", alpha=0.1)
+
+
 def test_a_study_takes_records_made_from_arrays(synthetic):
     # The same samples as an array give the same study; only the record's name and file differ.
     from_file = rq.read_record(synthetic[1], unit="m/s2")

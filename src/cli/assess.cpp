@@ -1,4 +1,6 @@
-// rocking assess: the paper's check of a block against a record (eq. 27).
+// rocking assess: the engineer's check of a block against one record or
+// several (issue 40): the paper's eq. 27 check with its ratio and margin,
+// and what the model says of the same block (studies/assessment.hpp).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -8,13 +10,20 @@
 #include <string>
 #include <vector>
 
+#include "cli/geometry.hpp"
 #include "cli/options.hpp"
-#include "qfactor/closed_forms.hpp"
-#include "harness/table.hpp"
+#include "qfactor/superposition.hpp"
+#include "studies/assessment.hpp"
+#include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
 
 namespace {
+
+const char* kUsage =
+    "usage: rocking assess FILE... (--thickness B --height H | --alpha A (--height H | --half-height h | --p P)) "
+    "[--width W] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]";
+
 // PGA, PGV and to_5 alone: the CWT and the Fourier peaks of the eleven half-periods
 // took 1.1 s of a 30,001-sample record and assess reports none of them.
 records::PeakMotion peak_motion_of(const records::Record& r, const std::string& path) {
@@ -25,54 +34,147 @@ records::PeakMotion peak_motion_of(const records::Record& r, const std::string& 
         throw std::runtime_error(path + ": " + e.what());
     }
 }
+
+std::string percent(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%+.1f %%", 100 * v);
+    return text;
+}
+
+std::string scale_text(const studies::IdaPoint& at, double scale, double q_max) {
+    if (!at.collapsed) return "not up to q = " + significant(q_max, 6) + " (censored)";
+    return "x" + four(scale) + " (q = " + four(at.q) + ")";
+}
+
+void print_text(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
+                const studies::Assessment& s, const studies::AssessOptions& o) {
+    std::printf("assess: %s\n  model: %s\n", describe_block(given).c_str(), o.describe().c_str());
+    for (std::size_t k = 0; k < files.size(); ++k) {
+        const studies::RecordAssessment& r = s.records[k];
+        std::printf("%s: eq. 27 check %s (the record's q is %s eq. 27's: ratio %s, margin %s)\n", files[k].c_str(),
+                    r.passes ? "PASSES" : "FAILS", r.passes ? "below" : "at or above", four(r.ratio).c_str(),
+                    percent(r.margin).c_str());
+        std::printf("  input: %s\n", names[k].c_str());
+        std::printf("  record: PGA = %s g, to_5 = pi PGV/PGA = %s s; x = p to_5 = %s; q from eq. 27 = %s; the "
+                    "record's q = PGA/(alpha g) = %s\n",
+                    four(r.motion.pga / dynamics::kGravity).c_str(), four(r.motion.to5).c_str(), four(r.x).c_str(),
+                    four(r.q_eq27).c_str(), four(r.q_record).c_str());
+        if (r.fell_during_input)
+            std::printf("  the model on this record: OVERTURNS (falls during the input)\n");
+        else
+            std::printf("  the model on this record: %s (peak |theta|/alpha during the input %s)\n",
+                        r.overturns ? "OVERTURNS (in the free rocking after it)" : "does not overturn",
+                        four(r.peak_theta_over_alpha).c_str());
+        std::printf("  the record scaled: first overturns the block at %s, first robustly collapses at %s\n",
+                    scale_text(r.ida.first_overturning, r.scale_first_overturning, o.q_max).c_str(),
+                    scale_text(r.ida.first_robust_collapse, r.scale_first_robust, o.q_max).c_str());
+        std::printf("  blocks of this alpha: %s\n", studies::describe_mark(r.mark).c_str());
+        if (r.has_probability)
+            std::printf("  fragility over the %zu records: P(overturn) at this record's q = %s\n", files.size(),
+                        four(r.probability).c_str());
+    }
+    if (files.size() > 1) {
+        if (s.fitted)
+            std::printf("fragility over the %zu records (first overturnings): lognormal median q = %s, beta = %s\n",
+                        files.size(), four(s.fit.median).c_str(), four(s.fit.beta).c_str());
+        else
+            std::printf("fragility over the %zu records: no fit (%s)\n", files.size(), s.no_fit.c_str());
+    }
+}
+
+std::string first_json(const studies::IdaPoint& at, double scale) {
+    return "{\"found\": " + std::string(at.collapsed ? "true" : "false") + ", \"q\": " + json_number(at.q) +
+           ", \"scale\": " + json_number(scale) + "}";
+}
+
+std::string side_json(const studies::SpectrumFirst& f, double height) {
+    return f.found ? "{\"found\": true, \"p\": " + json_number(f.p) + ", \"height\": " + json_number(height) + "}"
+                   : std::string("{\"found\": false}");
+}
+
+void print_json(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
+                const studies::Assessment& s, const studies::AssessOptions& o) {
+    std::ostringstream js;
+    js << "{\"alpha\": " << json_number(given.alpha) << ", \"p\": " << json_number(given.block.p) << ", "
+       << block_json(given) << ", \"model\": " << json_string(o.describe()) << ", \"width\": " << json_number(o.width)
+       << ", \"check\": \"eq. 27: the record's q below q2_n6(p to_5)\", \"records\": [";
+    for (std::size_t k = 0; k < files.size(); ++k) {
+        const studies::RecordAssessment& r = s.records[k];
+        js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"name\": " << json_string(names[k])
+           << ", \"pga_g\": "
+           << json_number(r.motion.pga / dynamics::kGravity) << ", \"to5\": " << json_number(r.motion.to5)
+           << ", \"x\": " << json_number(r.x) << ", \"q_eq27\": " << json_number(r.q_eq27)
+           << ", \"q_record\": " << json_number(r.q_record) << ", \"ratio\": " << json_number(r.ratio)
+           << ", \"margin\": " << json_number(r.margin) << ", \"passes\": " << (r.passes ? "true" : "false")
+           << ", \"overturns\": " << (r.overturns ? "true" : "false")
+           << ", \"fell_during_input\": " << (r.fell_during_input ? "true" : "false")
+           << ", \"peak_theta_over_alpha\": " << json_number(r.peak_theta_over_alpha)
+           << ", \"first_overturning\": " << first_json(r.ida.first_overturning, r.scale_first_overturning)
+           << ", \"first_robust_collapse\": " << first_json(r.ida.first_robust_collapse, r.scale_first_robust)
+           << ", \"nearest_overturning_below\": " << side_json(r.mark.below, r.mark.height_below)
+           << ", \"nearest_overturning_above\": " << side_json(r.mark.above, r.mark.height_above)
+           << ", \"in_spectrum_set\": " << (r.mark.in_set ? "true" : "false");
+        if (r.has_probability) js << ", \"probability\": " << json_number(r.probability);
+        js << "}";
+    }
+    js << "], \"fragility\": {\"fitted\": " << (s.fitted ? "true" : "false");
+    if (s.fitted) js << ", \"median\": " << json_number(s.fit.median) << ", \"beta\": " << json_number(s.fit.beta);
+    else js << ", \"no_fit\": " << json_string(s.no_fit);
+    js << "}}\n";
+    std::cout << js.str();
+}
+
 }  // namespace
 
 int cmd_assess(int argc, char** argv) {
-    using namespace rocking::dynamics;
-    const std::string path =
-        file_argument(argc, argv, 2, "usage: rocking assess FILE --alpha A (--height H | --half-height h)");
-    const Args a = parse(argc, argv, 3, {"--alpha", "--height", "--half-height", "--unit", "--dt"});
-    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
-    const double alpha = number("--alpha", a.values.at("--alpha"));
-    if (a.values.count("--height") + a.values.count("--half-height") != 1)
-        throw UsageError("give exactly one of --height and --half-height");
-    Block b{};
-    try {
-        b = a.values.count("--height") ? Block::from_full_height(number("--height", a.values.at("--height")), alpha)
-                                       : Block::from_half_height(number("--half-height", a.values.at("--half-height")), alpha);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
+    int first = 0;
+    const std::vector<std::string> files = file_arguments(argc, argv, first, kUsage);
+    if (files.size() > 1000) throw UsageError("at most 1000 files");
+    std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor"};
+    allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
+    const Args a = parse(argc, argv, first, allowed);
+    const GivenBlock given = block_option(a);
+    const double alpha = given.alpha;
+    studies::AssessOptions o;
+    if (a.values.count("--width")) {
+        o.width = number("--width", a.values.at("--width"));
+        if (!(o.width >= 1e-7 && o.width <= 0.1)) throw UsageError("--width: must be in [1e-7, 0.1] (got " + a.values.at("--width") + ")");
     }
-    const records::Record r = load_record(path, a);
-    const records::PeakMotion m = peak_motion_of(r, path);
-    const double to5 = m.to5, x = b.p * to5;
-    if (!(x >= kSmallestX)) {
-        char text[200];
-        std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
-                      "1e-150, where eq. 27 overflows", a.values.count("--height") ? "--height" : "--half-height", b.p, to5);
-        throw UsageError(text);
+    if (!studies::in_search_alpha_range(alpha))
+        throw UsageError("the block's alpha, " + significant(alpha, 6) + " rad, is outside the searches' " +
+                         studies::kSearchAlphaRange);
+    std::vector<records::Record> records;
+    std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
+    std::vector<const dynamics::SampledInput*> views;
+    std::vector<records::PeakMotion> motions;
+    for (const std::string& path : files) {
+        records.push_back(load_record(path, a));
+        const records::Record& r = records.back();
+        motions.push_back(peak_motion_of(r, path));
+        const double x = given.block.p * motions.back().to5;
+        if (!(x >= kSmallestX)) {
+            char text[200];
+            std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
+                          "1e-150, where eq. 27 overflows",
+                          a.values.count("--height") ? "--height" : a.values.count("--half-height") ? "--half-height" : "--p",
+                          given.block.p, motions.back().to5);
+            throw UsageError(text);
+        }
+        // A PGA near the largest double over a tiny alpha printed "q_record": inf.
+        if (!std::isfinite(motions.back().pga / (alpha * dynamics::kGravity)))
+            throw std::runtime_error(path + ": the record's q = PGA/(alpha g) overflows a double at alpha = " +
+                                     significant(alpha, 6) + " (PGA = " + four(motions.back().pga) + " m/s^2)");
+        inputs.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
+        if (!(inputs.back()->peak() > 0)) throw std::runtime_error(path + ": the record never moves (PGA 0)");
+        refuse_unresolvable_run(std::max(o.p_max, given.block.p), inputs.back()->t_end(), a, {"--dt"}, path);
+        views.push_back(inputs.back().get());
     }
-    const double q27 = q2_n6(x), q_record = m.pga / (alpha * kGravity);
-    // A PGA near the largest double over a tiny alpha printed "q_record": inf.
-    if (!std::isfinite(q_record))
-        throw std::runtime_error(path + ": the record's q = PGA/(alpha g) overflows a double at --alpha " +
-                                 a.values.at("--alpha") + " (PGA = " + four(m.pga) + " m/s^2)");
-    const bool safe = q_record < q27;
-    if (a.json) {
-        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << json_number(alpha)
-                  << ", \"p\": " << json_number(b.p) << ", \"to5\": " << json_number(to5)
-                  << ", \"x\": " << json_number(x) << ", \"q_eq27\": " << json_number(q27)
-                  << ", \"q_record\": " << json_number(q_record) << ", \"passes\": " << (safe ? "true" : "false")
-                  << "}\n";
-    } else {
-        std::printf("%s: %s\n", r.name.c_str(), safe ? "PASSES (the record's q is below eq. 27's)" : "FAILS");
-        // four(): a tiny --height gives a p of 1e150, which %.4f printed in 150 digits.
-        std::printf("  block: alpha = %g, p = %s rad/s (eqs. 2, 4, half-height %s m)\n", alpha, four(b.p).c_str(),
-                    four(b.R * std::cos(alpha)).c_str());
-        std::printf("  record: PGA = %s g, to_5 = pi PGV/PGA = %s s; x = p to_5 = %s\n", four(m.pga / kGravity).c_str(),
-                    four(to5).c_str(), four(x).c_str());
-        std::printf("  q from eq. 27 = %s; the record's q = PGA/(alpha g) = %s\n", four(q27).c_str(), four(q_record).c_str());
-    }
+    const studies::Assessment s =
+        studies::assess_block(views, motions, studies::BlockShape{alpha, given.block.p, given.label}, o);
+    std::vector<std::string> names;
+    for (const records::Record& r : records) names.push_back(r.name);
+    if (a.json) print_json(files, names, given, s, o);
+    else print_text(files, names, given, s, o);
     return 0;
 }
 

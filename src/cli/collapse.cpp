@@ -3,11 +3,13 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "cli/geometry.hpp"
 #include "cli/options.hpp"
 #include "records/collapse.hpp"
 #include "harness/table.hpp"
@@ -17,13 +19,22 @@ namespace rocking::cli {
 
 int cmd_collapse(int argc, char** argv) {
     using namespace rocking::dynamics;
-    const std::string path = file_argument(argc, argv, 2, "usage: rocking collapse FILE --alpha A [options]");
+    const std::string path =
+        file_argument(argc, argv, 2, "usage: rocking collapse FILE (--alpha A | --thickness B --height H) [options]");
     const Args a = parse(argc, argv, 3,
-                         {"--alpha", "--model", "--solver", "--criterion", "--restitution", "--rtol", "--atol", "--unit", "--dt"});
-    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
-    const double alpha = number("--alpha", a.values.at("--alpha"));
+                         {"--alpha", "--thickness", "--height", "--half-height", "--model", "--solver", "--criterion",
+                          "--restitution", "--rtol", "--atol", "--unit", "--dt", "--floor"});
+    // The search is over p: of a block given as built only its alpha counts,
+    // and its own p is printed beside the search's.
+    std::optional<GivenBlock> given;
+    if (a.values.count("--thickness")) given = block_option(a);
+    else if (a.values.count("--height") || a.values.count("--half-height"))
+        throw UsageError("--height and --half-height go with --thickness here: the search is over p, alpha alone is --alpha");
+    else if (!a.values.count("--alpha")) throw UsageError("give --alpha A, or the block as --thickness B --height H (m)");
+    const double alpha = given ? given->block.alpha : number("--alpha", a.values.at("--alpha"));
+    const std::string alpha_text = given ? significant(alpha, 6) + " (atan(B/H))" : a.values.at("--alpha");
     if (!studies::in_search_alpha_range(alpha))
-        throw UsageError("--alpha: must be in " + std::string(studies::kSearchAlphaRange) + " (got " + a.values.at("--alpha") + ")");
+        throw UsageError("--alpha: must be in " + std::string(studies::kSearchAlphaRange) + " (got " + alpha_text + ")");
     records::CollapseOptions o;
     if (a.values.count("--model")) {
         const std::string m = a.values.at("--model");
@@ -37,11 +48,7 @@ int cmd_collapse(int argc, char** argv) {
         throw UsageError(e.what());
     }
     tolerance_options(a.values, alpha, o.solver);
-    if (a.values.count("--restitution")) {
-        const double e = restitution_option(a.values.at("--restitution"));
-        o.housner_restitution = std::isnan(e);
-        if (!o.housner_restitution) o.restitution = e;
-    }
+    restitution_into(a, o);
     if (o.equation == Equation::full && o.solver.kind == SolverKind::exact)
         throw UsageError("the exact solver handles the linearised equation only");
     const records::Record r = load_record(path, a);
@@ -54,7 +61,9 @@ int cmd_collapse(int argc, char** argv) {
                   << ", \"p\": " << (c.found ? json_number(c.p) : std::string("null"))
                   << ", \"p_safe\": " << (c.found && !c.below_range() ? json_number(c.p_safe) : std::string("null"))
                   << ", \"below_range\": " << (c.below_range() ? "true" : "false") << ", \"simulations\": " << c.simulations
-                  << ", \"search\": " << json_string(o.describe()) << "}\n";
+                  << ", \"search\": " << json_string(o.describe());
+        if (given) std::cout << ", \"block_p\": " << json_number(given->block.p) << ", " << block_json(*given);
+        std::cout << "}\n";
     } else {
         if (c.below_range())
             std::printf("p <= %.6f rad/s: %s overturns the block (alpha = %g) already at the search's lowest "
@@ -79,6 +88,11 @@ int cmd_collapse(int argc, char** argv) {
             else std::printf("no collapse for p up to %g rad/s\n", o.p_max);
         }
         std::printf("  %s; %d simulations\n", o.describe().c_str(), c.simulations);
+        if (given)
+            std::printf("  the block: %s; whether this record overturns it at its own p: rocking simulate --record "
+                        "FILE --thickness %s --height %s\n",
+                        describe_block(*given).c_str(), significant(given->thickness, 6).c_str(),
+                        significant(given->height, 6).c_str());
     }
     return 0;
 }

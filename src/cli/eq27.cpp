@@ -24,6 +24,7 @@
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
 #include "cli/options.hpp"
+#include "cli/plots.hpp"
 #include "harness/table.hpp"
 #include "jobs/fragility_plan.hpp"
 #include "studies/eq27_at_scale.hpp"
@@ -40,7 +41,7 @@ using studies::kHalfPeriods;
 const char* kUsage =
     "usage: rocking eq27 FILE... [--alpha A,...] [--p-min P] [--p-max P] [--p-points N] [--q-max Q] "
     "[--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] "
-    "[--output CSV] [--json] [--quiet]";
+    "[--output CSV] [--png PNG] [--json] [--quiet]";
 
 using studies::Eq27ByCapacity;
 using studies::kEq27FirstOverturningNote;
@@ -103,6 +104,7 @@ studies::Eq27Options options_from(const Args& a) {
     if (m.refine) o.ida.method = studies::IdaOptions::Method::refine;
     o.ida.width = m.width;
     o.ida.robust_width = m.robust_width;
+    restitution_into(a, o.ida.model);
     // As rocking fragility's: no bootstrap unless asked, and then from a stated seed.
     const Bootstrap b = bootstrap_options(a);
     o.bootstrap.resamples = b.resamples;
@@ -127,12 +129,13 @@ Command command_from(int argc, char** argv, bool mpi) {
     int first = 0;
     c.files = file_arguments(count, args.data(), first, kUsage);
     c.args = parse(count, args.data(), first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
-                                               "--seed", "--unit", "--dt", "--jobs", "--output",
-                                               "--method", "--width", "--robust-width"});
+                                               "--seed", "--unit", "--dt", "--floor", "--restitution", "--jobs", "--output",
+                                               "--method", "--width", "--robust-width", "--png"});
     c.study = options_from(c.args);
     c.blocks = c.study.grid.blocks();
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
-    check_outputs(c.args, {"--output"}, c.files);
+    check_outputs(c.args, {"--output", "--png"}, c.files);
+    require_gnuplot(c.args);
     set_threads_and_flush(c.engine, c.args, mpi);
     c.engine.command = "rocking eq27";
     c.engine.jobs_from = "study";
@@ -429,6 +432,7 @@ int cmd_eq27(int argc, char** argv) {
         studies::eq27_by_capacity(points, l.to, identities, c.blocks, c.study.level, c.study.bootstrap);
     const Args& a = c.args;
     if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, s);
+    if (a.values.count("--png")) write_eq27_png(a.values.at("--png"), c.files, c.study, s, l.to);
     if (a.json) print_json(c.files, c.study, s);
     else print_text(c.files, c.study, s);
     return 0;

@@ -19,8 +19,10 @@
 #include "batch/ranks.hpp"
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
+#include "cli/geometry.hpp"
 #include "cli/nrml_output.hpp"
 #include "cli/options.hpp"
+#include "cli/plots.hpp"
 #include "cli/set_words.hpp"
 #include "harness/table.hpp"
 #include "jobs/fragility_plan.hpp"
@@ -38,7 +40,7 @@ using studies::IdaInterval;
 const char* kUsage =
     "usage: rocking fragility FILE... --alpha A[,A...] --p P[,P...] [--q-max Q] [--points N] "
     "[--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S] [--unit U [--dt DT]] [--jobs N] "
-    "[--output CSV] [--nrml XML] [--json] [--rows FILE [--resume]] [--quiet]";
+    "[--output CSV] [--fits CSV] [--png PNG] [--nrml XML] [--json] [--rows FILE [--resume]] [--quiet]";
 
 std::string g7(double v) { return significant(v, 7); }
 
@@ -66,6 +68,7 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     o.resamples = b.resamples;
     o.seed = b.seed;
     o.threads = jobs_option(a);
+    restitution_into(a, o.ida.model);
     return o;
 }
 
@@ -170,7 +173,8 @@ void print_text(const std::vector<std::string>& files, const studies::FragilityS
                 grid_note(o).c_str());
     if (refined(o)) std::printf("  refine: %s\n", o.describe_fits().c_str());
     for (const BlockFragility& f : study) {
-        std::printf("alpha = %g, p = %g rad/s:\n", f.block.alpha, f.block.p);
+        std::printf("alpha = %g, p = %g rad/s%s:\n", f.block.alpha, f.block.p,
+                    f.block.built.empty() ? "" : (" (block " + f.block.built + " m)").c_str());
         for (std::size_t k = 0; k < files.size(); ++k) {
             std::printf("  %s: %s; overturns for q in %s\n", files[k].c_str(), point_text(f.idas[k]).c_str(),
                         interval_list(f.idas[k]).c_str());
@@ -274,6 +278,7 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
     for (std::size_t b = 0; b < study.size(); ++b) {
         const BlockFragility& f = study[b];
         js << (b ? ", " : "") << "{\"alpha\": " << json_number(f.block.alpha) << ", \"p\": " << json_number(f.block.p)
+           << (f.block.built.empty() ? "" : ", \"built\": " + json_string(f.block.built))
            << ", \"records\": [";
         for (std::size_t k = 0; k < files.size(); ++k) {
             const Ida& ida = f.idas[k];
@@ -341,7 +346,8 @@ void write_csv(const std::string& csv, const std::vector<std::string>& files, co
                               "share (q:share), where above 0");
     }
     for (const BlockFragility& f : study) {
-        const std::string block = "alpha " + g7(f.block.alpha) + ", p " + g7(f.block.p);
+        const std::string block = "alpha " + g7(f.block.alpha) + ", p " + g7(f.block.p) +
+                                  (f.block.built.empty() ? "" : " (block " + f.block.built + " m)");
         t.note("fit at " + block, fit_text(f));
         t.note("empirical at " + block, empirical_text(f));
         if (!f.three_ways) continue;
@@ -382,26 +388,31 @@ Command command_from(int argc, char** argv, bool mpi) {
     const int count = static_cast<int>(args.size());
     int first = 0;
     c.files = file_arguments(count, args.data(), first, kUsage);
-    c.args = parse(count, args.data(), first, {"--alpha", "--p", "--q-max", "--points", "--bootstrap", "--seed", "--unit",
+    c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit", "--floor", "--restitution",
                                                "--dt", "--jobs", "--output", "--rows", "--method", "--width",
-                                               "--robust-width", "--nrml"});
+                                               "--robust-width", "--png", "--fits", "--nrml"});
     const Args& a = c.args;
-    const std::vector<double> alphas = list_in(a, "--alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange);
-    const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
-    refuse_repeated_values("--alpha", alphas);
-    refuse_repeated_values("--p", ps);
+    if (a.values.count("--block")) {
+        c.blocks = study_blocks(a);
+    } else {
+        const std::vector<double> alphas = list_in(a, "--alpha", 0, studies::kSearchAlphaMax, studies::kSearchAlphaRange);
+        const std::vector<double> ps = list_in(a, "--p", 0.01, 1000, "(0.01, 1000) rad/s");
+        refuse_repeated_values("--alpha", alphas);
+        refuse_repeated_values("--p", ps);
+        for (double alpha : alphas)
+            for (double p : ps) c.blocks.push_back({alpha, p, ""});
+    }
     c.study = options_from(a);
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
-    check_outputs(a, {"--output", "--rows", "--nrml"}, c.files);
-    refuse_engine_files_over(a, "--rows", {"--output", "--nrml"}, c.files);
+    check_outputs(a, {"--output", "--rows", "--fits", "--png", "--nrml"}, c.files);
+    refuse_engine_files_over(a, "--rows", {"--output", "--fits", "--png", "--nrml"}, c.files);
+    require_gnuplot(a);
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
         throw UsageError("--resume needs --rows FILE: the IDAs of an interrupted study are resumed from that file");
     set_threads_and_flush(c.engine, a, mpi);
     c.engine.command = "rocking fragility";
     c.engine.jobs_from = "study";
-    for (double alpha : alphas)
-        for (double p : ps) c.blocks.push_back({alpha, p});
     return c;
 }
 
@@ -481,6 +492,8 @@ int cmd_fragility(int argc, char** argv) {
         [&](std::size_t b, BlockFragility& f) { study[b] = std::move(f); });
     const Args& a = c.args;
     if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, study);
+    if (a.values.count("--fits")) write_fragility_fits(a.values.at("--fits"), c.files, c.study, study);
+    if (a.values.count("--png")) write_fragility_png(a.values.at("--png"), c.files, c.study, study);
     if (a.values.count("--nrml")) write_nrml(a.values.at("--nrml"), c.files, c.study, study);
     if (a.json) print_json(c.files, c.study, study);
     else print_text(c.files, c.study, study);

@@ -10,6 +10,8 @@
 
 #include "batch/pool.hpp"
 #include "cli/options.hpp"
+
+#include "records/floor_motion.hpp"
 #include "harness/output_paths.hpp"
 #include "studies/overturning_set.hpp"
 #include "harness/table.hpp"
@@ -426,7 +428,9 @@ std::string json_number(double v) { return std::isfinite(v) ? harness::format_nu
 // states its own unit and step (ESM, AT2) is read as it says, with them or without, in
 // every command alike, so that `record info r.AT2 --dt 0.01` reads r.AT2 as fragility and
 // eq27 read it beside a text record; only a plain-text file needs --unit.
-records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag) {
+namespace {
+
+records::Record read_ground(const std::string& path, const Args& a, const std::string& dt_flag) {
     if (!a.values.count("--unit") && !a.values.count(dt_flag)) return records::read_any(path);
     if (a.values.count("--unit")) {
         const std::string& unit = a.values.at("--unit");
@@ -442,6 +446,37 @@ records::Record load_record(const std::string& path, const Args& a, const std::s
     if (records::states_its_units(text)) return records::parse_any(text, path);
     throw UsageError("--unit is required for a plain-text record (g, m/s2, cm/s2), as " + path + " is (" + dt_flag +
                      " sets its step, and applies to plain-text records only)");
+}
+
+}  // namespace
+
+// --floor T1,G[,zeta] (issue 40): the floor's motion of the building's first
+// mode in place of the ground's, the record's name stating the model, so that
+// every output that names its input names the floor.
+void restitution_into(const Args& a, records::CollapseOptions& model) {
+    if (!a.values.count("--restitution")) return;
+    const double e = restitution_option(a.values.at("--restitution"));
+    model.housner_restitution = std::isnan(e);
+    if (!model.housner_restitution) model.restitution = e;
+}
+
+records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag) {
+    records::Record ground = read_ground(path, a, dt_flag);
+    if (!a.values.count("--floor")) return ground;
+    records::FloorModel m;
+    try {
+        m = records::parse_floor_model(a.values.at("--floor"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError("--floor: " + std::string(e.what()) + " (T1,G[,zeta]: the building's first period in s, the "
+                         "floor's participation Gamma phi, the damping ratio)");
+    }
+    try {
+        return records::floor_record(ground, m);
+    } catch (const std::overflow_error& e) {
+        throw std::runtime_error(path + ": --floor " + a.values.at("--floor") + ": " + e.what());
+    } catch (const std::invalid_argument& e) {
+        throw UsageError("--floor " + a.values.at("--floor") + " on " + path + ": " + e.what());
+    }
 }
 
 }  // namespace rocking::cli

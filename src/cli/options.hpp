@@ -12,6 +12,7 @@
 #include "harness/table.hpp"
 #include "pulse/pulse_train.hpp"
 #include "dynamics/simulate.hpp"
+#include "records/collapse.hpp"
 #include "records/measures.hpp"
 #include "records/record.hpp"
 #include "qfactor/superposition.hpp"
@@ -32,6 +33,8 @@ struct Args {
 // it ignored; finite, normal or 0), its problem a UsageError naming the flag.
 double number(const std::string& flag, const std::string& text);
 double restitution_option(const std::string& text);
+// --restitution E|housner into a study's model (default: Housner's, Table 1's).
+void restitution_into(const Args& a, records::CollapseOptions& model);
 std::string smallest_tolerance();
 double rtol_option(const std::string& text);
 void tolerance_options(const std::map<std::string, std::string>& values, double alpha,
@@ -112,6 +115,7 @@ int cmd_record(int argc, char** argv);
 int cmd_collapse(int argc, char** argv);
 int cmd_assess(int argc, char** argv);
 int cmd_record_synth(int argc, char** argv);  // rocking record synth (synth.cpp)
+int cmd_record_floor(int argc, char** argv);  // rocking record floor (floor.cpp)
 int cmd_spectrum(int argc, char** argv);
 int cmd_fragility(int argc, char** argv);
 int cmd_eq27(int argc, char** argv);

@@ -1,5 +1,6 @@
 // rocking record info: a record's PGA, PGV and its eleven half-periods;
-// rocking record synth (synth.cpp): a synthetic record.
+// rocking record synth (synth.cpp): a synthetic record; rocking record floor
+// (floor.cpp): a floor's motion from a ground record.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -16,6 +17,7 @@ namespace rocking::cli {
 
 int cmd_record(int argc, char** argv) {
     if (argc > 2 && std::string(argv[2]) == "synth") return cmd_record_synth(argc, argv);
+    if (argc > 2 && std::string(argv[2]) == "floor") return cmd_record_floor(argc, argv);
     if (argc < 4 || std::string(argv[2]) != "info") throw UsageError("usage: rocking record info FILE [--json]");
     const std::string path = file_argument(argc, argv, 3, "usage: rocking record info FILE [--json]");
     const Args a = parse(argc, argv, 4, {"--unit", "--dt"});

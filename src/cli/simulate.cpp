@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/geometry.hpp"
 #include "cli/options.hpp"
 #include "dynamics/ground_input.hpp"
 #include "qfactor/closed_forms.hpp"
@@ -39,32 +40,33 @@ void check_output_rows(const dynamics::Model& model, const dynamics::GroundInput
 int cmd_simulate(int argc, char** argv) {
     using namespace rocking::dynamics;
     // --one-sine takes no value: handle it before the generic parser.
+    // --one-sine and --paper take no value: handle them before the generic parser.
     std::vector<char*> args(argv, argv + argc);
-    bool one_sine = false;
+    bool one_sine = false, paper = false;
     for (auto it = args.begin() + 2; it != args.end();)
         if (std::string(*it) == "--one-sine") one_sine = true, it = args.erase(it);
+        else if (std::string(*it) == "--paper") paper = true, it = args.erase(it);
         else ++it;
-    const Args a = parse(static_cast<int>(args.size()), args.data(), 2,
-                         {"--case", "--train", "--pulses", "--x", "--to", "--pga", "--q", "--rd", "--ap", "--wp",
-                          "--alpha", "--p", "--half-height", "--height", "--model", "--solver", "--rtol", "--atol", "--criterion",
-                          "--restitution", "--output", "--dt", "--record", "--unit", "--record-dt"});
+    std::vector<std::string> allowed = {"--case", "--train", "--pulses", "--x", "--to", "--pga", "--q", "--rd", "--ap",
+                                        "--wp", "--model", "--solver", "--rtol", "--atol", "--criterion", "--restitution",
+                                        "--output", "--dt", "--record", "--unit", "--record-dt", "--floor"};
+    allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
+    const Args a = parse(static_cast<int>(args.size()), args.data(), 2, allowed);
     auto has = [&](const char* f) { return a.values.count(f) > 0; };
     auto num = [&](const char* f) { return number(f, a.values.at(f)); };
-    if (!has("--alpha")) throw UsageError("--alpha is required");
-    const double alpha = num("--alpha");
-    const int geometry = has("--p") + has("--half-height") + has("--height");
-    if (geometry != 1) throw UsageError("give exactly one of --p, --half-height and --height");
+    const GivenBlock given = block_option(a);
+    const double alpha = given.alpha;
     Model model;
-    try {
-        model.block = has("--p") ? Block::from_p(num("--p"), alpha)
-                                 : has("--half-height") ? Block::from_half_height(num("--half-height"), alpha)
-                                                        : Block::from_full_height(num("--height"), alpha);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(e.what());
-    }
+    model.block = given.block;
     const std::string model_name = has("--model") ? a.values.at("--model") : "linearised";
     if (model_name == "full") model.equation = Equation::full;
     else if (model_name != "linearised") throw UsageError("--model: linearised or full (got " + model_name + ")");
+    // One model by default (issue 40): Housner's restitution and overturning,
+    // as the studies; --paper is the paper's Section 3 setting.
+    if (paper && (has("--restitution") || has("--criterion")))
+        throw UsageError("--paper sets restitution 1 and the final-rotation criterion: give it without --restitution "
+                         "and --criterion");
+    model.restitution = paper ? 1.0 : housner_restitution(alpha);
     if (has("--restitution")) {
         const double e = restitution_option(a.values.at("--restitution"));
         model.restitution = std::isnan(e) ? housner_restitution(alpha) : e;
@@ -77,7 +79,7 @@ int cmd_simulate(int argc, char** argv) {
         throw UsageError(std::string("--solver: ") + e.what());
     }
     tolerance_options(a.values, alpha, options.solver);
-    Criterion criterion = Criterion::final_rotation;
+    Criterion criterion = paper ? Criterion::final_rotation : Criterion::overturning;
     try {
         if (has("--criterion")) criterion = parse_criterion(a.values.at("--criterion"));
     } catch (const std::invalid_argument& e) {
@@ -88,8 +90,8 @@ int cmd_simulate(int argc, char** argv) {
     std::unique_ptr<GroundInput> input;
     if (one_sine + has("--record") + (has("--case") || has("--train")) != 1)
         throw UsageError("give exactly one input: --case or --train, --one-sine, or --record");
-    if (!has("--record") && (has("--unit") || has("--record-dt")))
-        throw UsageError("--unit and --record-dt go with --record");
+    if (!has("--record") && (has("--unit") || has("--record-dt") || has("--floor")))
+        throw UsageError("--unit, --record-dt and --floor go with --record");
     if (has("--record")) {
         for (const char* f : {"--rd", "--to", "--x", "--pulses", "--ap", "--wp"})
             if (has(f)) throw UsageError(std::string(f) + " does not apply to --record");
@@ -148,7 +150,7 @@ int cmd_simulate(int argc, char** argv) {
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
     refuse_unresolvable_run(model.block.p, input->t_end(), a,
-                            {"--record-dt", "--to", "--wp", "--x", "--p", "--half-height", "--height"},
+                            {"--record-dt", "--to", "--wp", "--x", "--p", "--half-height", "--height", "--thickness"},
                             has("--record") ? a.values.at("--record") : "the input");
     if (has("--output")) check_output_rows(model, *input, options);
     check_outputs(a, {"--output"}, has("--record") ? std::vector<std::string>{a.values.at("--record")} : std::vector<std::string>{},
@@ -175,7 +177,9 @@ int cmd_simulate(int argc, char** argv) {
     const bool lifts = input->peak() > model.uplift_threshold();
     if (a.json) {
         auto b = [](bool v) { return v ? "true" : "false"; };
-        std::cout << "{\"model\": " << json_string(model.describe()) << ", \"input\": " << json_string(input->describe())
+        std::cout << "{\"model\": " << json_string(model.describe()) << ", \"preset\": " << (paper ? "\"paper\"" : "\"physical\"")
+                  << ", \"alpha\": " << json_number(alpha) << ", \"p\": " << json_number(model.block.p) << ", "
+                  << block_json(given) << ", \"input\": " << json_string(input->describe())
                   << ", \"solver\": " << json_string(solver_name(options.solver.kind))
                   << ", \"rtol\": " << json_number(options.solver.rtol)
                   << ", \"atol_rad\": " << json_number(options.solver.atol_alpha * alpha)
@@ -193,8 +197,9 @@ int cmd_simulate(int argc, char** argv) {
                   << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
     } else {
         std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
-        std::printf("  model:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(), input->describe().c_str(),
-                    solver_name(options.solver.kind).c_str(), tolerance.c_str());
+        std::printf("  model:  %s%s\n  block:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(),
+                    paper ? " (--paper: the paper's setting)" : "", describe_block(given).c_str(),
+                    input->describe().c_str(), solver_name(options.solver.kind).c_str(), tolerance.c_str());
         // A block that fell during the input has no theta(t_fin) to print: it lies on the ground.
         if (r.overturned_during_input)
             std::printf("  fell at t = %.10g s, before t_fin = %g s: |theta| reached the fall angle, %.10g alpha\n",

@@ -1,14 +1,12 @@
 // rocking spectrum: the rocking spectrum of a record (studies/spectrum.hpp)
 // for one or more alpha, its overturning intervals in p beside Table 1's
-// first collapse, as text or JSON, with the grid as CSV and a PNG.
-#include <unistd.h>
-
+// first collapse, as text or JSON, with the grid as CSV and a PNG
+// (plot_spectrum.cpp).
 #include <cmath>
 #include <cstdio>
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -21,13 +19,15 @@
 #include "batch/ranks.hpp"
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
+#include "cli/geometry.hpp"
 #include "cli/options.hpp"
+#include "cli/plots.hpp"
 #include "cli/set_words.hpp"
-#include "harness/plot_file.hpp"
 #include "harness/table.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
 #include "studies/spectrum.hpp"
+#include "studies/spectrum_mark.hpp"
 #include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
@@ -79,6 +79,7 @@ SpectrumOptions grid_from(const Args& a) {
     if (m.refine) o.method = SpectrumOptions::Method::refine;
     o.width = m.width;
     o.robust_width = m.robust_width;
+    restitution_into(a, o.model);
     return o;
 }
 
@@ -162,7 +163,7 @@ std::string refine_lines(const Spectrum& sp) {
 constexpr std::size_t kIntervalsShown = 20;
 
 void print_text(const std::string& path, const records::Record& r, const SpectrumOptions& o,
-                const std::vector<Study>& studies) {
+                const std::vector<Study>& studies, const std::vector<studies::SpectrumMark>& marks) {
     std::printf("%s: rocking spectrum of %s (%zu samples, dt = %g s, PGA %.4f g)\n", r.name.c_str(), path.c_str(),
                 r.accel.size(), r.dt, r.pga() / dynamics::kGravity);
     std::printf("  model: %s\n  grid: %s\n  %s\n", o.describe_model().c_str(), grid_text(o).c_str(),
@@ -190,6 +191,7 @@ void print_text(const std::string& path, const records::Record& r, const Spectru
                     table1_remark(s).c_str());
         std::printf("  %ld simulations, %ld by the second solver\n", sp.simulations, sp.check_simulations);
     }
+    for (const studies::SpectrumMark& m : marks) std::printf("marked: %s\n", studies::describe_mark(m).c_str());
 }
 
 std::string boundary_json(const Interval& in, bool lower) {
@@ -223,7 +225,7 @@ std::string refine_json(const Spectrum& sp) {
 }
 
 void print_json(const std::string& path, const records::Record& r, const SpectrumOptions& o,
-                const std::vector<Study>& studies) {
+                const std::vector<Study>& studies, const std::vector<studies::SpectrumMark>& marks) {
     std::ostringstream js;
     js << "{\"file\": " << json_string(path) << ", \"name\": " << json_string(r.name)
        << ", \"samples\": " << r.accel.size() << ", \"dt\": " << json_number(r.dt)
@@ -264,6 +266,21 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
         }
         js << "]}";
     }
+    js << "], \"marks\": [";
+    auto side = [](const studies::SpectrumFirst& f, double h) {
+        return f.found ? "{\"found\": true, \"p\": " + json_number(f.p) + ", \"height\": " + json_number(h) + "}"
+                       : std::string("{\"found\": false}");
+    };
+    for (std::size_t k = 0; k < marks.size(); ++k) {
+        const studies::SpectrumMark& m = marks[k];
+        js << (k ? ", " : "") << "{\"built\": " << json_string(m.block.built) << ", \"alpha\": " << json_number(m.block.alpha)
+           << ", \"p\": " << json_number(m.block.p)
+           << ", \"height\": " << json_number(studies::height_at_p(m.block.alpha, m.block.p))
+           << ", \"overturns\": " << (m.overturns ? "true" : "false") << ", \"in_set\": " << (m.in_set ? "true" : "false")
+           << ", \"nearest_below\": " << side(m.below, m.height_below)
+           << ", \"nearest_above\": " << side(m.above, m.height_above) << ", \"text\": " << json_string(describe_mark(m))
+           << "}";
+    }
     js << "]}\n";
     std::cout << js.str();
 }
@@ -276,7 +293,7 @@ std::string intervals_note(const Spectrum& sp) {
 }
 
 void write_csv(const std::string& csv, const std::string& path, const records::Record& r, const SpectrumOptions& o,
-               const std::vector<Study>& studies) {
+               const std::vector<Study>& studies, const std::vector<studies::SpectrumMark>& marks) {
     harness::Table t({"alpha", "p", "grid", "max_theta_over_alpha", "final_rotation", "peak_rotation", "overturning",
                       "t_overturn"});
     t.note("command", "rocking spectrum");
@@ -288,6 +305,7 @@ void write_csv(const std::string& csv, const std::string& path, const records::R
     t.note("columns", "p in rad/s; max |theta|/alpha during the input; collapse under each criterion; t_overturn in s, "
                       "'-' where the block does not overturn or is taken to overturn by its energy");
     if (refined(o)) t.note("refine", o.describe_guarantee());
+    for (const studies::SpectrumMark& m : marks) t.note("marked", studies::describe_mark(m));
     for (const Study& s : studies) {
         t.note("intervals at alpha " + g7(s.spectrum.alpha), intervals_note(s.spectrum));
         t.note("Table 1's p at alpha " + g7(s.spectrum.alpha), table1_text(s.table1));
@@ -308,118 +326,11 @@ void write_csv(const std::string& csv, const std::string& path, const records::R
     write_output(t, csv);
 }
 
-// A string in a gnuplot script: single quotes, inner ones doubled, and only
-// printable ASCII (a name's control bytes or invalid UTF-8 must not reach the
-// script or cairo).
-std::string gp_string(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) {
-        if (c == '\'') out += "''";
-        else out += (c >= 0x20 && c < 0x7F) ? c : '?';
-    }
-    return out + "'";
-}
-
-std::string shell_quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-// A temporary file of ours, removed when it goes out of scope.
-struct TempFile {
-    std::string path;
-    explicit TempFile(const std::string& stem) {
-        std::string pattern = (std::filesystem::temp_directory_path() / (stem + ".XXXXXX")).string();
-        const int fd = mkstemp(pattern.data());
-        if (fd < 0) throw std::runtime_error("--png: cannot create a temporary file in " +
-                                             std::filesystem::temp_directory_path().string());
-        close(fd);
-        path = pattern;
-    }
-    ~TempFile() { std::remove(path.c_str()); }
-};
-
-std::string plot_script(const std::string& data, const std::string& png, const records::Record& r,
-                        const SpectrumOptions& o, const std::vector<Study>& studies) {
-    std::ostringstream gp;
-    gp << "set terminal pngcairo size 1100," << 120 + 300 * studies.size() << " font 'DejaVu Sans,11'\n"
-       << "set output " << gp_string(png) << "\n"
-       << "set datafile separator ','\n"
-       << "set multiplot layout " << studies.size() << ",1 title " << gp_string("Rocking spectrum: " + r.name)
-       << " noenhanced\n"
-       << "set logscale xy\nset grid\nset xrange [" << g7(o.p_min) << ":" << g7(o.p_max) << "]\n"
-       << "set yrange [1e-3:*]\nset xlabel 'p [rad/s]'\nset ylabel 'max |θ|/α during the input'\n"
-       << "set key outside right top\n";
-    for (std::size_t k = 0; k < studies.size(); ++k) {
-        const Study& s = studies[k];
-        gp << "unset object\nunset arrow\n";
-        int n = 0;
-        for (const Interval& in : s.spectrum.intervals)
-            gp << "set object " << ++n << " rect from " << g7(in.from) << ", graph 0 to " << g7(in.to)
-               << ", graph 1 fc rgb '#e06060' fs transparent solid 0.3 noborder behind\n";
-        gp << "set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb 'gray40'\n";
-        if (s.table1.found)
-            gp << "set arrow 2 from " << g7(s.table1.p) << ", graph 0 to " << g7(s.table1.p)
-               << ", graph 1 nohead lw 2 dt 2 lc rgb 'blue'\n";
-        gp << "set title " << gp_string("alpha = " + g7(s.spectrum.alpha) + ": " + std::to_string(s.spectrum.intervals.size()) +
-                                        " overturning interval(s)")
-           << " noenhanced\n"
-           << "plot " << gp_string(data) << " index " << k << " using 1:($2 > 1e-3 ? $2 : 1e-3) with lines lw 2 lc rgb 'black' "
-           << "title 'max |θ|/α (1e-3 where below)', NaN with boxes fs transparent solid 0.3 lc rgb '#e06060' "
-           << "title 'overturning', NaN with lines lw 2 dt 2 lc rgb 'blue' title \"Table 1's p\"\n";
-    }
-    gp << "unset multiplot\n";
-    return gp.str();
-}
-
-void write_png(const std::string& png, const records::Record& r, const SpectrumOptions& o,
-               const std::vector<Study>& studies) {
-    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
-        throw std::runtime_error("--png " + png + ": gnuplot is not installed (make deps)");
-    const TempFile data("rocking-spectrum-data"), script("rocking-spectrum-gp"), log("rocking-spectrum-log");
-    {
-        std::ofstream out(data.path);
-        for (std::size_t k = 0; k < studies.size(); ++k) {
-            if (k) out << "\n\n";  // gnuplot's index: blocks split by two blank lines
-            for (const studies::SpectrumPoint& pt : studies[k].spectrum.points)
-                out << harness::format_number(pt.p) << "," << harness::format_number(pt.max_theta) << "\n";
-        }
-        if (!out.flush()) throw std::runtime_error("--png " + png + ": cannot write the plot's data to " + data.path);
-    }
-    std::unique_ptr<harness::PlotFile> file;
-    try {
-        file = std::make_unique<harness::PlotFile>(png);
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(std::string("--png: ") + e.what());
-    }
-    {
-        std::ofstream out(script.path);
-        out << plot_script(data.path, file->draw_name(), r, o, studies);
-        if (!out.flush()) throw std::runtime_error("--png " + png + ": cannot write the plot's script to " + script.path);
-    }
-    // gnuplot runs in the folder it draws in and names the file by its plain name:
-    // the target's own name never reaches the script (PlotFile::draw_name).
-    const std::string cmd = "cd " + shell_quote(file->draw_folder()) + " && gnuplot " + shell_quote(script.path) +
-                            " 2>" + shell_quote(log.path);
-    if (std::system(cmd.c_str()) != 0) {
-        std::ifstream in(log.path);
-        std::string first, line;
-        while (std::getline(in, line))
-            if (!line.empty()) first += (first.empty() ? "" : " | ") + line;
-        throw std::runtime_error("--png " + png + ": gnuplot failed: " + first.substr(0, 400));
-    }
-    try {
-        file->commit();
-    } catch (const std::runtime_error& e) {
-        throw std::runtime_error(std::string("--png: ") + e.what());
-    }
-}
-
 struct Command {
     std::string path;
     Args args;
     std::vector<double> alphas;
+    std::vector<studies::BlockShape> marks;  // --mark: the engineer's blocks, each on its alpha's spectrum
     SpectrumOptions grid;
     batch::EngineOptions engine;
 };
@@ -429,13 +340,22 @@ Command command_from(int argc, char** argv, bool mpi) {
     std::vector<char*> args = without_engine_switches(argc, argv, c.engine.resume, c.engine.quiet);
     const int count = static_cast<int>(args.size());
     c.path = file_argument(count, args.data(), 2, kUsage);
-    c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--jobs",
-                                           "--output", "--png", "--rows", "--method", "--width", "--robust-width"});
+    c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--floor", "--restitution", "--jobs",
+                                           "--output", "--png", "--rows", "--method", "--width", "--robust-width",
+                                           "--mark"});
     const Args& a = c.args;
-    if (!a.values.count("--alpha")) throw UsageError("--alpha is required");
-    c.alphas = alphas_from(a.values.at("--alpha"));
+    if (!a.values.count("--alpha") && !a.values.count("--mark"))
+        throw UsageError("--alpha is required, or --mark BxH for the alphas of the blocks marked");
+    if (a.values.count("--alpha")) c.alphas = alphas_from(a.values.at("--alpha"));
+    if (a.values.count("--mark")) {
+        c.marks = study_blocks(a, "--mark");
+        for (const studies::BlockShape& b : c.marks)
+            if (std::find(c.alphas.begin(), c.alphas.end(), b.alpha) == c.alphas.end()) c.alphas.push_back(b.alpha);
+        if (c.alphas.size() > 20) throw UsageError("--alpha and --mark: at most 20 alphas in all");
+    }
     c.grid = grid_from(a);
     check_outputs(a, {"--output", "--png", "--rows"}, {c.path});
+    require_gnuplot(a);
     refuse_engine_files_over(a, "--rows", {"--output", "--png"}, {c.path});
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
@@ -488,11 +408,15 @@ int cmd_spectrum(int argc, char** argv) {
 
     std::vector<Study> studies;
     for (std::size_t k = 0; k < rows.size(); ++k) studies.push_back(jobs::study_from_row(rows[k], k, jobs));
+    std::vector<studies::SpectrumMark> marks;
+    for (const studies::BlockShape& b : c.marks)
+        for (const Study& st : studies)
+            if (st.spectrum.alpha == b.alpha) marks.push_back(studies::mark_block(*input, st.spectrum, b, c.grid));
     const Args& a = c.args;
-    if (a.values.count("--output")) write_csv(a.values.at("--output"), c.path, *r, c.grid, studies);
-    if (a.values.count("--png")) write_png(a.values.at("--png"), *r, c.grid, studies);
-    if (a.json) print_json(c.path, *r, c.grid, studies);
-    else print_text(c.path, *r, c.grid, studies);
+    if (a.values.count("--output")) write_csv(a.values.at("--output"), c.path, *r, c.grid, studies, marks);
+    if (a.values.count("--png")) write_spectrum_png(a.values.at("--png"), *r, c.grid, studies, marks);
+    if (a.json) print_json(c.path, *r, c.grid, studies, marks);
+    else print_text(c.path, *r, c.grid, studies, marks);
     return 0;
 }
 

@@ -218,15 +218,15 @@ void model_from(const Columns& c, const std::vector<std::string>& row, Job& job)
         job.solver.atol_alpha = in_alpha;
     }
     const std::string& e = c.cell(row, "restitution");
-    // Each kind's command's default: simulate 1, the searches Housner's.
-    job.housner = e.empty() ? job.kind != Kind::simulate : e == "housner";
+    // The commands' one default model (issue 40): Housner's restitution and overturning, every kind.
+    job.housner = e.empty() || e == "housner";
     if (!e.empty() && !job.housner) {
         job.restitution = number("restitution", e);
         if (!(job.restitution >= 0 && job.restitution <= 1))
             bad("restitution", "must be in [0, 1] or housner (got " + e + ")");
     }
     const std::string& criterion = c.cell(row, "criterion");
-    job.criterion = job.kind == Kind::simulate ? dynamics::Criterion::final_rotation : dynamics::Criterion::overturning;
+    job.criterion = dynamics::Criterion::overturning;
     if (!criterion.empty()) {
         try {
             job.criterion = dynamics::parse_criterion(criterion);

@@ -53,7 +53,7 @@ std::vector<BlockShape> Eq27Grid::blocks() const {
     std::vector<BlockShape> out;
     const std::vector<double> p = ps();
     for (double a : alphas)
-        for (double pi : p) out.push_back({a, pi});
+        for (double pi : p) out.push_back({a, pi, ""});
     return out;
 }
 

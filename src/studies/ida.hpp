@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dynamics/ground_input.hpp"
@@ -115,6 +116,10 @@ Ida incremental_dynamic_analysis(const dynamics::GroundInput& input, double alph
 
 struct BlockShape {
     double alpha = 0, p = 0;
+    std::string built;  // "0.6x4" where given as thickness x height (m), for the outputs; else empty
+    // {alpha, p} as before the name: most blocks have none.
+    BlockShape(double alpha_ = 0, double p_ = 0, std::string built_ = {})
+        : alpha(alpha_), p(p_), built(std::move(built_)) {}
 };
 
 struct FragilityStudyOptions {

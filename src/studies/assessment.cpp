@@ -1,0 +1,93 @@
+#include "studies/assessment.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "qfactor/closed_forms.hpp"
+#include "qfactor/superposition.hpp"
+#include "records/collapse.hpp"
+
+namespace rocking::studies {
+
+std::string AssessOptions::describe() const {
+    IdaOptions ida;
+    ida.model = model;
+    char range[200];
+    std::snprintf(range, sizeof range, "q in [1, %g]", q_max);
+    char p_range[200];
+    std::snprintf(p_range, sizeof p_range, "p in [%g, %g] rad/s", p_min, p_max);
+    char w[40];
+    std::snprintf(w, sizeof w, "%g", width);
+    return ida.describe_model() + "; the scale factors from the IDA over " + range +
+           " and the nearest overturning blocks from the spectrum over " + p_range +
+           ", both by the refine search at w = " + w + " (islands narrower than w may be missed)";
+}
+
+namespace {
+
+RecordAssessment assess_record(const dynamics::SampledInput& input, const records::PeakMotion& m,
+                               const BlockShape& block, const AssessOptions& o) {
+    RecordAssessment a;
+    a.motion = m;
+    a.x = block.p * m.to5;
+    if (!(a.x >= kSmallestX))
+        throw std::invalid_argument("the block's p times the record's to_5 is below 1e-150, where eq. 27 overflows");
+    a.q_eq27 = q2_n6(a.x);
+    a.q_record = m.pga / (block.alpha * dynamics::kGravity);
+    a.ratio = a.q_record / a.q_eq27;
+    a.margin = 1 - a.ratio;
+    a.passes = a.q_record < a.q_eq27;
+
+    const dynamics::SimulationResult run = records::simulate_block(input, block.alpha, block.p, o.model);
+    a.peak_theta_over_alpha = run.max_abs_theta_input / block.alpha;
+    a.overturns = run.collapse(o.model.criterion, block.alpha);
+    a.fell_during_input = run.overturned_during_input;
+
+    IdaOptions ida;
+    ida.model = o.model;
+    ida.q_max = o.q_max;
+    ida.method = IdaOptions::Method::refine;
+    ida.width = o.width;
+    a.ida = incremental_dynamic_analysis(input, block.alpha, block.p, ida);
+    a.scale_first_overturning = a.ida.first_overturning.q / a.q_record;
+    a.scale_first_robust = a.ida.first_robust_collapse.q / a.q_record;
+
+    SpectrumOptions sp;
+    sp.model = o.model;
+    sp.p_min = o.p_min;
+    sp.p_max = o.p_max;
+    sp.method = SpectrumOptions::Method::refine;
+    sp.width = o.width;
+    const Spectrum s = rocking_spectrum(input, block.alpha, sp);
+    a.mark = mark_block(input, s, block, sp);
+    return a;
+}
+
+}  // namespace
+
+Assessment assess_block(const std::vector<const dynamics::SampledInput*>& inputs,
+                        const std::vector<records::PeakMotion>& motions, const BlockShape& block, const AssessOptions& o) {
+    if (inputs.size() != motions.size() || inputs.empty())
+        throw std::invalid_argument("assess_block: one peak motion per input, at least one input");
+    Assessment out;
+    out.block = block;
+    for (std::size_t k = 0; k < inputs.size(); ++k) out.records.push_back(assess_record(*inputs[k], motions[k], block, o));
+    if (inputs.size() < 2) {
+        out.no_fit = "one record: no fragility";
+        return out;
+    }
+    std::vector<IdaPoint> points;
+    for (const RecordAssessment& r : out.records) points.push_back(r.ida.first_overturning);
+    out.no_fit = why_no_maximum(points);
+    if (!out.no_fit.empty()) return out;
+    out.fit = fit_lognormal(points);
+    out.fitted = true;
+    for (RecordAssessment& r : out.records) {
+        r.has_probability = true;
+        r.probability = overturning_probability(out.fit, r.q_record);
+    }
+    return out;
+}
+
+}  // namespace rocking::studies

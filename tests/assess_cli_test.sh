@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# rocking assess (issue 40): each number of its margins seen by another
+# subcommand or recomputed here.  On two shared records and the 0.6 m x 4 m
+# parapet: eq. 27's ratio and margin from its own q's; the run on the record
+# is simulate's; the block overturns at the record scaled by the first
+# overturning's factor and not at its bracket's safe end (simulate --q);
+# the nearest overturning heights are eqs. 2 and 4 at spectrum intervals'
+# ends; the fragility is fragility --block --method refine's fit on the
+# first overturnings, and P(overturn) its lognormal CDF at each record's q.
+# Skipped (77) without the shared records.
+#
+#   tests/assess_cli_test.sh ROCKING
+set -u
+rocking="$1"
+py=/usr/bin/python3
+records="${ROCKING_RECORDS:-$(dirname "$0")/../../shared/records}"
+source "$(dirname "$0")/check_lib.sh"
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+
+a="$records/esm/IT.AQK..HNE.D.20090406.013240.C.ACC.ASC"
+b="$records/esm/IT.NRC..HGE.D.20161030.064018.C.ACC.ASC"
+if [[ ! -f "$a" || ! -f "$b" ]]; then echo "SKIP: shared records folder absent ($records)"; exit 77; fi
+
+check "assess: the check is named" "eq. 27 check FAILS (the record's q is at or above eq. 27's: ratio 1.0026, margin -0.3 %)" \
+    "$rocking" assess "$a" --thickness 0.6 --height 4
+status "assess: a bad width" 2 "$rocking" assess "$a" --thickness 0.6 --height 4 --width 0.5
+check "assess: the block is required" "give the block as --thickness B --height H" "$rocking" assess "$a"
+"$rocking" assess "$a" "$b" --thickness 0.6 --height 4 --json >"$tmp/assess.json" || { echo "FAIL: assess ran"; exit 1; }
+"$rocking" fragility "$a" "$b" --block 0.6x4 --method refine --width 1e-3 --json >"$tmp/fragility.json"
+"$rocking" spectrum "$a" --mark 0.6x4 --method refine --width 1e-3 --json >"$tmp/spectrum.json"
+if $py - "$tmp/assess.json" "$tmp/fragility.json" "$tmp/spectrum.json" "$rocking" "$a" "$b" <<'PY'
+import json, math, subprocess, sys
+d, frag, spec = (json.load(open(f)) for f in sys.argv[1:4])
+rocking, files = sys.argv[4], sys.argv[5:7]
+def sim(path, *args):
+    out = subprocess.run([rocking, "simulate", "--record", path, "--alpha", repr(d["alpha"]), "--p", repr(d["p"]),
+                          *args, "--json"], capture_output=True, check=True).stdout
+    return json.loads(out)
+B, H = 0.6, 4.0
+assert abs(d["alpha"] - math.atan(B / H)) < 1e-15 and d["given"] == "dimensions"
+for r, path in zip(d["records"], files):
+    assert r["file"] == path
+    assert r["ratio"] == r["q_record"] / r["q_eq27"] and r["margin"] == 1 - r["ratio"]
+    assert r["passes"] == (r["q_record"] < r["q_eq27"])
+    run = sim(path)
+    assert r["overturns"] == run["collapse_overturning"], (r, run["collapse_overturning"])
+    if not run["overturned_during_input"]:
+        assert abs(r["peak_theta_over_alpha"] - run["max_theta_input_over_alpha"]) < 1e-12
+    # The first overturning, by simulate at the record scaled to its q (PGA = q alpha g).
+    fo = r["first_overturning"]
+    assert fo["found"] and abs(fo["scale"] - fo["q"] / r["q_record"]) < 1e-15 * fo["scale"]
+    assert sim(path, "--q", repr(fo["q"]))["collapse_overturning"], fo
+    assert not sim(path, "--q", repr(fo["q"] * (1 - 2e-6)))["collapse_overturning"], fo
+    # The same IDA as fragility's (same model, method and width).
+    rec = [x for x in frag["blocks"][0]["records"] if x["file"] == path][0]
+    assert rec["first_overturning"]["q"] == fo["q"], (rec["first_overturning"], fo)
+    assert rec["first_robust_collapse"]["q"] == r["first_robust_collapse"]["q"]
+    # The fragility over both records and P at each record's q.
+    fit = frag["blocks"][0]["fit"]
+    assert d["fragility"]["fitted"] and d["fragility"]["median"] == fit["median"] and d["fragility"]["beta"] == fit["beta"]
+    z = math.log(r["q_record"] / fit["median"]) / fit["beta"]
+    assert abs(r["probability"] - 0.5 * math.erfc(-z / math.sqrt(2))) < 1e-14, (r["probability"], z)
+# The nearest overturning blocks on the first record: spectrum --mark's at the same width.
+m = spec["marks"][0]
+r = d["records"][0]
+for side in ("below", "above"):
+    got, want = r["nearest_overturning_" + side], m["nearest_" + side]
+    assert got == want, (side, got, want)
+    if got["found"]:
+        R = 3 * 9.81 / (4 * got["p"] ** 2)
+        assert abs(got["height"] - 2 * R * math.cos(d["alpha"])) < 1e-12 * got["height"]
+print("ok: assess's margins against simulate, fragility and spectrum")
+PY
+then :; else echo "FAIL: assess's margins"; fail=1; fi
+# --floor T1,G (issue 40): the floor's record in place of the ground's, as
+# `record floor` writes it, on simulate, assess and spectrum alike.
+"$rocking" record floor "$a" --period 0.5 --participation 1.5 --output "$tmp/floor.txt" >/dev/null
+for cmd in "simulate --record" "assess" "spectrum"; do
+    case $cmd in
+        simulate*) block=(--thickness 0.25 --height 2); field='["max_theta_input_over_alpha"], d["collapse"]' ;;
+        assess) block=(--thickness 0.25 --height 2); field='[r["peak_theta_over_alpha"] for r in d["records"]], d["records"][0]["first_overturning"]' ;;
+        spectrum) block=(--alpha 0.15 --points 40); field='[s["intervals"] for s in d["spectra"]]' ;;
+    esac
+    via=$("$rocking" $cmd "$a" --floor 0.5,1.5 "${block[@]}" --json | $py -c "import json,sys; d=json.load(sys.stdin); print(d$field)" 2>&1)
+    file=$("$rocking" $cmd "$tmp/floor.txt" --unit m/s2 "${block[@]}" --json | $py -c "import json,sys; d=json.load(sys.stdin); print(d$field)" 2>&1)
+    if [[ -n "$via" && "$via" == "$file" ]]; then echo "ok: $cmd --floor is record floor's file"
+    else echo "FAIL: $cmd --floor: $via, against the file: $file"; fail=1; fi
+done
+check "floor named in the input" "floor T1=0.5 s zeta=0.05 G=1.5" "$rocking" simulate --record "$a" --floor 0.5,1.5 --thickness 0.25 --height 2
+check "floor's grammar" "--floor: floor model '0.5': takes T1,G[,zeta]" "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
+status "floor's grammar" 2 "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
+exit $fail
