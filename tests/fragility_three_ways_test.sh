@@ -4,7 +4,8 @@
 # three fits, the JSON carries them under "fits" with the stripes, the CSV's notes hold them, and
 # each is checked apart: the first overturning's fit is the block's "fit"; the first robust
 # collapse's fit and bootstrap are refitted by expected/fragility/independent.py's censored fit
-# and its mt19937 bootstrap (pure Python); the stripes are recomputed from each record's intervals
+# and its mt19937 bootstrap (pure Python, the records drawn in the order of their sha256); the
+# stripes are recomputed from each record's intervals
 # and fitted, with their bootstrap, by tools/stripe_mle.py (mpmath); the stripes' shares are the
 # means of the records' bands.  One record: a rectangular pulse has no fit of any kind, each saying
 # why.  The grid method's JSON has none of it.
@@ -63,7 +64,9 @@ m, s = independent.fit(points)
 assert math.isclose(rob["median"], m, rel_tol=1e-9) and math.isclose(rob["beta"], s, rel_tol=1e-9), (rob, m, s)
 assert (rob["collapsed"], rob["censored"]) == (sum(c for _, c in points), sum(not c for _, c in points))
 bt = rob["bootstrap"]
-lo_m, hi_m, lo_b, hi_b = independent.bootstrap(points, bt["resamples"], bt["seed"], bt["level"])
+# drawn in the order of the records' sha256 (issue 40)
+drawn = independent.in_draw_order(points, [r["sha256"] for r in b["records"]])
+lo_m, hi_m, lo_b, hi_b = independent.bootstrap(drawn, bt["resamples"], bt["seed"], bt["level"])
 for got, want in zip(bt["median"] + bt["beta"], (lo_m, hi_m, lo_b, hi_b)):
     assert math.isclose(got, want, rel_tol=1e-9), (bt, (lo_m, hi_m, lo_b, hi_b))
 assert (bt["resamples"], bt["seed"], bt["level"]) == (20, 5, 0.9)

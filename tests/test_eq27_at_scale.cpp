@@ -18,6 +18,8 @@
 #include "studies/eq27_at_scale.hpp"
 #include "studies/resampling.hpp"
 
+#include "test_util.hpp"
+
 using namespace rocking;
 using namespace rocking::studies;
 
@@ -209,7 +211,7 @@ TEST(Eq27AtScale, TheMapCountsEachBlocksRecords) {
     to.fill(0.5);
     const std::vector<std::vector<IdaPoint>> points = {
         {{1.5, true}, {1.1, true}}, {{2.0, true}, {1.3, true}}, {{3.0, true}, {20.0, false}}};
-    const Eq27Study s = eq27_from_points(points, {to, to, to}, blocks, 0.95);
+    const Eq27Study s = eq27_from_points(points, {to, to, to}, rocking::testing::listed_order(3), blocks, 0.95);
     ASSERT_EQ(s.map.size(), 2u);
     EXPECT_EQ(s.map[0].block.p, 1.0);
     EXPECT_EQ(s.map[1].block.p, 4.0);
@@ -221,9 +223,9 @@ TEST(Eq27AtScale, TheMapCountsEachBlocksRecords) {
         EXPECT_EQ(s.shares[k].non_conservative, 3);
         EXPECT_EQ(s.shares[k].cases, 6);
     }
-    EXPECT_THROW(eq27_from_points(points, {to, to}, blocks, 0.95), std::invalid_argument);
+    EXPECT_THROW(eq27_from_points(points, {to, to}, rocking::testing::listed_order(3), blocks, 0.95), std::invalid_argument);
     to[3] = 0;
-    EXPECT_THROW(eq27_from_points(points, {to, to, to}, blocks, 0.95), std::invalid_argument);
+    EXPECT_THROW(eq27_from_points(points, {to, to, to}, rocking::testing::listed_order(3), blocks, 0.95), std::invalid_argument);
 }
 
 TEST(Eq27AtScale, TheDefaultGridIsTheIssues) {
@@ -349,7 +351,7 @@ TEST(Eq27Bootstrap, ResamplingRecordsIsWiderThanResamplingCasesOnCorrelatedData)
     // draws records but keeps only one block of each.
     const AllOrNothing d(20, 10, 10);
     const Eq27Bootstrap b{20000, 3, 0.8};
-    const Eq27Study s = eq27_from_points(d.points, d.to, d.blocks, 0.95, b);
+    const Eq27Study s = eq27_from_points(d.points, d.to, rocking::testing::listed_order(d.points.size()), d.blocks, 0.95, b);
     EXPECT_EQ(s.bootstrap.resamples, 20000);
     EXPECT_EQ(s.bootstrap.seed, 3u);
     EXPECT_EQ(s.bootstrap.level, 0.8);
@@ -425,7 +427,7 @@ TEST(Eq27Bootstrap, RecordsWithAnyCaseAndNoBootstrapUnlessAsked) {
     // Block 0 (eq. 27 = 2.451): q 1.5, 2.0 below; block 1 (eq. 27 = 1.218): q 1.1 below.
     const std::vector<std::vector<IdaPoint>> points = {
         {{1.5, true}, {1.1, true}}, {{2.0, true}, {1.3, true}}, {{3.0, true}, {20.0, false}}};
-    const Eq27Study s = eq27_from_points(points, {to, to, to}, blocks, 0.95, {0, 1, 0.9});
+    const Eq27Study s = eq27_from_points(points, {to, to, to}, rocking::testing::listed_order(3), blocks, 0.95, {0, 1, 0.9});
     EXPECT_EQ(s.records, 3);
     EXPECT_EQ(s.bootstrap.resamples, 0);
     for (int k = 0; k < kHalfPeriods; ++k) {
@@ -436,7 +438,7 @@ TEST(Eq27Bootstrap, RecordsWithAnyCaseAndNoBootstrapUnlessAsked) {
         EXPECT_EQ(s.shares[k].bootstrap.hi, 0.0);
     }
     // The default runs it: 1000 resamples, seed 1, 90 % (the fragility fit's level).
-    const Eq27Study d = eq27_from_points(points, {to, to, to}, blocks, 0.95);
+    const Eq27Study d = eq27_from_points(points, {to, to, to}, rocking::testing::listed_order(3), blocks, 0.95);
     EXPECT_EQ(d.bootstrap.resamples, 1000);
     EXPECT_EQ(d.bootstrap.seed, 1u);
     EXPECT_EQ(d.bootstrap.level, 0.9);
@@ -455,5 +457,5 @@ TEST(Eq27Bootstrap, RefusesNonsense) {
     over[1][4] = 3;
     EXPECT_THROW(record_bootstrap(over, 2, {10, 1, 0.9}), std::invalid_argument);
     const AllOrNothing d(3, 1, 2);
-    EXPECT_THROW(eq27_from_points(d.points, d.to, d.blocks, 0.95, {-1, 1, 0.9}), std::invalid_argument);
+    EXPECT_THROW(eq27_from_points(d.points, d.to, rocking::testing::listed_order(d.points.size()), d.blocks, 0.95, {-1, 1, 0.9}), std::invalid_argument);
 }

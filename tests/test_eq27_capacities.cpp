@@ -17,6 +17,7 @@
 #include "studies/eq27_at_scale.hpp"
 #include "studies/overturning_set.hpp"
 #include "studies/resampling.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
@@ -81,7 +82,7 @@ TEST(Eq27Capacities, EachCapacityCountsItsOwnVerdictsOnSetsMadeByHand) {
     }
     const std::array<double, kHalfPeriods> to = to_at(2.0);
     for (int k = 0; k < kHalfPeriods; ++k) ASSERT_EQ(q2_n6(2.0 * to[k]), kQ27[k]) << "to_" << k + 1;
-    const Eq27ByCapacity s = eq27_by_capacity(capacities, {to, to, to, to}, {{0.1, 2.0}}, 0.95, {0, 1, 0.9});
+    const Eq27ByCapacity s = eq27_by_capacity(capacities, {to, to, to, to}, rocking::testing::listed_order(4), {{0.1, 2.0}}, 0.95, {0, 1, 0.9});
     const int want_first[kHalfPeriods] = {3, 0, 3, 0, 3, 0, 3, 0, 3, 2, 2};
     const int want_robust[kHalfPeriods] = {2, 0, 2, 0, 2, 0, 1, 0, 0, 0, 0};
     EXPECT_EQ(s.first_overturning.censored, 1);
@@ -107,7 +108,7 @@ TEST(Eq27Capacities, EachCapacityCountsItsOwnVerdictsOnSetsMadeByHand) {
     // The same through eq27_from_points, one capacity at a time.
     std::vector<std::vector<IdaPoint>> robust_points;
     for (const auto& r : capacities) robust_points.push_back({r[0].first_robust_collapse});
-    const Eq27Study alone = eq27_from_points(robust_points, {to, to, to, to}, {{0.1, 2.0}}, 0.95, {0, 1, 0.9});
+    const Eq27Study alone = eq27_from_points(robust_points, {to, to, to, to}, rocking::testing::listed_order(4), {{0.1, 2.0}}, 0.95, {0, 1, 0.9});
     for (int k = 0; k < kHalfPeriods; ++k)
         EXPECT_EQ(alone.shares[k].non_conservative, s.first_robust_collapse.shares[k].non_conservative);
 }
@@ -116,11 +117,11 @@ TEST(Eq27Capacities, ARobustCollapseBelowTheFirstOverturningIsRefused) {
     // No IDA gives one: the robust collapse starts one of its intervals, the
     // first overturning the lowest.  Fails when the pairs are not checked.
     const std::array<double, kHalfPeriods> to = to_at(2.0);
-    EXPECT_THROW(eq27_by_capacity({{Eq27Capacities{{1.5, true}, {1.4, true}}}}, {to}, {{0.1, 2.0}}, 0.95, {0, 1, 0.9}),
+    EXPECT_THROW(eq27_by_capacity({{Eq27Capacities{{1.5, true}, {1.4, true}}}}, {to}, rocking::testing::listed_order(1), {{0.1, 2.0}}, 0.95, {0, 1, 0.9}),
                  std::invalid_argument);
-    EXPECT_THROW(eq27_by_capacity({{Eq27Capacities{{20, false}, {1.4, true}}}}, {to}, {{0.1, 2.0}}, 0.95, {0, 1, 0.9}),
+    EXPECT_THROW(eq27_by_capacity({{Eq27Capacities{{20, false}, {1.4, true}}}}, {to}, rocking::testing::listed_order(1), {{0.1, 2.0}}, 0.95, {0, 1, 0.9}),
                  std::invalid_argument);
-    EXPECT_NO_THROW(eq27_by_capacity({{Eq27Capacities{{1.4, true}, {1.4, true}}}}, {to}, {{0.1, 2.0}}, 0.95, {0, 1, 0.9}));
+    EXPECT_NO_THROW(eq27_by_capacity({{Eq27Capacities{{1.4, true}, {1.4, true}}}}, {to}, rocking::testing::listed_order(1), {{0.1, 2.0}}, 0.95, {0, 1, 0.9}));
 }
 
 TEST(Eq27Capacities, TheNarrowIslandInQIsNonConservativeWhereTheRobustCollapseIsNot) {
@@ -191,9 +192,9 @@ TEST(Eq27Capacities, BothBootstrapsDrawTheSameRecords) {
     const std::vector<std::array<double, kHalfPeriods>> tos(n, to);
     const std::vector<BlockShape> bl(blocks, BlockShape{0.1, 1.0, ""});
     const Eq27Bootstrap b{400, 17, 0.9};
-    const Eq27ByCapacity s = eq27_by_capacity(capacities, tos, bl, 0.95, b);
-    const Eq27ByCapacity again = eq27_by_capacity(capacities, tos, bl, 0.95, b);
-    const Eq27ByCapacity other = eq27_by_capacity(capacities, tos, bl, 0.95, {400, 18, 0.9});
+    const Eq27ByCapacity s = eq27_by_capacity(capacities, tos, rocking::testing::listed_order(n), bl, 0.95, b);
+    const Eq27ByCapacity again = eq27_by_capacity(capacities, tos, rocking::testing::listed_order(n), bl, 0.95, b);
+    const Eq27ByCapacity other = eq27_by_capacity(capacities, tos, rocking::testing::listed_order(n), bl, 0.95, {400, 18, 0.9});
     // The paired draws, recomputed.
     SeededRng rng(b.seed);
     std::vector<double> first, robust;

@@ -12,9 +12,11 @@
 #include "dynamics/ground_input.hpp"
 #include "records/collapse.hpp"
 #include "studies/ida.hpp"
+#include "studies/record_order.hpp"
 #include "studies/scaled_input.hpp"
 #include "studies/spectrum.hpp"
 #include "two_pulses_truth.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
@@ -213,9 +215,9 @@ TEST(Ida, TheStudyFitsEachBlocksPointsFromItsRecords) {
     // Single pulses of several lengths: each record's point is its closed
     // form q*, the shortest one censored (q* > 20), in the records' order,
     // and the fit, bootstrap and empirical curve are fit_lognormal's,
-    // bootstrap's and empirical_curve's on those points.  Fails when the
-    // censored record is dropped or counted as a collapse, or the records'
-    // order is lost.
+    // bootstrap's and empirical_curve's on those points, the first two in
+    // the draw order of the inputs' digests.  Fails when the censored record
+    // is dropped or counted as a collapse, or the records' order is lost.
     const std::vector<double> lengths = {0.3, 0.05, 0.6, 0.9, 1.2, 2.0};
     std::vector<PulseInput> pulses;
     for (const double d : lengths) pulses.push_back(single_pulse(d));
@@ -240,12 +242,15 @@ TEST(Ida, TheStudyFitsEachBlocksPointsFromItsRecords) {
         }
     }
     ASSERT_TRUE(f.fitted);
-    const LognormalFragility fit = fit_lognormal(f.points);
+    // The fit and bootstrap take the records in the order of their inputs' digests.
+    EXPECT_EQ(f.draw_order, draw_order(input_digests(inputs)));
+    const std::vector<IdaPoint> drawn = in_draw_order(f.points, f.draw_order);
+    const LognormalFragility fit = fit_lognormal(drawn);
     EXPECT_EQ(f.fit.median, fit.median);
     EXPECT_EQ(f.fit.beta, fit.beta);
     EXPECT_EQ(f.fit.censored, 1);
     ASSERT_TRUE(f.bootstrapped);
-    EXPECT_EQ(f.interval.median.lo, bootstrap(f.points, 200, 7, 0.9).median.lo);
+    EXPECT_EQ(f.interval.median.lo, bootstrap(drawn, 200, 7, 0.9).median.lo);
     EXPECT_EQ(f.empirical.size(), lengths.size() - 1);
     // At p = 0.03 only d = 2 s overturns the block below q = 20 (q* = 17.2;
     // d = 1.2 s needs 28.3): one collapse below six censored points at 20,
@@ -255,12 +260,12 @@ TEST(Ida, TheStudyFitsEachBlocksPointsFromItsRecords) {
     for (const IdaPoint& pt : stocky.points) collapsed += pt.collapsed;
     EXPECT_EQ(collapsed, 1);
     ASSERT_TRUE(stocky.fitted);
-    EXPECT_EQ(stocky.fit.beta, fit_lognormal(stocky.points).beta);
+    EXPECT_EQ(stocky.fit.beta, fit_lognormal(in_draw_order(stocky.points, stocky.draw_order)).beta);
     EXPECT_GT(stocky.fit.median, 20);
     // Without a censored point above it, the one collapse has no fit and says why.
     std::vector<Ida> alone(1, stocky.idas[5]);
     ASSERT_TRUE(alone[0].point.collapsed);
-    const BlockFragility single = block_fragility(stocky.block, alone, o);
+    const BlockFragility single = block_fragility(stocky.block, alone, rocking::testing::listed_order(1), o);
     EXPECT_FALSE(single.fitted);
     EXPECT_NE(single.no_fit.find("no spread to fit"), std::string::npos) << single.no_fit;
 }

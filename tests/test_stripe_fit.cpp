@@ -18,9 +18,12 @@
 #include "dynamics/ground_input.hpp"
 #include "studies/ida.hpp"
 #include "studies/stripe_fit.hpp"
+#include "synthetic_ida.hpp"
+#include "test_util.hpp"
 
 using namespace rocking;
 using namespace rocking::studies;
+using rocking::testing::synthetic_ida;
 
 namespace {
 
@@ -251,29 +254,6 @@ TEST(StripeFit, StripeSharesRefuseBadGrids) {
 
 namespace {
 
-// A synthetic IDA whose overturning set is `intervals` (each bracketed at its
-// ends), its first robust collapse given.
-Ida synthetic_ida(const std::vector<std::pair<double, double>>& intervals, IdaPoint robust) {
-    Ida ida;
-    ida.alpha = 0.1;
-    ida.p = 2;
-    ida.refined = true;
-    for (const auto& [from, to] : intervals) {
-        IdaInterval in;
-        in.from = from;
-        in.to = to;
-        in.has_lower = true;
-        in.lower = {from * (1 - 1e-7), from};
-        in.has_upper = to < 20;
-        if (in.has_upper) in.upper = {to * (1 + 1e-7), to};
-        ida.intervals.push_back(in);
-    }
-    ida.point = ida.intervals.empty() ? IdaPoint{20, false} : IdaPoint{intervals.front().first, true};
-    ida.first_overturning = ida.point;
-    ida.first_robust_collapse = robust;
-    return ida;
-}
-
 FragilityStudyOptions refined_options(double q_max, int points, int resamples) {
     FragilityStudyOptions o;
     o.ida.method = IdaOptions::Method::refine;
@@ -302,7 +282,7 @@ TEST(FragilityThreeWays, SyntheticIdasGiveEachCapacityItsFit) {
     std::vector<Ida> idas;
     for (std::size_t r = 0; r < kSynthetic.size(); ++r) idas.push_back(synthetic_ida(kSynthetic[r], {robust[r], true}));
     const FragilityStudyOptions o = refined_options(20, 20, 200);
-    const BlockFragility f = block_fragility({0.1, 2}, idas, o);
+    const BlockFragility f = block_fragility({0.1, 2}, idas, rocking::testing::listed_order(idas.size()), o);
     ASSERT_TRUE(f.three_ways);
     // (a) the first overturning: today's fit and bootstrap of the points.
     std::vector<IdaPoint> first;
@@ -344,7 +324,7 @@ TEST(FragilityThreeWays, SyntheticIdasGiveEachCapacityItsFit) {
     // The grid method: the same first-overturning fit, nothing more.
     FragilityStudyOptions grid = o;
     grid.ida.method = IdaOptions::Method::grid;
-    const BlockFragility g = block_fragility({0.1, 2}, idas, grid);
+    const BlockFragility g = block_fragility({0.1, 2}, idas, rocking::testing::listed_order(idas.size()), grid);
     EXPECT_FALSE(g.three_ways);
     EXPECT_FALSE(g.robust.fitted);
     EXPECT_TRUE(g.robust.points.empty());
@@ -361,21 +341,22 @@ TEST(FragilityThreeWays, EachFitSaysWhyNotAlone) {
     // alone: (a) and (b) one collapse, nothing censored above (no maximum),
     // the stripes step from 0 to 1 (no maximum).
     const FragilityStudyOptions o = refined_options(4, 10, 0);
-    const BlockFragility one = block_fragility({0.1, 2}, {synthetic_ida({{1.5, 4}}, {3, true})}, o);
+    const BlockFragility one = block_fragility({0.1, 2}, {synthetic_ida({{1.5, 4}}, {3, true})},
+                                                rocking::testing::listed_order(1), o);
     EXPECT_FALSE(one.fitted);
     EXPECT_FALSE(one.robust.fitted);
     EXPECT_NE(one.robust.no_fit.find("no censored record lies above it"), std::string::npos) << one.robust.no_fit;
     EXPECT_FALSE(one.stripes.fitted);
     EXPECT_NE(one.stripes.no_fit.find("step from 0 to 1"), std::string::npos) << one.stripes.no_fit;
     const BlockFragility two =
-        block_fragility({0.1, 2}, {synthetic_ida({{1.5, 4}}, {3, true}), synthetic_ida({}, {4, false})}, o);
+        block_fragility({0.1, 2}, {synthetic_ida({{1.5, 4}}, {3, true}), synthetic_ida({}, {4, false})}, rocking::testing::listed_order(2), o);
     EXPECT_TRUE(two.fitted);
     EXPECT_TRUE(two.robust.fitted);
     EXPECT_FALSE(two.robust.bootstrapped);
     EXPECT_TRUE(two.stripes.fitted) << two.stripes.no_fit;
     EXPECT_FALSE(two.stripes.bootstrapped);
     // No record overturns: none of the three.
-    const BlockFragility none = block_fragility({0.1, 2}, {synthetic_ida({}, {4, false}), synthetic_ida({}, {4, false})}, o);
+    const BlockFragility none = block_fragility({0.1, 2}, {synthetic_ida({}, {4, false}), synthetic_ida({}, {4, false})}, rocking::testing::listed_order(2), o);
     EXPECT_FALSE(none.fitted || none.robust.fitted || none.stripes.fitted);
     EXPECT_NE(none.stripes.no_fit.find("every share 0"), std::string::npos) << none.stripes.no_fit;
 }
@@ -397,7 +378,7 @@ TEST(FragilityThreeWays, RectangularPulsesGiveTheStripesOfTheirClosedForm) {
         idas.push_back(incremental_dynamic_analysis(record, alpha, p, o.ida));
         known.push_back(1 / -std::expm1(-p * (n - 1) * dt));
     }
-    const BlockFragility f = block_fragility({alpha, p}, idas, o);
+    const BlockFragility f = block_fragility({alpha, p}, idas, rocking::testing::listed_order(idas.size()), o);
     ASSERT_TRUE(f.three_ways);
     std::vector<Stripe> exact = f.stripes.stripes;
     for (std::size_t j = 0; j < exact.size(); ++j) {

@@ -111,4 +111,16 @@ S1Sum s1_sum(const PulseTrain& train, Level F, double to, double p, double t) {
     return v;
 }
 
+// n identities that sort in their given order ("r0000", "r0001", ...): the
+// draw order (studies/record_order.hpp) of records given as data, for the
+// tests that compare a study's fits with the fits of its points as listed.
+inline std::vector<std::string> listed_order(std::size_t n) {
+    std::vector<std::string> out;
+    for (std::size_t k = 0; k < n; ++k) {
+        std::string digits = std::to_string(k);
+        out.push_back("r" + std::string(digits.size() < 4 ? 4 - digits.size() : 0, '0') + digits);
+    }
+    return out;
+}
+
 }  // namespace rocking::testing

@@ -25,7 +25,9 @@ geometric midpoint, and a record's share the length in ln q of its set within th
 (at 40 digits).  --fragility reads `rocking fragility --method refine --json` and for every block
 recomputes the stripes from each record's intervals, fits them and, where the block's stripe fit has a
 bootstrap, re-runs it: GSL's mt19937 (gsl_rng_set, gsl_rng_uniform_int) rebuilt on Python's Mersenne
-Twister, one draw per record, resamples without a maximum redrawn, percentiles by linear interpolation.
+Twister, one draw per record, the records in the order of their "sha256" (the order listed between equal
+ones: rocking's draw order since issue 40), resamples without a maximum redrawn, percentiles by linear
+interpolation.
 It prints one JSON object per block.  Prints median, beta and ln L to 20 digits (the values
 tests/test_stripe_fit.cpp holds).
 """
@@ -199,7 +201,10 @@ def fragility(path):
     doc = json.load(open(path))
     g = doc["grid"]
     for block in doc["blocks"]:
-        sets = [[(i["from"], i["to"]) for i in r["intervals"]] for r in block["records"]]
+        # The records in the order the bootstrap draws them (issue 40): by their sha256, the order listed
+        # between equal ones; the shares' sums at 40 digits do not see the order.
+        records = [r for _, r in sorted(enumerate(block["records"]), key=lambda kr: (kr[1]["sha256"], kr[0]))]
+        sets = [[(i["from"], i["to"]) for i in r["intervals"]] for r in records]
         centres, shares = stripes_from_sets(g["q_min"], g["q_max"], g["points"], sets)
         raw = raw_stripes(centres, shares)
         out = {"alpha": block["alpha"], "p": block["p"], "stripes": [

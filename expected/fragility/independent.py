@@ -52,9 +52,12 @@ without the shared records) the shared records' part is skipped.
 import csv
 import ctypes
 import ctypes.util
+import hashlib
+import importlib.util
 import math
 import os
 import re
+import struct
 import sys
 from statistics import NormalDist
 
@@ -212,7 +215,17 @@ def has_maximum(points):
     return len(collapsed) > 1 or (len(collapsed) == 1 and any(q > min(collapsed) for q, c in points if not c))
 
 
+def in_draw_order(items, identities):
+    """The items in the order every bootstrap draws the records in (issue 40; studies/record_order.hpp): by
+    their identities (hex SHA-256) as strings, equal ones in the order listed.  Written apart from the C++
+    code's std::stable_sort: Python's sort of the indices keyed by (identity, index)."""
+    if len(items) != len(identities):
+        raise ValueError("%d identities for %d records" % (len(identities), len(items)))
+    return [items[i] for i in sorted(range(len(items)), key=lambda i: (identities[i], i))]
+
+
 def bootstrap(points, resamples, seed, level):
+    """The points drawn by their positions, in the order given (a study's draw order: in_draw_order)."""
     rng = GslMt19937(seed)
     med, bet = [], []
     while len(med) < resamples:
@@ -254,9 +267,22 @@ def record_bootstrap(counts, blocks, resamples, seed, level):
     return [(percentile(v, t), percentile(v, 1 - t)) for v in shares]
 
 
+def identities_of(pts, failures):
+    """{record: identity} from a points file's rows (one identity per record on every block, each distinct)."""
+    ids = {}
+    for p in pts:
+        if ids.setdefault(p["record"], p["identity"]) != p["identity"]:
+            failures.append("%s: two identities, %s and %s" % (p["record"], ids[p["record"]], p["identity"]))
+    if len(set(ids.values())) != len(ids):
+        failures.append("two records share an identity")
+    return ids
+
+
 def check_eq27(pts, rows, to_of, failures):
-    """fragility_eq27.csv from fragility_points.csv and table2's to_k; returns the values compared."""
+    """fragility_eq27.csv from fragility_points.csv and table2's to_k; returns the values compared.  The
+    bootstrap draws the records in the order of their identities (in_draw_order)."""
     records = list(dict.fromkeys(p["record"] for p in pts))
+    ids = identities_of(pts, failures)
     blocks = list(dict.fromkeys((p["alpha"], p["p"]) for p in pts))
     # nc[r][b][k]: the verdict of record r on block b for to_k.
     nc = {r: {} for r in records}
@@ -292,13 +318,52 @@ def check_eq27(pts, rows, to_of, failures):
             if abs(v - want) > TOL_EQ27 * abs(want):
                 failures.append("%s %s: Python %.17g, CSV %.17g" % (name, key, v, want))
         if boot is None:
-            boot = record_bootstrap(counts, len(blocks), int(row["resamples"]), int(row["seed"]),
-                                    float(row["boot_level"]))
+            boot = record_bootstrap(in_draw_order(counts, [ids[r] for r in records]), len(blocks),
+                                    int(row["resamples"]), int(row["seed"]), float(row["boot_level"]))
         for key, v in zip(("boot_lo", "boot_hi"), boot[k]):
             checked += 1
             if v != float(row[key]):  # exact: counts over 64, one interpolation, the same on both sides
                 failures.append("%s %s: Python %.17g, CSV %s" % (name, key, v, row[key]))
     return checked
+
+
+def sample_digest(dt, samples_g):
+    """studies::sample_digest: SHA-256 of the step's %.17g text, ';' and the samples in g as little-endian doubles."""
+    return hashlib.sha256(("%.17g" % dt).encode() + b";" + struct.pack("<%dd" % len(samples_g), *samples_g)).hexdigest()
+
+
+def shared_samples_g(path):
+    """A shared record as rocking reads it, in g (the scene's g = 9.81): ESM's cm/s^2 times 0.01 over 9.81, PEER's g
+    times 9.81 over 9.81 (the reader keeps m/s^2), each operation as the C++ code orders it, so the doubles agree
+    to the bit (the text parsed by correctly rounded conversions on both sides)."""
+    spec = importlib.util.spec_from_file_location("t1", os.path.join(HERE, "..", "table1",
+                                                                     "independent_first_overturning.py"))
+    t1 = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(t1)
+    if path.endswith(".AT2"):
+        dt, g = t1.read_at2(path)
+        return dt, [x * 9.81 / 9.81 for x in g]
+    return t1.ind.read_esm(path)
+
+
+def check_identities(pts, generated, failures):
+    """Each record's identity recomputed here: a generated record's the SHA-256 of its label; a shared one's the
+    digest of its samples as read from ../shared/records (skipped, and said, without the folder)."""
+    ids = identities_of(pts, failures)
+    if generated:
+        for label, identity in ids.items():
+            if hashlib.sha256(label.encode()).hexdigest() != identity:
+                failures.append("%s: identity %s is not the SHA-256 of its label" % (label, identity))
+        return "%d identities, each the SHA-256 of its label" % len(ids)
+    root = os.environ.get("ROCKING_RECORDS") or os.path.join(HERE, "..", "..", "..", "shared", "records")
+    missing = [r for r in ids if not os.path.isfile(os.path.join(root, r))]
+    if missing:
+        return "%d identities not recomputed: %d records absent from %s" % (len(ids), len(missing), root)
+    for record, identity in ids.items():
+        dt, a = shared_samples_g(os.path.join(root, record))
+        if sample_digest(dt, a) != identity:
+            failures.append("%s: identity %s, its samples' digest here %s" % (record, identity, sample_digest(dt, a)))
+    return "%d identities, each the digest of the record's samples read here" % len(ids)
 
 
 def point_of(p):
@@ -316,6 +381,8 @@ def check_fits(pts, fits, prefix, agree, failures):
         for p in block:
             points.append(point_of(p))
             ill += p["check"] == "ill-conditioned"
+        # The fit and its bootstrap take the records in their draw order (the fit alone would not care).
+        points = in_draw_order(points, [p["identity"] for p in block])
         name = prefix + "alpha %s p %s" % (f["alpha"], f["p"])
         counts = (len(points), sum(c for _, c in points), sum(not c for _, c in points), ill)
         want = tuple(int(f[k]) for k in ("records", "collapsed", "censored", "ill_conditioned"))
@@ -539,6 +606,8 @@ def check_synthetic(d, failures, agree):
           "within %.2g; its verdicts flip only if a collapse q moves by %.3g in ln q" % (len(pts), worst_q, worst_27,
                                                                                       pulse_margin))
 
+    print("fragility independent, synthetic: " + check_identities(pts, True, failures))
+
     # The fits per (set, block).
     for set_ in ("pulse", "stochastic"):
         check_fits([p for p in pts if p["set"] == set_], [f for f in fits if f["set"] == set_], set_ + " ", agree,
@@ -565,8 +634,9 @@ def check_synthetic(d, failures, agree):
     n = len(records) * len(blocks)
     wl, wh = wilson(k, n, 0.95)
     first = e27[0]
-    bl, bh = record_bootstrap(counts, len(blocks), int(first["resamples"]), int(first["seed"]),
-                              float(first["boot_level"]))[0]
+    ids = identities_of(pp, failures)
+    bl, bh = record_bootstrap(in_draw_order(counts, [ids[r] for r in records]), len(blocks), int(first["resamples"]),
+                              int(first["seed"]), float(first["boot_level"]))[0]
     with_any = sum(c[0] > 0 for c in counts)
     want = ("%d of %d cases non-conservative, share %.4g, Wilson 95 %% [%.3g, %.3g], bootstrap over the pulses 90 %% "
             "[%.3g, %.3g]; %d of %d pulses non-conservative on at least one block" % (k, n, k / n, wl, wh, bl, bh,
@@ -592,6 +662,7 @@ def main():
         print("fragility independent: no fragility_points.csv (a run without the shared records): their part skipped")
     else:
         pts = read(d + "/fragility_points.csv")
+        print("fragility independent: " + check_identities(pts, False, failures))
         check_fits(pts, read(d + "/fragility_fits.csv"), "", agree, failures)
         print("fragility independent: %d fit values, worst relative deviation %.2g" % (checked, worst))
         t2 = read(os.path.join(HERE, "..", "table2", "table2_records.csv"))

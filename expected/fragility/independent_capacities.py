@@ -3,7 +3,10 @@
 fragility_capacities.csv, fragility_capacity_fits.csv, fragility_stripe_shares.csv,
 fragility_stripe_fits.csv and fragility_capacity_eq27.csv, and their fragility_synthetic_* twins.
 
-Checked, from the files alone and a second implementation of the model (no C++ code):
+Checked, from the files alone and a second implementation of the model (no C++ code).  Every
+bootstrap draws the records in the order of their identities (issue 40: independent.py's
+in_draw_order), each record's identity read from the points file of the same records
+(fragility_points.csv, fragility_synthetic_points.csv), where independent.py recomputes it:
 
 1. structure: every first-overturning bracket ordered and at most 2e-6 relative wide, the
    first robust collapse never below the first overturning and equal to it exactly when no
@@ -178,7 +181,7 @@ def check_structure(rows, shares, grid, robust_width, failures):
 
 # ---- 2. the fits on the points ----
 
-def check_point_fits(rows, fits, prefix, agree, failures):
+def check_point_fits(rows, fits, ids, prefix, agree, failures):
     for capacity, point, ill in (("first_overturning", first_point, lambda r: r["check"] == "ill-conditioned"),
                                  ("first_robust_collapse", robust_point, robust_ill)):
         # independent.check_fits reads a points file's columns: the capacity's point in them.
@@ -187,7 +190,7 @@ def check_point_fits(rows, fits, prefix, agree, failures):
             q, c = point(r)
             pts.append({"alpha": r["alpha"], "p": r["p"], "outcome": "collapsed" if c else "censored",
                         "q_censored": repr(q), "q_collapse": repr(q), "q_ill_collapse": "-",
-                        "check": "ill-conditioned" if ill(r) else "-"})
+                        "check": "ill-conditioned" if ill(r) else "-", "identity": ids[r["record"]]})
         mine = [f for f in fits if f["capacity"] == capacity]
         fitted = []
         for f in mine:
@@ -274,14 +277,16 @@ def stripe_bootstrap(centres, shares, resamples, seed, level, start):
     return out, len(exact), off
 
 
-def check_stripes(shares_rows, fits, grid, prefix, worst, failures):
+def check_stripes(shares_rows, fits, grid, ids, prefix, worst, failures):
     q_min, q_max, points = grid
     g = sm.grid(q_min, q_max, points)
     centres = [(math.sqrt(a * b), a, b) for a, b in zip(g, g[1:])]
     for f in fits:
         name = "%sstripes alpha %s p %s" % (prefix, f["alpha"], f["p"])
         rows = [r for r in shares_rows if (r["alpha"], r["p"]) == (f["alpha"], f["p"])]
-        shares = [[mp.mpf(r["stripe_%d" % j]) for j in range(1, points)] for r in rows]
+        # The records in their draw order (independent.py's in_draw_order), as the bootstrap draws them.
+        shares = ind.in_draw_order([[mp.mpf(r["stripe_%d" % j]) for j in range(1, points)] for r in rows],
+                                   [ids[r["record"]] for r in rows])
         if (int(f["records"]), int(f["stripes"])) != (len(rows), points - 1):
             failures.append("%s: records, stripes %s, %s; the shares file has %d, %d"
                             % (name, f["records"], f["stripes"], len(rows), points - 1))
@@ -318,14 +323,14 @@ def check_stripes(shares_rows, fits, grid, prefix, worst, failures):
 
 # ---- 4. eq. 27 under each capacity ----
 
-def check_eq27(rows, eq27_rows, to_of, prefix, failures):
+def check_eq27(rows, eq27_rows, to_of, ids, prefix, failures):
     checked = 0
     counts = {}
     for capacity, point in (("first_overturning", first_point), ("first_robust_collapse", robust_point)):
         pts = []
         for r in rows:
             q, c = point(r)
-            pts.append({"record": r["record"], "alpha": r["alpha"], "p": r["p"],
+            pts.append({"record": r["record"], "alpha": r["alpha"], "p": r["p"], "identity": ids[r["record"]],
                         "outcome": "collapsed" if c else "censored", "q_collapse": repr(q), "q_ill_collapse": "-"})
         mine = [e for e in eq27_rows if e["capacity"] == capacity]
         n_fail = len(failures)
@@ -425,6 +430,12 @@ def main():
         eq27_rows = ind.read(os.path.join(d, stem + "_capacity_eq27.csv"))
         grid = grid_of(path)
         sets = [None] if not prefix else list(dict.fromkeys(r["set"] for r in rows))
+        # Each record's identity, whose order every bootstrap draws the records in: from the points file
+        # of the same records (independent.py checks it there).
+        ids = ind.identities_of(ind.read(os.path.join(d, stem + "_points.csv")), failures)
+        if set(ids) != {r["record"] for r in rows}:
+            failures.append("%s: the records differ from %s_points.csv's" % (path, stem))
+            continue
 
         def of_set(table, s):
             return table if s is None else [r for r in table if r["set"] == s]
@@ -436,12 +447,13 @@ def main():
                                                                        "agrees" if len(failures) == n else "DIFFERS"))
         if "fits" in only:
             for s in sets:
-                check_point_fits(of_set(rows, s), of_set(fits, s), prefix + (s + " " if s else ""), agree, failures)
+                check_point_fits(of_set(rows, s), of_set(fits, s), ids, prefix + (s + " " if s else ""), agree,
+                                 failures)
             print("independent_capacities: %sfits on the points, worst relative deviation %.2g"
                   % (prefix, worst["points"]))
         if "stripes" in only:
             for s in sets:
-                check_stripes(of_set(shares, s), of_set(stripe_fits, s), grid, prefix + (s + " " if s else ""),
+                check_stripes(of_set(shares, s), of_set(stripe_fits, s), grid, ids, prefix + (s + " " if s else ""),
                               worst["stripes"], failures)
             print("independent_capacities: %sstripe fits, worst relative deviation %.2g"
                   % (prefix, worst["stripes"][0]))
@@ -456,7 +468,7 @@ def main():
             for name, members in groups:
                 these = [r for r in rows if prefix == "" or r["set"] in members]
                 mine = eq27_rows if name is None else [e for e in eq27_rows if e["set"] == name]
-                checked += check_eq27(these, mine, to_of, prefix + (name + " " if name else ""), failures)
+                checked += check_eq27(these, mine, to_of, ids, prefix + (name + " " if name else ""), failures)
             print("independent_capacities: %s%d eq. 27 values recounted" % (prefix, checked))
         if "brackets" in only:
             runs, ill = bracket_runs(rows)

@@ -60,6 +60,7 @@ void add_study(py::dict& out, const Eq27Study& s, const std::vector<RecordPtr>& 
     for (std::size_t r = 0; r < by_record.size(); ++r) {
         py::dict d = result();
         d["file"] = file_of(*recs[r]);
+        d["sha256"] = s.identities[r];
         d["non_conservative"] = counts(by_record[r]);
         records_out.append(d);
     }

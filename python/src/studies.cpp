@@ -16,6 +16,7 @@
 #include "records/collapse.hpp"
 #include "studies/distinct_inputs.hpp"
 #include "studies/ida.hpp"
+#include "studies/nrml.hpp"
 #include "studies/spectrum.hpp"
 #include "studies/search_alpha.hpp"
 
@@ -271,8 +272,9 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
                    const Whole& points, const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed,
                    const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
                    const std::optional<Real>& robust_width_given, const std::optional<Text>& block_given,
-                   const py::object& restitution, const py::kwargs& extra) {
+                   const py::object& restitution, const Flag& nrml_given, const py::kwargs& extra) {
     no_other_keywords(extra, "fragility", "fragility");
+    const bool nrml = flag(nrml_given, "nrml");
     // The blocks as rocking fragility's: --block BxH,... or every --alpha with every --p.
     std::vector<studies::BlockShape> built;
     if (const std::optional<std::string> text_given = string_argument(block_given, "block")) {
@@ -358,6 +360,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
             const Ida& ida = f.idas[k];
             py::dict d = result();
             d["file"] = file_of(*recs[k]);
+            d["sha256"] = f.identities[k];
             d["q_input"] = ida.q_input;
             d["q"] = ida.point.q;
             d["collapsed"] = ida.point.collapsed;
@@ -397,6 +400,17 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         blocks_out.append(b);
     }
     out["blocks"] = blocks_out;
+    if (nrml) {
+        // rocking fragility --nrml's file, its blocks without a fit as --nrml's warnings.
+        std::vector<std::string> names;
+        for (const RecordPtr& r : recs) names.push_back(label_of(*r));
+        const studies::NrmlModel model = studies::fragility_nrml(study, o, names);
+        for (const std::string& why : model.unfitted)
+            if (PyErr_WarnEx(PyExc_RuntimeWarning, ("fragility: nrml: " + why + "; the model has no function for it, "
+                                                    "only a comment").c_str(), 1) != 0)
+                throw py::error_already_set();
+        out["nrml"] = model.xml;
+    }
     return out;
 }
 
@@ -420,7 +434,7 @@ overturning p on either side and their heights).  An alpha given twice is refuse
     m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p"_a = py::none(),
           "q_max"_a = 20.0, "points"_a = 100, "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
           "method"_a = "grid", "width"_a = py::none(), "robust_width"_a = py::none(), "block"_a = py::none(),
-          "restitution"_a = "housner",
+          "restitution"_a = "housner", "nrml"_a = false,
           R"(`rocking fragility --json`: for each block (every alpha with every p) and record, the IDA's
 overturning intervals in q = PGA/(alpha g), the first collapse q or a censored point, the lognormal
 fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).
@@ -429,6 +443,9 @@ first_overturning (bracket, check), first_robust_collapse, bands (from, to, shar
 with_margins and unguaranteed_from, as --method refine does; the block's fit takes the first overturning,
 and each block's fits (first_overturning, first_robust_collapse, stripes: fit and no_fit) and stripes
 (arrays q, from, to, share) fit the capacity three ways.
+Each record's sha256 sets the order the bootstraps draw the records in.  nrml=True adds "nrml",
+the text `rocking fragility --nrml` writes: each block's fit as an OpenQuake NRML 0.5 continuous
+fragility function (PGA in g), a RuntimeWarning for each block without a fit.
 An alpha, a p or a record (by its step and samples) given twice is refused.  Releases the GIL.)");
 }
 

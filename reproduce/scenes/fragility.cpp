@@ -27,6 +27,7 @@
 #include "records/record.hpp"
 #include "records/synthetic.hpp"
 #include "fragility_capacities.hpp"
+#include "fragility_eq27.hpp"
 #include "fragility_scene.hpp"
 #include "fragility_synthetic.hpp"
 #include "records_analysis.hpp"
@@ -63,6 +64,7 @@ bool ill_first_collapse(const Ida& ida) {
 struct SetRun {
     std::string set;
     std::vector<std::string> names;  // each record's row label
+    std::vector<std::string> identities;  // the draw order's keys (identity_of)
     std::vector<std::unique_ptr<dynamics::SampledInput>> owned;
     std::vector<const dynamics::GroundInput*> inputs;
     std::vector<HalfPeriodArray> to;
@@ -72,10 +74,11 @@ struct SetRun {
 };
 
 void add_record(SetRun& s, const records::Record& rec, const std::string& name, const HalfPeriodArray& to,
-                double pulse_half) {
+                double pulse_half, bool generated) {
     s.owned.push_back(std::make_unique<dynamics::SampledInput>(rec.in_g(9.81), rec.dt, rec.name));  // as table1
     s.inputs.push_back(s.owned.back().get());
     s.names.push_back(name);
+    s.identities.push_back(identity_of(*s.owned.back(), generated, name));
     s.to.push_back(to);
     s.pulse_half.push_back(pulse_half);
 }
@@ -86,7 +89,7 @@ void add_record(SetRun& s, const records::Record& rec, const std::string& name, 
 void run_set(SetRun& s, bool reference_mode) {
     studies::FragilityStudyOptions threaded = study_options();
     threaded.threads = batch::default_threads();
-    s.study = studies::fragility_study(s.inputs, kBlocks, threaded);
+    s.study = studies::fragility_study(s.inputs, s.identities, kBlocks, threaded);
     const std::size_t n = s.inputs.size();
     s.reference.assign(kBlocks.size(), std::vector<std::string>(n));
     batch::run_ordered<std::string>(
@@ -119,14 +122,13 @@ void add_points(harness::Table& pt, const SetRun& s, bool with_pulse) {
             pt.row();
             if (!s.set.empty()) pt.add(s.set);
             pt.add(s.names[r]).add(label(ida.alpha)).add(label(ida.p)).add(ida.q_input);
-            auto pulse_columns = [&] {
-                if (!with_pulse) return;
-                if (s.pulse_half[r] <= 0) {
-                    pt.add("-").add("-");
-                    return;
+            auto pulse_columns = [&] {  // and the identity, the row's last cell
+                if (with_pulse && s.pulse_half[r] <= 0) pt.add("-").add("-");
+                if (with_pulse && s.pulse_half[r] > 0) {
+                    const double q27 = q2_n6(ida.p * s.pulse_half[r]);
+                    pt.add(q27).add(studies::non_conservative(ida.point, q27) ? "yes" : "no");
                 }
-                const double q27 = q2_n6(ida.p * s.pulse_half[r]);
-                pt.add(q27).add(studies::non_conservative(ida.point, q27) ? "yes" : "no");
+                pt.add(s.identities[r]);
             };
             if (!ida.point.collapsed) {
                 pt.add("censored").add("-").add("-").add("-").add("-").add(ida.point.q);
@@ -186,19 +188,10 @@ void add_fits(harness::Table& ft, const SetRun& s) {
     }
 }
 
-// Eq. 27 over one set of records (or the union of sets): each record's point
-// and ill-conditioned flag on every block, and its to_k.
-struct Eq27Input {
-    std::string set;
-    std::vector<std::string> names;
-    std::vector<HalfPeriodArray> to;
-    std::vector<std::vector<studies::IdaPoint>> points;  // [r][b]
-    std::vector<std::vector<bool>> ill;                  // [r][b]
-};
-
 void append(Eq27Input& in, const SetRun& s) {
     for (std::size_t r = 0; r < s.names.size(); ++r) {
         in.names.push_back(s.names[r]);
+        in.identities.push_back(s.identities[r]);
         in.to.push_back(s.to[r]);
         in.points.emplace_back();
         in.ill.emplace_back();
@@ -209,88 +202,9 @@ void append(Eq27Input& in, const SetRun& s) {
     }
 }
 
-studies::Eq27Study eq27_of(const Eq27Input& in) {
-    return studies::eq27_from_points(in.points, in.to, kBlocks, kWilsonLevel, {kResamples, kSeed, kBootstrapLevel});
-}
-
-// The notes "margin", "levels" and "zero" of an eq. 27 table, each key
-// followed by " <set>" in the synthetic file.
-void eq27_notes(harness::Table& et, const Eq27Input& in, const studies::Eq27Study& eq27, const std::string& suffix) {
-    // How near a verdict is to flipping: the smallest |ln(collapse q / eq. 27's q)| over the collapsed cases.
-    // The ill-conditioned first collapses, placed within their grid gap, apart.
-    double margin = 1e300, margin_ill = 1e300;
-    std::string margin_at;
-    for (const studies::Eq27Case& c : eq27.cases) {
-        if (!c.point.collapsed) continue;
-        const bool ill = in.ill[c.record][c.block];
-        for (int k = 0; k < studies::kHalfPeriods; ++k) {
-            const double m = std::fabs(std::log(c.point.q / c.q_eq27[k]));
-            if (ill) {
-                margin_ill = std::min(margin_ill, m);
-                continue;
-            }
-            if (m < margin) {
-                margin = m;
-                margin_at = in.names[c.record] + " alpha " + label(kBlocks[c.block].alpha) + " p " +
-                            label(kBlocks[c.block].p) + " to_" + std::to_string(k + 1);
-            }
-        }
-    }
-    char mg[64], mgi[64];
-    std::snprintf(mg, sizeof mg, "%.3g", margin);
-    std::snprintf(mgi, sizeof mgi, "%.3g", margin_ill);
-    et.note("margin" + suffix, std::string("the smallest |ln(collapse q / eq. 27's q)| over the collapsed cases with a "
-                                           "well-conditioned first collapse: ") + mg + " (" + margin_at + "); over those with an "
-                                           "ill-conditioned one: " + (margin_ill < 1e300 ? mgi : "none") +
-                                   "; a verdict flips only if a collapse q moves by that much");
-    // The two intervals at one level: Wilson's at the bootstrap's, width against width.
-    double ratio_lo = 1e300, ratio_hi = 0;
-    std::string zeros;
-    for (int k = 0; k < studies::kHalfPeriods; ++k) {
-        const studies::Eq27Share& s = eq27.shares[k];
-        if (s.non_conservative == 0) {
-            zeros += (zeros.empty() ? "to_" : ", to_") + std::to_string(k + 1);
-            continue;
-        }
-        const studies::WilsonInterval w = studies::wilson_interval(s.non_conservative, s.cases, kBootstrapLevel);
-        const double r = (s.bootstrap.hi - s.bootstrap.lo) / (w.hi - w.lo);
-        ratio_lo = std::min(ratio_lo, r);
-        ratio_hi = std::max(ratio_hi, r);
-    }
-    char lv[400];
-    std::snprintf(lv, sizeof lv,
-                  "the columns hold a %.0f %% bootstrap beside a %.0f %% Wilson interval; at %.0f %% both, the "
-                  "bootstrap's width is %.3g to %.3g times Wilson's over the k with a non-conservative case",
-                  100 * kBootstrapLevel, 100 * kWilsonLevel, 100 * kBootstrapLevel, ratio_lo, ratio_hi);
-    et.note("levels" + suffix, lv);
-    if (!zeros.empty()) {
-        // Clopper-Pearson's upper bound for 0 of n at the two-sided level: 1 - ((1 - level)/2)^(1/n).
-        char z[400];
-        std::snprintf(z, sizeof z,
-                      ": no case and no record non-conservative, so the bootstrap is [0, 0] (no resample can draw a "
-                      "record that is not there); over records, 0 of %d bounds the share of records non-conservative "
-                      "anywhere, and so the share of cases, by %.3g (Clopper-Pearson at %.0f %%)",
-                      eq27.records, 1 - std::pow((1 - kBootstrapLevel) / 2, 1.0 / eq27.records), 100 * kBootstrapLevel);
-        et.note("zero" + suffix, zeros + z);
-    }
-}
-
-void eq27_rows(harness::Table& et, const studies::Eq27Study& eq27, const std::string& set) {
-    for (int k = 0; k < studies::kHalfPeriods; ++k) {
-        const studies::Eq27Share& s = eq27.shares[k];
-        int with_any = 0;
-        for (const studies::Eq27Cell& c : eq27.map) with_any += c.non_conservative[k] > 0;
-        et.row();
-        if (!set.empty()) et.add(set);
-        et.add(k + 1).add(s.non_conservative).add(s.cases).add(s.share).add(s.wilson.lo).add(s.wilson.hi);
-        et.add(with_any).add(s.records_with_any).add(s.records).add(s.bootstrap.lo).add(s.bootstrap.hi);
-        et.add(eq27.bootstrap.level).add(eq27.bootstrap.resamples).add(std::to_string(eq27.bootstrap.seed));
-    }
-}
-
 const std::vector<std::string> kPointColumns = {"record", "alpha", "p", "q_input", "outcome", "q_collapse",
                                                 "q_safe", "q_ill_collapse", "q_ill_safe", "q_censored",
-                                                "intervals", "check", "reference"};
+                                                "intervals", "check", "reference", "identity"};
 const std::vector<std::string> kFitColumns = {
     "alpha", "p", "records", "collapsed", "censored", "ill_conditioned", "median", "beta", "log_likelihood",
     "median_lo", "median_hi", "beta_lo", "beta_hi", "median_ill", "beta_ill", "log_likelihood_ill",
@@ -312,7 +226,7 @@ std::string reference_text(bool reference_mode) {
 }
 
 // The same records for the refine method's files (fragility_capacities.cpp).
-CapacitySet capacity_set(const SetRun& s) { return {s.set, s.names, s.inputs, s.to}; }
+CapacitySet capacity_set(const SetRun& s) { return {s.set, s.names, s.identities, s.inputs, s.to}; }
 
 // ---- The shared records ----
 
@@ -320,7 +234,7 @@ void run_shared_records(SceneContext& ctx, const std::vector<RecordRow>& rows) {
     SetRun s;
     for (const RecordRow& r : rows) {
         const records::Record rec = records::read_any(records_dir() + "/" + r.file);
-        add_record(s, rec, r.file, r.h.to, 0);
+        add_record(s, rec, r.file, r.h.to, 0, false);
     }
     run_set(s, ctx.reference());
     const studies::FragilityStudyOptions o = study_options();
@@ -345,6 +259,7 @@ void run_shared_records(SceneContext& ctx, const std::vector<RecordRow>& rows) {
     pt.note("reference", reference_text(ctx.reference()));
     pt.note("inputs", inputs_text);
     pt.note("columns", kPointColumnsNote);
+    pt.note("identity", kIdentityNote);
     add_points(pt, s, false);
 
     harness::Table ft(kFitColumns);
@@ -405,7 +320,7 @@ void run_synthetic(SceneContext& ctx) {
     sets[1].set = "stochastic";
     for (std::size_t i = 0; i < set_list.size(); ++i) {
         SetRun& s = sets[set_list[i].set == "pulse" ? 0 : 1];
-        add_record(s, set_list[i].record, set_list[i].record.name, h[i].to, set_list[i].pulse_half);
+        add_record(s, set_list[i].record, set_list[i].record.name, h[i].to, set_list[i].pulse_half, true);
     }
     for (SetRun& s : sets) run_set(s, ctx.reference());
     const studies::FragilityStudyOptions o = study_options();
@@ -478,8 +393,7 @@ void run_synthetic(SceneContext& ctx) {
 
     harness::Table pt2([&] {
         std::vector<std::string> c = with_set(kPointColumns);
-        c.push_back("q_eq27_pulse");
-        c.push_back("non_conservative_pulse");
+        c.insert(c.end() - 1, {"q_eq27_pulse", "non_conservative_pulse"});  // the identity last
         return c;
     }());
     pt2.note("scene", "fragility: each synthetic record's first collapse q on each block, from its incremental "
@@ -489,6 +403,7 @@ void run_synthetic(SceneContext& ctx) {
     pt2.note("check", checks);
     pt2.note("reference", reference_text(ctx.reference()));
     pt2.note("inputs", inputs_text);
+    pt2.note("identity", kIdentityNote);
     pt2.note("columns", std::string("set: pulse or stochastic; ") + kPointColumnsNote +
                             "; q_eq27_pulse: eq. 27's q at x = p to_pulse, the pulse's own half-period 1/(2 fp) "
                             "(fragility_synthetic_records.csv), and non_conservative_pulse whether the first collapse "

@@ -78,7 +78,7 @@ CapacityRun run(const CapacitySet& in, bool reference_mode) {
     out.in = &in;
     studies::FragilityStudyOptions o = refine_options();
     o.threads = batch::default_threads();
-    out.study = studies::fragility_study(in.inputs, kBlocks, o);
+    out.study = studies::fragility_study(in.inputs, in.identities, kBlocks, o);
     const std::size_t n = in.inputs.size();
     out.reference.assign(kBlocks.size(), std::vector<std::string>(n));
     batch::run_ordered<std::string>(
@@ -257,6 +257,7 @@ struct Eq27Input {
     std::vector<std::vector<studies::Eq27Capacities>> capacities;  // [r][b]
     std::vector<std::vector<bool>> ill_first, ill_rob;             // [r][b]
     std::vector<HalfPeriodArray> to;
+    std::vector<std::string> identities;
 };
 
 void append(Eq27Input& e, const CapacityRun& run) {
@@ -271,6 +272,7 @@ void append(Eq27Input& e, const CapacityRun& run) {
             e.ill_rob.back().push_back(ill_robust(ida));
         }
         e.to.push_back(run.in->to[r]);
+        e.identities.push_back(run.in->identities[r]);
     }
 }
 
@@ -293,8 +295,8 @@ std::string margin_note(const studies::Eq27Study& s, const std::vector<std::vect
 }
 
 void add_eq27(harness::Table& t, const Eq27Input& e) {
-    const studies::Eq27ByCapacity by = studies::eq27_by_capacity(e.capacities, e.to, kBlocks, kWilsonLevel,
-                                                                 {kResamples, kSeed, kBootstrapLevel});
+    const studies::Eq27ByCapacity by = studies::eq27_by_capacity(e.capacities, e.to, e.identities, kBlocks,
+                                                                 kWilsonLevel, {kResamples, kSeed, kBootstrapLevel});
     const std::string suffix = e.set.empty() ? "" : " " + e.set;
     t.note("margin first overturning" + suffix, margin_note(by.first_overturning, e.ill_first));
     t.note("margin first robust collapse" + suffix, margin_note(by.first_robust_collapse, e.ill_rob));

@@ -21,6 +21,7 @@ namespace rocking::scenes {
 struct CapacitySet {
     std::string set;
     std::vector<std::string> names;  // each record's row label
+    std::vector<std::string> identities;  // the draw order's keys (fragility_scene.hpp, identity_of)
     std::vector<const dynamics::GroundInput*> inputs;
     std::vector<fragility_scene::HalfPeriodArray> to;
 };

@@ -15,6 +15,7 @@
 #include "records_analysis.hpp"
 #include "studies/eq27_at_scale.hpp"
 #include "studies/ida.hpp"
+#include "studies/record_order.hpp"
 #include "studies/scaled_input.hpp"
 
 namespace rocking::scenes::fragility_scene {
@@ -60,10 +61,27 @@ inline std::string reference_verdict(const dynamics::GroundInput& input, double 
     return at(b.collapse) && !at(b.safe) ? "yes" : "no";
 }
 
+// A record's identity, by whose order every bootstrap of the scene draws the
+// records (studies/record_order.hpp), so that no interval depends on the
+// order the records are listed in: a shared record's is the digest of its
+// step and samples; a generated one's the digest of its label, which names
+// every parameter of its generator, since its samples' last bits follow the
+// libm (docs/synthetic.md) and their digest would reorder the draws on
+// another machine.
+inline std::string identity_of(const dynamics::SampledInput& input, bool generated, const std::string& label) {
+    return generated ? studies::text_digest(label) : studies::sample_digest(input);
+}
+
+inline const char* kIdentityNote =
+    "the SHA-256 (hex) by whose order every bootstrap draws the records, in place of the order listed: "
+    "of the record's step (%.17g text and ';') and samples in g as doubles (studies::sample_digest) for a shared "
+    "record, of its label for a generated one";
+
 inline std::string bootstrap_text() {
-    char boot[200];
+    char boot[300];
     std::snprintf(boot, sizeof boot,
                   "%d resamples of the records with replacement, GSL mt19937 seeded %llu (machine-independent), "
+                  "the records drawn in the order of their identities (the points file's identity column), "
                   "percentile interval at %.0f %%",
                   kResamples, static_cast<unsigned long long>(kSeed), 100 * kBootstrapLevel);
     return boot;

@@ -29,6 +29,7 @@
 #include "harness/table.hpp"
 #include "jobs/fragility_plan.hpp"
 #include "studies/eq27_at_scale.hpp"
+#include "studies/record_order.hpp"
 #include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
@@ -306,8 +307,8 @@ std::string study_json(const std::vector<std::string>& files, const Eq27Study& s
         for (int k = 0; k < kHalfPeriods; ++k) by_record[c.record][k] += c.non_conservative[k];
     js << "], \"by_record\": [";
     for (std::size_t r = 0; r < by_record.size(); ++r)
-        js << (r ? ", " : "") << "{\"file\": " << json_string(files[r])
-           << ", \"non_conservative\": " << counts_json(by_record[r]) << "}";
+        js << (r ? ", " : "") << "{\"file\": " << json_string(files[r]) << ", \"sha256\": "
+           << json_string(s.identities[r]) << ", \"non_conservative\": " << counts_json(by_record[r]) << "}";
     js << "], \"map\": [";
     for (std::size_t b = 0; b < s.map.size(); ++b) {
         const studies::Eq27Cell& c = s.map[b];
@@ -420,7 +421,11 @@ int cmd_eq27(int argc, char** argv) {
     const auto points = capacities(c, l, ranks.get());
     if (ranks && ranks->rank() != 0) return 0;
 
-    const Eq27ByCapacity s = studies::eq27_by_capacity(points, l.to, c.blocks, c.study.level, c.study.bootstrap);
+    // The bootstrap draws the records in the order of their samples' digests, not the command line's.
+    std::vector<std::string> identities;
+    for (const auto& input : l.inputs) identities.push_back(studies::sample_digest(*input));
+    const Eq27ByCapacity s =
+        studies::eq27_by_capacity(points, l.to, identities, c.blocks, c.study.level, c.study.bootstrap);
     const Args& a = c.args;
     if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, s);
     if (a.values.count("--png")) write_eq27_png(a.values.at("--png"), c.files, c.study, s, l.to);

@@ -21,6 +21,7 @@
 #include "cli/distinct_inputs.hpp"
 #include "cli/geometry.hpp"
 #include "cli/help.hpp"
+#include "cli/nrml_output.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
@@ -277,7 +278,8 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
            << ", \"records\": [";
         for (std::size_t k = 0; k < files.size(); ++k) {
             const Ida& ida = f.idas[k];
-            js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"q_input\": " << json_number(ida.q_input)
+            js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"sha256\": "
+               << json_string(f.identities[k]) << ", \"q_input\": " << json_number(ida.q_input)
                << ", \"q\": " << json_number(ida.point.q) << ", \"collapsed\": " << (ida.point.collapsed ? "true" : "false")
                << ", \"point_check\": "
                << (ida.point.collapsed && ida.intervals.front().has_lower
@@ -384,7 +386,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     c.files = file_arguments(count, args.data(), first, usage_line("fragility"));
     c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit", "--floor", "--restitution",
                                                "--dt", "--jobs", "--output", "--rows", "--method", "--width",
-                                               "--robust-width", "--png", "--fits"});
+                                               "--robust-width", "--png", "--fits", "--nrml"});
     const Args& a = c.args;
     if (a.values.count("--block")) {
         c.blocks = study_blocks(a);
@@ -398,8 +400,8 @@ Command command_from(int argc, char** argv, bool mpi) {
     }
     c.study = options_from(a);
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
-    check_outputs(a, {"--output", "--rows", "--fits", "--png"}, c.files);
-    refuse_engine_files_over(a, "--rows", {"--output", "--fits", "--png"}, c.files);
+    check_outputs(a, {"--output", "--rows", "--fits", "--png", "--nrml"}, c.files);
+    refuse_engine_files_over(a, "--rows", {"--output", "--fits", "--png", "--nrml"}, c.files);
     require_gnuplot(a);
     if (a.values.count("--rows")) c.engine.output = a.values.at("--rows");
     if (c.engine.resume && c.engine.output.empty())
@@ -475,15 +477,20 @@ int cmd_fragility(int argc, char** argv) {
     if (ranks && ranks->rank() != 0) return 0;
     if (first_error) std::rethrow_exception(first_error);
 
+    // The fits draw the records in the order of their samples' digests (the
+    // plan's, studies/record_order.hpp), not the command line's.
+    std::vector<std::string> identities;
+    for (const batch::InputDigest& in : plan.inputs) identities.push_back(in.digest);
     std::vector<BlockFragility> study(c.blocks.size());
     batch::run_ordered<BlockFragility>(
         c.blocks.size(), batch::PoolOptions{c.engine.threads},
-        [&](std::size_t b) { return studies::block_fragility(c.blocks[b], std::move(idas[b]), c.study); },
+        [&](std::size_t b) { return studies::block_fragility(c.blocks[b], std::move(idas[b]), identities, c.study); },
         [&](std::size_t b, BlockFragility& f) { study[b] = std::move(f); });
     const Args& a = c.args;
     if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, study);
     if (a.values.count("--fits")) write_fragility_fits(a.values.at("--fits"), c.files, c.study, study);
     if (a.values.count("--png")) write_fragility_png(a.values.at("--png"), c.files, c.study, study);
+    if (a.values.count("--nrml")) write_nrml(a.values.at("--nrml"), c.files, c.study, study);
     if (a.json) print_json(c.files, c.study, study);
     else print_text(c.files, c.study, study);
     return 0;

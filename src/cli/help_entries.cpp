@@ -255,7 +255,7 @@ rocking fragility FILE... (--alpha A[,A...] --p P[,P...] | --block BxH[,BxH...])
                   [--q-max Q] [--points N] [--bootstrap K --seed S] [--restitution E|housner]
                   [--method grid|refine [--width W] [--robust-width R]]
                   [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--jobs N] [--output CSV]
-                  [--fits CSV] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]
+                  [--fits CSV] [--nrml XML] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]
 mpirun -np K rocking fragility FILE... --alpha ... --p ... [--rows FILE [--resume]]
 )";
 const char* kFragilityDetails = R"(
@@ -279,12 +279,16 @@ given twice (the same samples, whatever the path) is refused.
                     wider than --robust-width R in ln q, default 5e-3, in [1e-7, 1]) and overturned
                     share per band; the fit then takes the first overturning (docs/fragility.md)
   --bootstrap K     K resamples of the records (0, the default: none; or 2 to 100000), drawn by
-  --seed S          GSL mt19937 from S (1 to 2^32 - 1), required with K
+  --seed S          GSL mt19937 from S (1 to 2^32 - 1), required with K; the records drawn in the
+                    order of their samples' SHA-256, so that the listing's order changes nothing
   --restitution E   theta' after an impact over theta' before, in [0, 1], or housner (the default)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      one row per block and record
   --fits CSV        one row per block (and capacity): the fit's median, beta and bootstrap ends
+  --nrml XML        each block's fit as an OpenQuake NRML 0.5 continuous logncdf fragility function
+                    of PGA (g), limit state overturning: mean and stddev of the PGA itself, theta =
+                    median q alpha (docs/fragility.md, The NRML export)
   --png PNG         each block's fitted curves, empirical points and bootstrap band (gnuplot)
   --jobs N          threads, 1 to 4096 (default: the cores this process may use; under mpirun one
                     a rank); each IDA a job of the batch engine; the results do not depend on it
@@ -293,8 +297,6 @@ given twice (the same samples, whatever the path) is refused.
   --quiet           no progress line on standard error
   --json            machine-readable output
 )";
-// fragility --nrml FILE (issue 40, under way on another branch): its synopsis goes beside
-// [--fits CSV] and its option line after --fits's (help_options_test.sh fails until the help names it).
 
 const char* kEq27 = R"(
 rocking eq27 FILE... [--alpha A[,A...]] [--p-min P] [--p-max P] [--p-points N] [--q-max Q]

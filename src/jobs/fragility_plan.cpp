@@ -6,6 +6,7 @@
 #include "batch/sha256.hpp"
 #include "harness/table.hpp"
 #include "jobs/row_cells.hpp"
+#include "studies/record_order.hpp"
 
 namespace rocking::jobs {
 
@@ -84,7 +85,7 @@ batch::BatchPlan fragility_plan(const FragilityJobs& jobs) {
     plan.digest = identity.hex();
     for (std::size_t k = 0; k < n; ++k)
         plan.inputs.push_back({k < jobs.names.size() ? jobs.names[k] : "record " + std::to_string(k),
-                               sample_digest(*jobs.inputs[k])});
+                               studies::sample_digest(*jobs.inputs[k])});
     plan.run = [&jobs, n](std::size_t j) {
         const studies::BlockShape& block = jobs.blocks[j / n];
         try {

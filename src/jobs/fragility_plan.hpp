@@ -40,7 +40,7 @@ struct FragilityJobs {
 
 // Job j: block j / inputs, input j % inputs.  The digest covers the
 // description, the blocks and the grid; each record is one of the plan's
-// inputs, its digest that of its step and samples as read (jobs/row_cells.hpp's sample_digest),
+// inputs, its digest that of its step and samples as read (studies/record_order.hpp's sample_digest),
 // so that a resume on another study is refused, and one on an edited record
 // refused naming it.
 batch::BatchPlan fragility_plan(const FragilityJobs& jobs);

@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "batch/sha256.hpp"
 #include "harness/table.hpp"
 #include "numerics/number_text.hpp"
 
@@ -48,13 +47,6 @@ std::vector<std::string> split(const std::string& text, char by) {
         parts.push_back(text.substr(at, next - at));
     parts.push_back(text.substr(at));
     return parts;
-}
-
-std::string sample_digest(const dynamics::SampledInput& input) {
-    batch::Sha256 identity;
-    identity.update(harness::format_number(input.dt()) + ";");
-    identity.update(input.samples().data(), input.samples().size() * sizeof(double));
-    return identity.hex();
 }
 
 }  // namespace rocking::jobs

@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/ground_input.hpp"
 #include "studies/intervals.hpp"
 
 namespace rocking::jobs {
@@ -26,11 +25,5 @@ studies::Confirmation confirmation_of(const std::string& name);
 
 // The parts of `text` between each `by`: one part for an empty text.
 std::vector<std::string> split(const std::string& text, char by);
-
-// A record's identity as a study's rows file keeps it (a '# record sha256:'
-// line, results_file.hpp): the SHA-256 of its step and its samples in g, as
-// read.  A file reformatted with the same samples is the same record, and a
-// pipe, read once, has one too.
-std::string sample_digest(const dynamics::SampledInput& input);
 
 }  // namespace rocking::jobs

@@ -8,6 +8,7 @@
 #include "batch/sha256.hpp"
 #include "harness/table.hpp"
 #include "jobs/row_cells.hpp"
+#include "studies/record_order.hpp"
 
 namespace rocking::jobs {
 
@@ -222,7 +223,7 @@ batch::BatchPlan spectrum_plan(const SpectrumJobs& jobs) {
                                      "the engine\")\n" +
                   kColumns;
     plan.digest = digest_of(plan, jobs);
-    plan.inputs.push_back({jobs.name, sample_digest(*jobs.input)});
+    plan.inputs.push_back({jobs.name, studies::sample_digest(*jobs.input)});
     plan.run = [&jobs](std::size_t k) {
         try {
             return batch::JobRow{study_row(k, spectrum_study(*jobs.input, jobs.alphas[k], jobs.grid)), false};

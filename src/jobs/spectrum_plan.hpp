@@ -67,7 +67,7 @@ struct SpectrumJobs {
 // Job k: alphas[k]; the plan's jobs read `jobs`, which must outlive it.  The
 // digest covers the description, the alphas and the grid's options; the
 // record is the plan's one input, its digest that of its step and samples
-// (jobs/row_cells.hpp's sample_digest), so that a resume on another study is refused, and one on
+// (studies/record_order.hpp's sample_digest), so that a resume on another study is refused, and one on
 // an edited record refused naming it.
 batch::BatchPlan spectrum_plan(const SpectrumJobs& jobs);
 

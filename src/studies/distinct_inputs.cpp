@@ -6,7 +6,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "batch/sha256.hpp"
+#include "studies/record_order.hpp"
 
 namespace rocking::studies {
 
@@ -22,14 +22,6 @@ std::string g7(double v) {
     char text[40];
     std::snprintf(text, sizeof text, "%.7g", v);
     return text;
-}
-
-std::string content_digest(const dynamics::SampledInput& input) {
-    batch::Sha256 digest;
-    const double dt = input.dt();
-    digest.update(&dt, sizeof dt);
-    digest.update(input.samples().data(), input.samples().size() * sizeof(double));
-    return digest.hex();
 }
 
 // Whether b is a times a factor, the sign included: the same step and
@@ -65,7 +57,7 @@ void refuse_repeated_records(const std::vector<std::string>& files,
                                     std::to_string(inputs.size()) + " records");
     std::map<std::string, std::size_t> seen;
     for (std::size_t k = 0; k < inputs.size(); ++k) {
-        const auto [first, added] = seen.emplace(content_digest(*inputs[k]), k);
+        const auto [first, added] = seen.emplace(sample_digest(*inputs[k]), k);
         if (!added)
             throw std::invalid_argument(files[k] + ": the same record as " + files[first->second] + " (records " +
                                         std::to_string(first->second + 1) + " and " + std::to_string(k + 1) +

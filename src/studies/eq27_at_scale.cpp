@@ -9,6 +9,7 @@
 #include "batch/pool.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "studies/distinct_inputs.hpp"
+#include "studies/record_order.hpp"
 #include "studies/resampling.hpp"
 
 namespace rocking::studies {
@@ -139,7 +140,8 @@ void tally(Eq27Study& s, const Eq27Bootstrap& bootstrap) {
         for (const auto& r : per_record) share.records_with_any += r[k] > 0;
     }
     if (bootstrap.resamples == 0) return;
-    const std::array<Range, kHalfPeriods> boot = record_bootstrap(per_record, int(s.blocks.size()), bootstrap);
+    const std::array<Range, kHalfPeriods> boot =
+        record_bootstrap(in_draw_order(per_record, draw_order(s.identities)), int(s.blocks.size()), bootstrap);
     for (int k = 0; k < kHalfPeriods; ++k) s.shares[k].bootstrap = boot[k];
     s.bootstrap = bootstrap;
 }
@@ -176,12 +178,15 @@ std::array<Range, kHalfPeriods> record_bootstrap(const std::vector<std::array<in
 
 Eq27Study eq27_from_points(const std::vector<std::vector<IdaPoint>>& points,
                            const std::vector<std::array<double, kHalfPeriods>>& to,
-                           const std::vector<BlockShape>& blocks, double level, const Eq27Bootstrap& bootstrap) {
+                           const std::vector<std::string>& identities, const std::vector<BlockShape>& blocks,
+                           double level, const Eq27Bootstrap& bootstrap) {
     if (points.empty() || blocks.empty()) throw std::invalid_argument("eq27: at least 1 record and 1 block");
     if (to.size() != points.size()) throw std::invalid_argument("eq27: one set of half-periods per record");
+    if (identities.size() != points.size()) throw std::invalid_argument("eq27: one identity per record");
     Eq27Study s;
     s.blocks = blocks;
     s.records = int(points.size());
+    s.identities = identities;
     s.level = level;
     for (std::size_t r = 0; r < points.size(); ++r) {
         if (points[r].size() != blocks.size()) throw std::invalid_argument("eq27: one point per record and block");
@@ -209,7 +214,8 @@ std::string eq27_refine_note(const IdaOptions& ida) {
 
 Eq27ByCapacity eq27_by_capacity(const std::vector<std::vector<Eq27Capacities>>& capacities,
                                 const std::vector<std::array<double, kHalfPeriods>>& to,
-                                const std::vector<BlockShape>& blocks, double level, const Eq27Bootstrap& bootstrap) {
+                                const std::vector<std::string>& identities, const std::vector<BlockShape>& blocks,
+                                double level, const Eq27Bootstrap& bootstrap) {
     std::vector<std::vector<IdaPoint>> first(capacities.size()), robust(capacities.size());
     for (std::size_t r = 0; r < capacities.size(); ++r)
         for (std::size_t b = 0; b < capacities[r].size(); ++b) {
@@ -222,16 +228,19 @@ Eq27ByCapacity eq27_by_capacity(const std::vector<std::vector<Eq27Capacities>>& 
             first[r].push_back(c.first_overturning);
             robust[r].push_back(c.first_robust_collapse);
         }
-    return {eq27_from_points(first, to, blocks, level, bootstrap), eq27_from_points(robust, to, blocks, level, bootstrap)};
+    return {eq27_from_points(first, to, identities, blocks, level, bootstrap),
+            eq27_from_points(robust, to, identities, blocks, level, bootstrap)};
 }
 
 Eq27ByCapacity eq27_at_scale_by_capacity(const std::vector<Eq27Record>& records, const Eq27Options& o) {
     const std::vector<BlockShape> blocks = o.grid.blocks();
     if (o.bootstrap.resamples != 0) check_bootstrap(o.bootstrap);  // before the IDAs, not after
     std::vector<std::array<double, kHalfPeriods>> to;
+    std::vector<std::string> identities;
     for (const Eq27Record& r : records) {
         if (!r.input) throw std::invalid_argument("eq27: a record without an input");
         to.push_back(r.to);
+        identities.push_back(input_digest(*r.input));
     }
     // Every (record, block) IDA a job of the batch engine, in this order.
     std::vector<std::vector<Eq27Capacities>> capacities(records.size());
@@ -243,7 +252,7 @@ Eq27ByCapacity eq27_at_scale_by_capacity(const std::vector<Eq27Record>& records,
             return capacities_of(incremental_dynamic_analysis(*records[job / n].input, b.alpha, b.p, o.ida));
         },
         [&](std::size_t job, Eq27Capacities& c) { capacities[job / n].push_back(c); });
-    return eq27_by_capacity(capacities, to, blocks, o.level, o.bootstrap);
+    return eq27_by_capacity(capacities, to, identities, blocks, o.level, o.bootstrap);
 }
 
 // The IDA's point is its first overturning (studies/ida.cpp, summarise).

@@ -129,6 +129,7 @@ struct Eq27Study {
     std::vector<Eq27Case> cases;  // record-major: cases[r * blocks + b]
     std::array<Eq27Share, kHalfPeriods> shares{};
     std::vector<Eq27Cell> map;    // one per block, in blocks' order
+    std::vector<std::string> identities;  // each record's, in the records' order (the bootstrap's draw order)
     int records = 0;
     int censored = 0;             // cases whose record never overturned the block up to q_max
     double level = 0.95;          // Wilson's
@@ -140,9 +141,10 @@ struct Eq27Study {
 bool non_conservative(const IdaPoint& point, double q_eq27);
 
 // The bootstrap of the shares over records: counts[r][k] the cases of record
-// r non-conservative for k, of `blocks` cases per record.  Each of the
-// resamples draws counts.size() records with replacement (SeededRng::index,
-// in order), the share for k is the sum of the drawn records' counts over
+// r non-conservative for k, of `blocks` cases per record, the records in the
+// order to draw them (record_order.hpp).  Each of the resamples draws
+// counts.size() records with replacement (SeededRng::index, in order), the
+// share for k is the sum of the drawn records' counts over
 // counts.size() * blocks, and the result per k is the percentile interval of
 // the resamples' shares at the level.  The same draws serve every k.
 // Throws std::invalid_argument with no record, blocks < 1, a count outside
@@ -151,17 +153,21 @@ std::array<Range, kHalfPeriods> record_bootstrap(const std::vector<std::array<in
                                                  const Eq27Bootstrap& bootstrap);
 
 // The study from the points already known: points[r][b] for record r and
-// block b, to[r] the record's half-periods; Wilson at `level`, and the
-// bootstrap over records unless its resamples are 0.  Throws
-// std::invalid_argument when the sizes disagree, there is no record or block,
-// a p * to_k is not finite and > 0, or the bootstrap's arguments are refused.
+// block b, to[r] the record's half-periods, identities[r] its identity
+// (record_order.hpp: sample_digest for a record), whose order the bootstrap
+// draws the records in; Wilson at `level`, and the bootstrap over records
+// unless its resamples are 0.  The cases and counts stay in the records'
+// given order.  Throws std::invalid_argument when the sizes disagree, there
+// is no record or block, a p * to_k is not finite and > 0, or the
+// bootstrap's arguments are refused.
 Eq27Study eq27_from_points(const std::vector<std::vector<IdaPoint>>& points,
                            const std::vector<std::array<double, kHalfPeriods>>& to,
-                           const std::vector<BlockShape>& blocks, double level,
-                           const Eq27Bootstrap& bootstrap = Eq27Bootstrap{});
+                           const std::vector<std::string>& identities, const std::vector<BlockShape>& blocks,
+                           double level, const Eq27Bootstrap& bootstrap = Eq27Bootstrap{});
 
 // The IDA of every record on every block of the grid, then eq27_from_points
-// on each IDA's point (its first overturning, either method).  Throws what
+// on each IDA's point (its first overturning, either method), the records'
+// identities their inputs' (input_digest).  Throws what
 // incremental_dynamic_analysis and eq27_from_points throw.
 Eq27Study eq27_at_scale(const std::vector<Eq27Record>& records, const Eq27Options& options);
 
@@ -196,19 +202,20 @@ struct Eq27ByCapacity {
 };
 
 // eq27_from_points under each capacity: capacities[r][b] for record r and
-// block b.  Both bootstraps take the same seed, so that they draw the same
-// records in the same order (paired resamples: a difference between the
+// block b, identities[r] its identity.  Both bootstraps take the same seed
+// and draw order, so that they draw the same records in the same order (paired resamples: a difference between the
 // two intervals is the verdicts', not the draws').  Throws what
 // eq27_from_points throws, and std::invalid_argument for a case whose first
 // robust collapse lies below its first overturning, or is found where the
 // first overturning is not (no IDA gives that).
 Eq27ByCapacity eq27_by_capacity(const std::vector<std::vector<Eq27Capacities>>& capacities,
                                 const std::vector<std::array<double, kHalfPeriods>>& to,
-                                const std::vector<BlockShape>& blocks, double level,
-                                const Eq27Bootstrap& bootstrap = Eq27Bootstrap{});
+                                const std::vector<std::string>& identities, const std::vector<BlockShape>& blocks,
+                                double level, const Eq27Bootstrap& bootstrap = Eq27Bootstrap{});
 
 // The IDA of every record on every block of the grid (options.ida: either
-// method), then eq27_by_capacity.  Throws what eq27_at_scale throws.
+// method), then eq27_by_capacity, the identities the inputs' (input_digest).
+// Throws what eq27_at_scale throws.
 Eq27ByCapacity eq27_at_scale_by_capacity(const std::vector<Eq27Record>& records, const Eq27Options& options);
 
 }  // namespace rocking::studies

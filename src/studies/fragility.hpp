@@ -78,8 +78,11 @@ struct BootstrapInterval {
 
 // The records resampled with replacement `resamples` times (GSL's mt19937,
 // seeded: the same seed gives the same interval on any machine;
-// studies/resampling.hpp), each resample refitted; the percentile interval at
-// `level` (e.g. 0.9).  A resample whose ln L has no maximum (why_no_maximum:
+// studies/resampling.hpp), drawn by their positions in `points`, which a
+// study gives in its draw order (record_order.hpp) so that the interval does
+// not depend on the order the records were listed in; each resample
+// refitted; the percentile interval at `level` (e.g. 0.9).  A resample
+// whose ln L has no maximum (why_no_maximum:
 // say every draw of one record) is redrawn, so the interval is over resamples
 // that have a fit.  Throws std::invalid_argument where the points have none.
 BootstrapInterval bootstrap(const std::vector<IdaPoint>& points, int resamples, std::uint64_t seed, double level);

@@ -9,6 +9,7 @@
 #include "batch/pool.hpp"
 #include "dynamics/escape_margin.hpp"
 #include "studies/overturning_set.hpp"
+#include "studies/record_order.hpp"
 #include "studies/scaled_input.hpp"
 #include "studies/spectrum.hpp"
 #include "studies/search_alpha.hpp"
@@ -272,30 +273,22 @@ namespace {
 
 // Points whose ln L has no maximum (no collapse, or every collapse at one q
 // with no censored record above it: the same record twice, say) are an
-// answer about the records, not an error.
-void fit_block(BlockFragility& f, const FragilityStudyOptions& o) {
-    f.no_fit = why_no_maximum(f.points);
-    if (!f.no_fit.empty()) return;
-    f.fit = fit_lognormal(f.points);
-    f.fitted = true;
-    if (o.resamples > 0) {
-        f.interval = bootstrap(f.points, o.resamples, o.seed, o.level);
-        f.bootstrapped = true;
-    }
-}
-
-void fit_capacity(CapacityFit& c, const FragilityStudyOptions& o) {
-    c.no_fit = why_no_maximum(c.points);
+// answer about the records, not an error.  `points` in the draw order.
+void fit_capacity(CapacityFit& c, const std::vector<IdaPoint>& points, const FragilityStudyOptions& o) {
+    c.no_fit = why_no_maximum(points);
     if (!c.no_fit.empty()) return;
-    c.fit = fit_lognormal(c.points);
+    c.fit = fit_lognormal(points);
     c.fitted = true;
     if (o.resamples > 0) {
-        c.interval = bootstrap(c.points, o.resamples, o.seed, o.level);
+        c.interval = bootstrap(points, o.resamples, o.seed, o.level);
         c.bootstrapped = true;
     }
 }
 
-void fit_stripe_set(StripeFit& s, const std::vector<Ida>& idas, const FragilityStudyOptions& o) {
+// The shares are kept in the IDAs' order (a front end lists them so); the
+// stripes' sums, the fit and the bootstrap take them in the draw order.
+void fit_stripe_set(StripeFit& s, const std::vector<Ida>& idas, const std::vector<std::size_t>& order,
+                    const FragilityStudyOptions& o) {
     std::vector<std::vector<Span>> sets;
     for (const Ida& ida : idas) {
         std::vector<Span> set;
@@ -303,37 +296,50 @@ void fit_stripe_set(StripeFit& s, const std::vector<Ida>& idas, const FragilityS
         sets.push_back(std::move(set));
     }
     s.shares = stripe_shares(sets, o.ida.q_min, o.ida.q_max, o.ida.points);
-    s.stripes = stripes_of(s.shares);
+    StripeShares drawn = s.shares;
+    drawn.share = in_draw_order(s.shares.share, order);
+    s.stripes = stripes_of(drawn);
     s.no_fit = why_no_stripe_maximum(s.stripes);
     if (!s.no_fit.empty()) return;
     s.fit = fit_stripes(s.stripes);
     s.fitted = true;
     if (o.resamples > 0) {
-        s.interval = bootstrap_stripes(s.shares, o.resamples, o.seed, o.level);
+        s.interval = bootstrap_stripes(drawn, o.resamples, o.seed, o.level);
         s.bootstrapped = true;
     }
 }
 
 }  // namespace
 
-BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, const FragilityStudyOptions& o) {
+BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, const std::vector<std::string>& identities,
+                               const FragilityStudyOptions& o) {
     BlockFragility f;
     f.block = block;
     for (const Ida& ida : idas) f.points.push_back(ida.point);
     f.idas = std::move(idas);
+    f.identities = identities;
+    f.draw_order = draw_order(identities);
+    const std::vector<IdaPoint> drawn = in_draw_order(f.points, f.draw_order);
     f.empirical = empirical_curve(f.points);
-    fit_block(f, o);
+    CapacityFit first;
+    fit_capacity(first, drawn, o);
+    f.fitted = first.fitted, f.no_fit = first.no_fit, f.fit = first.fit;
+    f.bootstrapped = first.bootstrapped, f.interval = first.interval;
     if (o.ida.method == IdaOptions::Method::refine && !f.idas.empty()) {
         f.three_ways = true;
         for (const Ida& ida : f.idas) f.robust.points.push_back(ida.first_robust_collapse);
-        fit_capacity(f.robust, o);
-        fit_stripe_set(f.stripes, f.idas, o);
+        fit_capacity(f.robust, in_draw_order(f.robust.points, f.draw_order), o);
+        fit_stripe_set(f.stripes, f.idas, f.draw_order, o);
     }
     return f;
 }
 
 std::vector<BlockFragility> fragility_study(const std::vector<const GroundInput*>& inputs,
+                                            const std::vector<std::string>& identities,
                                             const std::vector<BlockShape>& blocks, const FragilityStudyOptions& o) {
+    if (identities.size() != inputs.size())
+        throw std::invalid_argument("fragility: " + std::to_string(identities.size()) + " identities for " +
+                                    std::to_string(inputs.size()) + " records");
     // Every (block, input) IDA is a job of the batch engine, block by block;
     // then every block's fit.  The pool hands the results back in this order,
     // so the study is the same on any number of threads.
@@ -348,9 +354,15 @@ std::vector<BlockFragility> fragility_study(const std::vector<const GroundInput*
         [&](std::size_t job, Ida& ida) { idas[job / n].push_back(std::move(ida)); });
     std::vector<BlockFragility> out(blocks.size());
     batch::run_ordered<BlockFragility>(
-        blocks.size(), pool, [&](std::size_t b) { return block_fragility(blocks[b], std::move(idas[b]), o); },
+        blocks.size(), pool,
+        [&](std::size_t b) { return block_fragility(blocks[b], std::move(idas[b]), identities, o); },
         [&](std::size_t b, BlockFragility& f) { out[b] = std::move(f); });
     return out;
+}
+
+std::vector<BlockFragility> fragility_study(const std::vector<const GroundInput*>& inputs,
+                                            const std::vector<BlockShape>& blocks, const FragilityStudyOptions& o) {
+    return fragility_study(inputs, input_digests(inputs), blocks, o);
 }
 
 }  // namespace rocking::studies

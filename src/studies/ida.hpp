@@ -158,7 +158,13 @@ struct StripeFit {
 struct BlockFragility {
     BlockShape block;
     std::vector<Ida> idas;            // one per input, in the inputs' order
-    std::vector<IdaPoint> points;     // each IDA's point
+    std::vector<IdaPoint> points;     // each IDA's point, in the inputs' order
+    // Each record's identity (record_order.hpp), in the inputs' order, and
+    // the draw order they set: every fit and bootstrap below takes the
+    // records in it, so that none depends on the order the records were
+    // given in.
+    std::vector<std::string> identities;
+    std::vector<std::size_t> draw_order;
     bool fitted = false;              // false where ln L has no maximum (why_no_maximum)
     std::string no_fit;               // why not fitted
     LognormalFragility fit;
@@ -181,16 +187,24 @@ struct BlockFragility {
 // refine method (options.ida.method) also the fit on the first robust
 // collapses and the multiple-stripe fit on the main grid's stripes
 // (stripe_shares of options.ida's q_min, q_max and points), each with its
-// bootstrap at the same resamples, seed and level.
+// bootstrap at the same resamples, seed and level.  `identities` (one per
+// IDA: record_order.hpp, sample_digest for a record) set the draw order in
+// which every fit and bootstrap takes the records, so that the three
+// bootstraps draw the same records and none depends on the order given.
 // fragility_study's second half, for a front end that ran the IDAs elsewhere
 // (rocking fragility on the batch engine's ranks).  Throws what fit_lognormal,
 // bootstrap, fit_stripes and bootstrap_stripes throw on data that have a
-// maximum.
-BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, const FragilityStudyOptions& options);
+// maximum, and std::invalid_argument for an identity count other than the IDAs'.
+BlockFragility block_fragility(const BlockShape& block, std::vector<Ida> idas, const std::vector<std::string>& identities,
+                               const FragilityStudyOptions& options);
 
 // For each block, the IDA of every input, the lognormal fit of their points
-// with its bootstrap interval, and the empirical curve.  Throws what
-// incremental_dynamic_analysis and bootstrap throw.
+// with its bootstrap interval, and the empirical curve; the draw order from
+// `identities` (one per input), or from input_digests(inputs) without them.
+// Throws what incremental_dynamic_analysis, bootstrap and block_fragility throw.
+std::vector<BlockFragility> fragility_study(const std::vector<const dynamics::GroundInput*>& inputs,
+                                            const std::vector<std::string>& identities,
+                                            const std::vector<BlockShape>& blocks, const FragilityStudyOptions& options);
 std::vector<BlockFragility> fragility_study(const std::vector<const dynamics::GroundInput*>& inputs,
                                             const std::vector<BlockShape>& blocks, const FragilityStudyOptions& options);
 

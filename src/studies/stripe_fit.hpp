@@ -105,7 +105,8 @@ StripeFragility fit_stripes(const std::vector<Stripe>& stripes);
 
 // The records resampled with replacement `resamples` times by SeededRng
 // (resampling.hpp; one draw per record, as fragility.hpp's bootstrap draws,
-// so that the same seed resamples the same records), each resample's stripes
+// so that the same seed resamples the same records), by their positions in
+// shares.share (a study's draw order, record_order.hpp), each resample's stripes
 // (S1) refitted; a resample whose (S2) has no maximum is redrawn; the
 // percentile interval at `level`.  Throws std::invalid_argument where the
 // shares themselves have no maximum, for resamples < 2, a level not in
