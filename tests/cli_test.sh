@@ -187,7 +187,7 @@ check "no theta(t_fin) after a fall" '"theta_tfin_over_alpha": null' "$rocking" 
 check "--rd needs a case"            "--rd does not apply to --record" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --rd 0.9
 check "one input only"               "give exactly one input" "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --case 2
 status "one input only exits 2"      2 "$rocking" simulate --record "$step" --unit g --record-dt 0.1 --alpha 0.1 --p 1 --case 2
-check "missing record is named"      "no-such-file:0: cannot open the file" "$rocking" simulate --record no-such-file --alpha 0.1 --p 1
+check "missing record is named"      "no-such-file: cannot open the file" "$rocking" simulate --record no-such-file --alpha 0.1 --p 1
 status "missing record exits 1"      1 "$rocking" simulate --record no-such-file --alpha 0.1 --p 1
 # A one-sine pulse 1e20 times slower than the block fell at its rounding's time (35 s, the closed form's 24.4 s).
 check "a one-sine far slower than the block is refused" "--wp: must be at least 1e-6 p = 2e-06 rad/s (got 1e-20)" "$rocking" simulate --one-sine --ap 0.45 --wp 1e-20 --alpha 0.15 --p 2

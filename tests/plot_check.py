@@ -152,7 +152,7 @@ def check_fragility(script_path, png, json_path, fits_path=None):
     rows = (n + columns - 1) // columns
     size = png_size(png)
     height = 36 + rows * 470 + 24 + 16 * caption_lines(script)
-    want(size == (620 * columns, height), "fragility PNG size %r, wanted %d x %d" % (size, 620 * columns, height))
+    want(size == (760 * columns, height), "fragility PNG size %r, wanted %d x %d" % (size, 760 * columns, height))
     blocks = datablocks(script)
     refine = d["grid"].get("method") == "refine"
     q_min, q_max = d["grid"]["q_min"], d["grid"]["q_max"]

@@ -64,7 +64,7 @@ if [[ -e "$tmp/nognuplot.png" ]]; then echo "FAIL: a PNG left behind without gnu
 expect "no gnuplot said before the record" 1 "--png $tmp/nognuplot.png: gnuplot is not installed" env PATH=/nonexistent "$rocking" spectrum no-such-file --alpha 0.1 --png "$tmp/nognuplot.png"
 
 # The text: intervals with their checks, the grid's limit, Table 1's p.
-expect "text intervals"        0 $'alpha = 0.2: overturns for p (rad/s) in\n  [' "${run[@]}" --alpha 0.1,0.2
+expect "text intervals"        0 $'alpha = 0.2: overturns for p (rad/s) in (H: the heights of the blocks of this alpha at its ends)\n  [' "${run[@]}" --alpha 0.1,0.2
 expect "text states the limit" 0 "islands narrower than half a step (x1.01164) may be missed" "${run[@]}" --alpha 0.1
 expect "text names Table 1"    0 "Table 1's search (p from 0.3 by x1.01, the first collapse): p = 2.022946 rad/s" "${run[@]}" --alpha 0.1
 expect "text: confirmed"       0 "from: confirmed; to: confirmed" "${run[@]}" --alpha 0.1
@@ -287,6 +287,11 @@ if [[ -f "$norcia" ]]; then
 import json, math, subprocess, sys
 d = json.load(open(sys.argv[1]))
 checked, checked_inside = 0, False
+for s in d["spectra"]:  # each interval's ends as heights, eqs. 2 and 4 inverted here
+    for i in s["intervals"]:
+        for end in ("from", "to"):
+            H = 2 * 3 * 9.81 / (4 * i[end] ** 2) * math.cos(s["alpha"])
+            assert abs(i["height_" + end] - H) < 1e-12 * H, (i, H)
 for m in d["marks"]:
     sp = [s for s in d["spectra"] if s["alpha"] == m["alpha"]][0]
     B, H = (float(v) for v in m["built"].split("x"))

@@ -1,6 +1,8 @@
 // The Python module's shared pieces (common.hpp).
 #include "common.hpp"
 
+#include "records/floor_motion.hpp"
+
 #include <pybind11/eval.h>
 
 #include <gsl/gsl_errno.h>
@@ -582,6 +584,23 @@ void add_block_members(py::dict& out, const dynamics::GivenBlock& b) {
     out["thickness"] = b.sized() ? py::object(py::float_(b.thickness)) : py::object(py::none());
     out["height"] = b.sized() ? py::object(py::float_(b.height)) : py::object(py::none());
     out["R"] = b.sized() ? py::object(py::float_(b.block.R)) : py::object(py::none());
+}
+
+RecordPtr with_floor(const RecordPtr& ground, const std::optional<Text>& floor) {
+    const std::optional<std::string> text_given = string_argument(floor, "floor");
+    if (!text_given) return ground;
+    records::FloorModel m;
+    try {
+        m = records::parse_floor_model(*text_given);
+    } catch (const std::invalid_argument& e) {
+        refuse("floor: " + std::string(e.what()) + " (T1,G[,zeta]: the building's first period in s, the floor's "
+               "participation Gamma phi, the damping ratio)");
+    }
+    try {
+        return std::make_shared<const records::Record>(records::floor_record(*ground, m));
+    } catch (const std::invalid_argument& e) {
+        refuse("floor " + *text_given + " on " + label_of(*ground) + ": " + e.what());
+    }
 }
 
 }  // namespace rocking::python

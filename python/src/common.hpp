@@ -105,6 +105,10 @@ RecordPtr record_argument(py::handle obj, const std::string& what);
 // A path (str, bytes or os.PathLike) as os.fsencode gives it; a NUL in it is refused.
 std::string file_argument(py::handle obj, const std::string& what);
 std::vector<RecordPtr> record_list(py::handle obj, const std::string& what);
+// floor="T1,G[,zeta]" as the command line's --floor: the floor's record of
+// the building's first mode in place of the ground's (records/floor_motion.hpp);
+// the record itself without it.
+RecordPtr with_floor(const RecordPtr& ground, const std::optional<Text>& floor);
 // The record's file as given, or its name when it was made from an array:
 // what the command line's messages and "file" fields hold.
 std::string label_of(const records::Record& r);

@@ -57,7 +57,7 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
                      const std::optional<Real>& rtol_given, const std::optional<Real>& atol_given,
                      const std::optional<Text>& criterion_given, const py::object& restitution_given,
                      const Flag& paper_given, const std::optional<Real>& dt_given, const Real& free_time_given,
-                     const py::kwargs& extra) {
+                     const std::optional<Text>& floor_given, const py::kwargs& extra) {
     no_other_keywords(extra, "simulate", "simulate");
     // Each argument converted, or refused naming it, in the signature's order.
     const dynamics::GivenBlock given = block_argument(thickness_given, height_given, half_height_given, alpha_given, p_given);
@@ -103,6 +103,7 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
     if (one_sine + has_record + has_train != 1)
         refuse("give exactly one input: case or train, one_sine=True, or record");
     if (!one_sine && (ap || wp)) refuse("ap and wp go with one_sine=True");
+    if (!has_record && floor_given) refuse("floor goes with record");
 
     std::unique_ptr<GroundInput> input;
     RecordPtr kept;  // the record stays alive while the run reads it
@@ -113,7 +114,7 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
         if (x) refuse("x does not apply to record");
         if (pulses) refuse("pulses does not apply to record");
         if (pga && q) refuse("give at most one of pga and q");
-        kept = record_argument(record, "record");
+        kept = with_floor(record_argument(record, "record"), floor_given);
         if (pga || q) {
             scaled_to = pga ? *pga : *q * alpha;
             if (!(*scaled_to > 0)) refuse("the PGA must be > 0");
@@ -246,7 +247,7 @@ void init_dynamics(py::module_& m) {
           "to"_a = py::none(), "x"_a = py::none(), "pga"_a = py::none(), "q"_a = py::none(), "rd"_a = py::none(),
           "one_sine"_a = false, "ap"_a = py::none(), "wp"_a = py::none(), "record"_a = py::none(),
           "model"_a = "linearised", "solver"_a = py::none(), "rtol"_a = py::none(), "atol"_a = py::none(),
-          "criterion"_a = py::none(), "restitution"_a = py::none(), "paper"_a = false, "dt"_a = 0.01, "free_time"_a = 0.0,
+          "criterion"_a = py::none(), "restitution"_a = py::none(), "paper"_a = false, "dt"_a = 0.01, "free_time"_a = 0.0, "floor"_a = py::none(),
           R"(`rocking simulate --json`: one block under a pulse train, a one-sine pulse or a record.
 
 Geometry: thickness and height (m, full dimensions: alpha = atan(B/H), eqs. 2, 4), or alpha with

@@ -363,7 +363,7 @@ py::dict collapse(py::handle record, const Real& alpha_given, const Text& model,
 py::dict assess(py::handle records_given, const std::optional<Real>& thickness, const std::optional<Real>& height,
                 const std::optional<Real>& half_height, const std::optional<Real>& alpha_given,
                 const std::optional<Real>& p_given, const Real& width_given, const py::object& restitution,
-                const py::kwargs& extra) {
+                const std::optional<Text>& floor, const py::kwargs& extra) {
     no_other_keywords(extra, "assess", "assess");
     const dynamics::GivenBlock given = block_argument(thickness, height, half_height, alpha_given, p_given);
     const double alpha = given.alpha;
@@ -377,6 +377,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
     std::vector<RecordPtr> held;
     if (py::isinstance<py::list>(records_given) || py::isinstance<py::tuple>(records_given)) held = record_list(records_given, "record");
     else held.push_back(record_argument(records_given, "record"));
+    for (RecordPtr& r : held) r = with_floor(r, floor);
     std::vector<records::PeakMotion> motions;
     std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
     std::vector<const dynamics::SampledInput*> views;
@@ -542,7 +543,7 @@ linear between samples (Nigam & Jennings 1969), at its samples.  Releases the GI
 record overturns the block, then refined.  Not a bound (docs/findings.md, T1b).  Releases the GIL.)");
     m.def("assess", gsl_checked(&assess), "record"_a, py::kw_only(), "thickness"_a = py::none(), "height"_a = py::none(),
           "half_height"_a = py::none(), "alpha"_a = py::none(), "p"_a = py::none(), "width"_a = 1e-3,
-          "restitution"_a = "housner",
+          "restitution"_a = "housner", "floor"_a = py::none(),
           R"(`rocking assess --json`: the block (thickness and height in m, or alpha with height, half_height or p)
 against one record or a list: eq. 27's check with its ratio and margin, the run on each record, the
 scale factors at which the block first overturns and first robustly collapses, the nearest

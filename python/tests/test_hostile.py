@@ -153,7 +153,7 @@ def test_a_file_name_that_is_not_utf8_stays_in_the_message(tmp_path):
                           capture_output=True)
     assert done.returncode == 1
     assert str(e.value) == os.fsdecode(done.stderr.splitlines()[0])[len("rocking record: "):]
-    assert str(e.value).startswith(os.fsdecode(missing) + ":0: cannot open the file")
+    assert str(e.value).startswith(os.fsdecode(missing) + ": cannot open the file")
 
 
 def test_a_path_with_a_nul_is_refused_not_cut_short(tmp_path):

@@ -107,6 +107,19 @@ def test_the_engineers_blocks_and_restitution_are_the_command_lines(synthetic):
         rq.fragility(records[:2], block="0.6x4", alpha=0.1)
 
 
+def test_floor_is_the_command_lines(records):
+    # floor="T1,G" as --floor T1,G (issue 40): the floor's record in place of the ground's.
+    path = str(records / NORCIA)
+    block = ["--thickness", 0.25, "--height", 2, "--floor", "0.5,1.5"]
+    assert_same(rq.simulate(record=path, thickness=0.25, height=2, floor="0.5,1.5", dt=None),
+                cli("simulate", "--record", path, *block))
+    assert_same(rq.assess(path, thickness=0.25, height=2, floor="0.5,1.5"), cli("assess", path, *block))
+    check_spectrum(rq.spectrum(path, alpha=0.12, points=30, floor="0.5,1.5"),
+                   cli("spectrum", path, "--alpha", 0.12, "--points", 30, "--floor", "0.5,1.5"))
+    with pytest.raises(ValueError, match="^floor: floor model '0.5'"):
+        rq.assess(path, thickness=0.25, height=2, floor="0.5")
+
+
 def test_a_study_takes_records_made_from_arrays(synthetic):
     # The same samples as an array give the same study; only the record's name and file differ.
     from_file = rq.read_record(synthetic[1], unit="m/s2")

@@ -27,7 +27,7 @@ namespace {
 
 using studies::BlockFragility;
 
-constexpr int kPanelWidth = 620, kLeft = 70, kRight = 20;
+constexpr int kPanelWidth = 760, kLeft = 70, kRight = 20;
 constexpr int kHeader = 36, kAbove = 50, kArea = 300, kBelow = 50;
 constexpr int kKey = 70;  // the panel's key, below its axis
 constexpr int kPanelHeight = kAbove + kArea + kBelow + kKey;

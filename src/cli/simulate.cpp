@@ -198,7 +198,9 @@ int cmd_simulate(int argc, char** argv) {
     } else {
         std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
         std::printf("  model:  %s%s\n  block:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(),
-                    paper ? " (--paper: the paper's setting)" : "", describe_block(given).c_str(),
+                    paper ? " (--paper: the paper's setting)"
+                    : model.restitution == housner_restitution(alpha) ? " (Housner's 1 - 1.5 sin^2 alpha)" : "",
+                    describe_block(given).c_str(),
                     input->describe().c_str(), solver_name(options.solver.kind).c_str(), tolerance.c_str());
         // A block that fell during the input has no theta(t_fin) to print: it lies on the ground.
         if (r.overturned_during_input)

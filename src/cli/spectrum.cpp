@@ -97,8 +97,11 @@ std::string standing(const Boundary& b) {
     return b.detail.empty() ? name : name + " (" + b.detail + ")";
 }
 
-std::string interval_text(const Interval& in) {
-    return "[" + g7(in.from) + ", " + g7(in.to) + "]  from: " +
+// [p_from, p_to] rad/s with the heights of the blocks of this alpha at its ends
+// (H = 2 R cos alpha, R = 3 g/(4 p^2): the larger block at p_from).
+std::string interval_text(const Interval& in, double alpha) {
+    return "[" + g7(in.from) + ", " + g7(in.to) + "] (H " + significant(studies::height_at_p(alpha, in.from), 4) + " to " +
+           significant(studies::height_at_p(alpha, in.to), 4) + " m)  from: " +
            (in.has_lower ? standing(in.lower) : std::string("the grid's start (the set may go on below)")) +
            "; to: " + (in.has_upper ? standing(in.upper) : std::string("the grid's end (the set may go on above)"));
 }
@@ -174,13 +177,13 @@ void print_text(const std::string& path, const records::Record& r, const Spectru
         else if (sp.intervals.empty())
             std::printf("alpha = %g: no overturning for p from %g to %g rad/s on the grid\n", sp.alpha, o.p_min, o.p_max);
         else {
-            std::printf("alpha = %g: overturns for p (rad/s) in\n", sp.alpha);
+            std::printf("alpha = %g: overturns for p (rad/s) in (H: the heights of the blocks of this alpha at its ends)\n", sp.alpha);
             for (std::size_t i = 0; i < sp.intervals.size(); ++i) {
                 if (sp.refined && i == kIntervalsShown) {
                     std::printf("  ... %zu more intervals (--json or --output lists every one)\n", sp.intervals.size() - i);
                     break;
                 }
-                std::printf("  %s\n", interval_text(sp.intervals[i]).c_str());
+                std::printf("  %s\n", interval_text(sp.intervals[i], sp.alpha).c_str());
             }
         }
         if (sp.refined) std::printf("%s", refine_lines(sp).c_str());
@@ -246,6 +249,8 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
         for (std::size_t i = 0; i < sp.intervals.size(); ++i) {
             const Interval& in = sp.intervals[i];
             js << (i ? ", " : "") << "{\"from\": " << json_number(in.from) << ", \"to\": " << json_number(in.to)
+               << ", \"height_from\": " << json_number(studies::height_at_p(sp.alpha, in.from))
+               << ", \"height_to\": " << json_number(studies::height_at_p(sp.alpha, in.to))
                << ", \"lower\": " << boundary_json(in, true) << ", \"upper\": " << boundary_json(in, false) << "}";
         }
         js << "]";
@@ -285,7 +290,7 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
 std::string intervals_note(const Spectrum& sp) {
     if (sp.intervals.empty()) return "none";
     std::string text;
-    for (const Interval& in : sp.intervals) text += (text.empty() ? "" : "; ") + interval_text(in);
+    for (const Interval& in : sp.intervals) text += (text.empty() ? "" : "; ") + interval_text(in, sp.alpha);
     return text;
 }
 

@@ -26,9 +26,11 @@ struct Record {
 };
 
 // A malformed file: what() reads "<path>:<line>: <problem>" (line 0: the whole file).
+// "path:line: problem", or "path: problem" where no line is at fault (line 0:
+// the file cannot be opened or read as a whole).
 struct RecordError : std::runtime_error {
     RecordError(const std::string& path, int line, const std::string& problem)
-        : std::runtime_error(path + ":" + std::to_string(line) + ": " + problem) {}
+        : std::runtime_error(path + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + problem) {}
 };
 
 // Caps on what a reader takes in, so that /dev/zero, an endless line or a
