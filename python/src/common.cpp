@@ -1,8 +1,6 @@
 // The Python module's shared pieces (common.hpp).
 #include "common.hpp"
 
-#include "records/floor_motion.hpp"
-
 #include <pybind11/eval.h>
 
 #include <gsl/gsl_errno.h>
@@ -561,46 +559,6 @@ std::string significant(double v, int n) {
     char text[48];
     std::snprintf(text, sizeof text, "%.*g", n, v);
     return text;
-}
-
-dynamics::GivenBlock block_argument(const std::optional<Real>& thickness, const std::optional<Real>& height,
-                                    const std::optional<Real>& half_height, const std::optional<Real>& alpha,
-                                    const std::optional<Real>& p) {
-    dynamics::BlockSpec s;
-    s.thickness = number(thickness, "thickness");
-    s.height = number(height, "height");
-    s.half_height = number(half_height, "half_height");
-    s.alpha = number(alpha, "alpha");
-    s.p = number(p, "p");
-    try {
-        return dynamics::given_block(s, [](const std::string& name) { return name; });
-    } catch (const std::invalid_argument& e) {
-        refuse(e.what());
-    }
-}
-
-void add_block_members(py::dict& out, const dynamics::GivenBlock& b) {
-    out["given"] = dynamics::given_name(b);
-    out["thickness"] = b.sized() ? py::object(py::float_(b.thickness)) : py::object(py::none());
-    out["height"] = b.sized() ? py::object(py::float_(b.height)) : py::object(py::none());
-    out["R"] = b.sized() ? py::object(py::float_(b.block.R)) : py::object(py::none());
-}
-
-RecordPtr with_floor(const RecordPtr& ground, const std::optional<Text>& floor) {
-    const std::optional<std::string> text_given = string_argument(floor, "floor");
-    if (!text_given) return ground;
-    records::FloorModel m;
-    try {
-        m = records::parse_floor_model(*text_given);
-    } catch (const std::invalid_argument& e) {
-        refuse("floor: " + std::string(e.what()) + " (T1,G[,zeta]: the building's first period in s, the floor's "
-               "participation Gamma phi, the damping ratio)");
-    }
-    try {
-        return std::make_shared<const records::Record>(records::floor_record(*ground, m));
-    } catch (const std::invalid_argument& e) {
-        refuse("floor " + *text_given + " on " + label_of(*ground) + ": " + e.what());
-    }
 }
 
 }  // namespace rocking::python
