@@ -100,4 +100,12 @@ done
 check "floor named in the input" "floor T1=0.5 s zeta=0.05 G=1.5" "$rocking" simulate --record "$a" --floor 0.5,1.5 --thickness 0.25 --height 2
 check "floor's grammar" "--floor: floor model '0.5': takes T1,G[,zeta]" "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
 status "floor's grammar" 2 "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
+# --png (issue 40: the parapet's plot is one option): one record's spectrum with the block marked.
+if command -v gnuplot >/dev/null; then
+    "$rocking" assess "$a" --thickness 0.6 --height 4 --png "$tmp/assess.png" >/dev/null
+    if $py -c "import sys; d = open(sys.argv[1], 'rb').read(); sys.exit(0 if d[:8] == b'\x89PNG\r\n\x1a\n' and d[12:16] == b'IHDR' else 1)" "$tmp/assess.png"
+    then echo "ok: assess --png draws a PNG"; else echo "FAIL: assess --png"; fail=1; fi
+    check "assess --png marks the block" "0.6x4: safe" env ROCKING_PLOT_SCRIPT="$tmp/assess.gp" sh -c "\"$rocking\" assess \"$a\" --thickness 0.6 --height 4 --png \"$tmp/a2.png\" >/dev/null && cat \"$tmp/assess.gp\""
+fi
+check "assess --png with two records" "--png draws one record's spectrum" "$rocking" assess "$a" "$b" --thickness 0.6 --height 4 --png "$tmp/x.png"
 exit $fail

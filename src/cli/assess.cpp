@@ -14,6 +14,8 @@
 #include "cli/geometry.hpp"
 #include "cli/help.hpp"
 #include "cli/options.hpp"
+#include "cli/plots.hpp"
+#include "jobs/spectrum_plan.hpp"
 #include "qfactor/superposition.hpp"
 #include "studies/assessment.hpp"
 #include "studies/search_alpha.hpp"
@@ -129,10 +131,15 @@ int cmd_assess(int argc, char** argv) {
     int first = 0;
     const std::vector<std::string> files = file_arguments(argc, argv, first, usage_line("assess"));
     if (files.size() > 1000) throw UsageError("at most 1000 files");
-    std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor", "--restitution"};
+    std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor", "--restitution", "--png"};
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(argc, argv, first, allowed);
     const GivenBlock given = block_option(a);
+    // The plot is the record's spectrum around the block: one record's.
+    if (a.values.count("--png") && files.size() != 1)
+        throw UsageError("--png draws one record's spectrum with the block marked: give one FILE (or use spectrum --mark)");
+    check_outputs(a, {"--png"}, files);
+    require_gnuplot(a);
     const double alpha = given.alpha;
     studies::AssessOptions o;
     restitution_into(a, o.model);
@@ -171,10 +178,17 @@ int cmd_assess(int argc, char** argv) {
     }
     // As fragility: a record given twice (the same samples, whatever the path) would count twice in the fit.
     refuse_repeated_records(files, views);
-    const studies::Assessment s =
-        studies::assess_block(views, motions, studies::BlockShape{alpha, given.block.p, given.label}, o);
+    // The block's name in the outputs that list blocks (the plot's mark): its dimensions where given.
+    const std::string name = given.given == GivenBlock::Given::dimensions
+                                 ? significant(given.thickness, 6) + "x" + significant(given.height, 6)
+                                 : given.label;
+    const studies::Assessment s = studies::assess_block(views, motions, studies::BlockShape{alpha, given.block.p, name}, o);
     std::vector<std::string> names;
     for (const records::Record& r : records) names.push_back(r.name);
+    if (a.values.count("--png")) {
+        const std::vector<jobs::SpectrumStudy> spectra = {jobs::SpectrumStudy{s.records[0].spectrum, records::CollapseResult{}}};
+        write_spectrum_png(a.values.at("--png"), records[0], o.spectrum_options(), spectra, {s.records[0].mark});
+    }
     if (a.json) print_json(files, names, given, s, o);
     else print_text(files, names, given, s, o);
     return 0;

@@ -171,7 +171,8 @@ spectrum finds every interval).
 const char* kAssess = R"(
 rocking assess FILE... (--thickness B (--height H | --half-height h)
                        | --alpha A (--height H | --half-height h | --p P))
-               [--width W] [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]
+               [--width W] [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
+               [--png PNG] [--json]
 )";
 const char* kAssessDetails = R"(
 The engineer's check of one block against one record or several (1 to 1000 FILEs), the model
@@ -203,6 +204,8 @@ named in the output. For each record:
   --restitution E   the restitution on angular velocity at impact, in [0, 1], or housner (the default)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
+  --png PNG         one record's rocking spectrum at the block's alpha with the block marked, as
+                    spectrum --mark --png draws it (gnuplot); with one FILE only
   --json            machine-readable output, one member a record
 A record given twice (the same samples, whatever the path) is refused: it would count twice in the fit.
 )";

@@ -25,6 +25,16 @@ std::string AssessOptions::describe() const {
            ", both by the refine search at w = " + w + " (islands narrower than w may be missed)";
 }
 
+SpectrumOptions AssessOptions::spectrum_options() const {
+    SpectrumOptions sp;
+    sp.model = model;
+    sp.p_min = p_min;
+    sp.p_max = p_max;
+    sp.method = SpectrumOptions::Method::refine;
+    sp.width = width;
+    return sp;
+}
+
 namespace {
 
 RecordAssessment assess_record(const dynamics::SampledInput& input, const records::PeakMotion& m,
@@ -56,14 +66,9 @@ RecordAssessment assess_record(const dynamics::SampledInput& input, const record
     a.scale_first_overturning = a.ida.first_overturning.q / a.q_record;
     a.scale_first_robust = a.ida.first_robust_collapse.q / a.q_record;
 
-    SpectrumOptions sp;
-    sp.model = o.model;
-    sp.p_min = o.p_min;
-    sp.p_max = o.p_max;
-    sp.method = SpectrumOptions::Method::refine;
-    sp.width = o.width;
-    const Spectrum s = rocking_spectrum(input, block.alpha, sp);
-    a.mark = mark_block(input, s, block, sp);
+    const SpectrumOptions sp = o.spectrum_options();
+    a.spectrum = rocking_spectrum(input, block.alpha, sp);
+    a.mark = mark_block(input, a.spectrum, block, sp);
     return a;
 }
 

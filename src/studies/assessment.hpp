@@ -35,6 +35,8 @@ struct AssessOptions {
     double q_max = 20;                 // the IDA's range, from q = 1, or to twice the record's q where higher (at most 1e4)
     double p_min = 0.3, p_max = 30;    // the spectrum's range, rad/s
     std::string describe() const;
+    // The spectrum's: the model, [p_min, p_max] and the refine search at width.
+    SpectrumOptions spectrum_options() const;
 };
 
 struct RecordAssessment {
@@ -49,8 +51,9 @@ struct RecordAssessment {
     // first robust collapse, found false (censored at q_max) without one.
     Ida ida;
     double scale_first_overturning = 0, scale_first_robust = 0;
-    // The block on the record's spectrum at its alpha.
+    // The block on the record's spectrum at its alpha, and that spectrum (its options: spectrum_options).
     SpectrumMark mark;
+    Spectrum spectrum;
     // With several records: P(overturn) of the fragility at q_record.
     bool has_probability = false;
     double probability = 0;
