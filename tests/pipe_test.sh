@@ -81,14 +81,14 @@ expect "an endless line stops at the line cap" 1 "endless_line.txt:1: a line lon
     "$rocking" record info "$scratch/endless_line.txt" --unit g --dt 0.01
 expect "an endless line from a pipe" 1 "/dev/stdin:3: a line longer than 1 MiB" \
     bash -c '{ printf "0.1\n0.2\n"; tr "\0" 7 < /dev/zero; } | "$1" record info /dev/stdin --unit g --dt 0.01' _ "$rocking"
-expect "endless lines stop at the size cap" 1 "/dev/stdin:0: larger than 256 MiB (the cap on a record file's size)" \
+expect "endless lines stop at the size cap" 1 "/dev/stdin: larger than 256 MiB (the cap on a record file's size)" \
     bash -c 'yes 0.1 | "$1" simulate --record /dev/stdin --unit g --record-dt 0.01 --alpha 0.15 --p 2' _ "$rocking"
 
 # No data: a FIFO nobody opens for writing, a writer that stalls mid-stream.
 # Both wait the 10 s timeout, side by side.
 mkfifo "$scratch/silent" "$scratch/stall"
 expect "a FIFO without a writer times out" 1 \
-    "silent:0: no data within 10 s (the read timeout): a pipe or FIFO that nobody writes to?" \
+    "silent: no data within 10 s (the read timeout): a pipe or FIFO that nobody writes to?" \
     "$rocking" record info "$scratch/silent" > "$scratch/silent.out" &
 silent=$!
 (printf 'EVENT_ID: X\nNDATA: 3\n'; exec sleep 60) > "$scratch/stall" &
