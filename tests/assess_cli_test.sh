@@ -97,6 +97,11 @@ for cmd in "simulate --record" "assess" "spectrum"; do
     if [[ -n "$via" && "$via" == "$file" ]]; then echo "ok: $cmd --floor is record floor's file"
     else echo "FAIL: $cmd --floor: $via, against the file: $file"; fail=1; fi
 done
+check "fragility names the floor" "every record replaced by its floor's motion" "$rocking" fragility "$a" "$b" --block 0.6x4 --floor 0.5,1.5 --points 20
+check "fragility's JSON names the floor" "every record replaced by its floor's motion" "$rocking" fragility "$a" "$b" --block 0.6x4 --floor 0.5,1.5 --points 20 --json
+check "eq27 names the floor" "every record replaced by its floor's motion" "$rocking" eq27 "$a" "$b" --alpha 0.15 --p-min 2 --p-points 1 --floor 0.5,1.5
+check "no NRML in a floor's PGA" "--nrml with --floor: the fit is in the floor's PGA" "$rocking" fragility "$a" "$b" --block 0.6x4 --floor 0.5,1.5 --nrml "$tmp/f.xml"
+status "no NRML in a floor's PGA" 2 "$rocking" fragility "$a" "$b" --block 0.6x4 --floor 0.5,1.5 --nrml "$tmp/f.xml"
 check "floor named in the input" "floor T1=0.5 s zeta=0.05 G=1.5" "$rocking" simulate --record "$a" --floor 0.5,1.5 --thickness 0.25 --height 2
 check "floor's grammar" "--floor: floor model '0.5': takes T1,G[,zeta]" "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
 status "floor's grammar" 2 "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2

@@ -7,6 +7,7 @@
 
 #include "batch/pool.hpp"
 #include "common.hpp"
+#include "records/floor_motion.hpp"
 #include "studies/spectrum_mark.hpp"
 #include "studies/blocks_as_built.hpp"
 #include "fragility_fits.hpp"
@@ -310,6 +311,10 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     std::vector<RecordPtr> recs = record_list(records_given, "records");
     if (recs.size() > 1000) refuse("records: at most 1000");
     for (RecordPtr& r : recs) r = with_floor(r, floor);
+    if (floor) {
+        if (nrml) refuse("nrml with floor: the fit is in the floor's PGA, which OpenQuake would read as the ground's");
+        o.ida.input_note = records::describe_as_input(records::parse_floor_model(*string_argument(floor, "floor")));
+    }
     std::vector<studies::BlockShape> blocks = built;
     for (double a : alphas)
         for (double v : ps) blocks.push_back({a, v, ""});

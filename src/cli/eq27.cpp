@@ -101,6 +101,7 @@ studies::Eq27Options options_from(const Args& a) {
     o.ida.width = m.width;
     o.ida.robust_width = m.robust_width;
     restitution_into(a, o.ida.model);
+    o.ida.input_note = floor_input_note(a);
     // As rocking fragility's: no bootstrap unless asked, and then from a stated seed.
     const Bootstrap b = bootstrap_options(a);
     o.bootstrap.resamples = b.resamples;

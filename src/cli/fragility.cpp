@@ -65,6 +65,12 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     o.seed = b.seed;
     o.threads = jobs_option(a);
     restitution_into(a, o.ida.model);
+    o.ida.input_note = floor_input_note(a);
+    // NRML's intensity is the site's PGA, which a hazard model gives for the ground:
+    // a fit in a floor's PGA would be read as the ground's.
+    if (a.values.count("--nrml") && a.values.count("--floor"))
+        throw UsageError("--nrml with --floor: the fit is in the floor's PGA, which OpenQuake would read as the "
+                         "ground's; export the ground's fragility, or keep the floor's in --fits");
     return o;
 }
 

@@ -463,6 +463,17 @@ void write_record_samples(harness::AtomicFile& out, const records::Record& r) {
     out.write(lines);
 }
 
+std::string floor_input_note(const Args& a) {
+    if (!a.values.count("--floor")) return "";
+    records::FloorModel m;
+    try {
+        m = records::parse_floor_model(a.values.at("--floor"));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError("--floor: " + std::string(e.what()));
+    }
+    return records::describe_as_input(m);
+}
+
 void restitution_into(const Args& a, records::CollapseOptions& model) {
     if (!a.values.count("--restitution")) return;
     const double e = restitution_option(a.values.at("--restitution"));

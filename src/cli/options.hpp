@@ -36,6 +36,10 @@ double number(const std::string& flag, const std::string& text);
 double restitution_option(const std::string& text);
 // --restitution E|housner into a study's model (default: Housner's, Table 1's).
 void restitution_into(const Args& a, records::CollapseOptions& model);
+// With --floor, what a study's inputs then are (every record replaced by its
+// floor's motion, the model named; q and to_k the floor's), for
+// IdaOptions::input_note; empty without it.
+std::string floor_input_note(const Args& a);
 std::string smallest_tolerance();
 double rtol_option(const std::string& text);
 void tolerance_options(const std::map<std::string, std::string>& values, double alpha,

@@ -197,4 +197,8 @@ Record floor_record(const Record& ground, const FloorModel& m) {
     return r;
 }
 
+std::string describe_as_input(const FloorModel& m) {
+    return "every record replaced by its floor's motion, " + describe(m) + ": q = PGA/(alpha g) and to_k are the floor's";
+}
+
 }  // namespace rocking::records

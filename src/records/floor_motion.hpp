@@ -123,5 +123,9 @@ Record floor_record(const Record& ground, const FloorModel& m);
 // The sentence the command states the model in: "first-mode
 // oscillator T1 = 0.5 s, zeta = 0.05, G = Gamma phi = 1.5; a_f = a_g + G D''".
 std::string describe(const FloorModel& m);
+// What a study's inputs are when every record is replaced by its floor's
+// motion: "every record replaced by its floor's motion, <describe(m)>: q =
+// PGA/(alpha g) and to_k are the floor's" (studies::IdaOptions::input_note).
+std::string describe_as_input(const FloorModel& m);
 
 }  // namespace rocking::records

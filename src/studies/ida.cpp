@@ -84,6 +84,7 @@ std::string IdaOptions::describe_model() const {
     text += m.housner_restitution ? std::string("Housner 1 - 1.5 sin^2 alpha") : std::string(e);
     text += ", criterion " + dynamics::criterion_name(m.criterion) + ", solver " + dynamics::solver_name(m.solver.kind);
     if (m.solver.kind != dynamics::SolverKind::exact) text += " (" + dynamics::tolerance_text(m.solver) + ")";
+    if (!input_note.empty()) text += "; input: " + input_note;
     return text;
 }
 

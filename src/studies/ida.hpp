@@ -56,6 +56,10 @@ struct IdaOptions {
     Method method = Method::grid;
     double width = 1e-5;         // w, in ln q (refine)
     double robust_width = 5e-3;  // an interval wider than this in ln q is a robust collapse
+    // What the inputs are where they are not the records as read (a floor's
+    // motion in place of the ground's): stated by describe_model, so that every
+    // output and a rows file's resume check carry it.  Empty: the records.
+    std::string input_note;
     std::string describe_grid() const;
     std::string describe_model() const;
     std::string describe_checks() const;
