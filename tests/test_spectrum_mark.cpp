@@ -49,6 +49,15 @@ TEST(SpectrumMark, TheNearestOverturningPOnEachSide) {
     EXPECT_NEAR(between.height_above, 2 * 3 * 9.81 / (4 * 1.5 * 1.5) * std::cos(alpha), 1e-13);
     const SpectrumMark inside = mark_block(input, s, BlockShape{alpha, 1.7, ""}, o);
     EXPECT_TRUE(inside.in_set);
+    // Inside [1.5, 2.0]: its ends, and the survivors beyond them reach to the neighbours' ends.
+    EXPECT_EQ(inside.below.p, 1.5);
+    EXPECT_EQ(inside.above.p, 2.0);
+    ASSERT_TRUE(inside.survivors_below.found && inside.survivors_above.found);
+    EXPECT_EQ(inside.survivors_below.p, 0.8);
+    EXPECT_EQ(inside.survivors_above.p, 3.0);
+    EXPECT_NEAR(inside.height_survivors_above, 2 * 3 * 9.81 / (4 * 3.0 * 3.0) * std::cos(alpha), 1e-13);
+    const SpectrumMark first = mark_block(input, s, BlockShape{alpha, 0.6, ""}, o);
+    EXPECT_TRUE(first.in_set && !first.survivors_below.found && first.survivors_above.p == 1.5);
     const SpectrumMark lowest = mark_block(input, s, BlockShape{alpha, 0.4, ""}, o);
     EXPECT_FALSE(lowest.below.found);
     EXPECT_EQ(lowest.above.p, 0.5);

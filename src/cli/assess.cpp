@@ -114,7 +114,9 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
            << ", \"first_robust_collapse\": " << first_json(r.ida.first_robust_collapse, r.scale_first_robust)
            << ", \"change_below\": " << side_json(r.mark.below, r.mark.height_below)
            << ", \"change_above\": " << side_json(r.mark.above, r.mark.height_above)
-           << ", \"in_spectrum_set\": " << (r.mark.in_set ? "true" : "false");
+           << ", \"in_spectrum_set\": " << (r.mark.in_set ? "true" : "false")
+           << ", \"survivors_below\": " << side_json(r.mark.survivors_below, r.mark.height_survivors_below)
+           << ", \"survivors_above\": " << side_json(r.mark.survivors_above, r.mark.height_survivors_above);
         if (r.has_probability) js << ", \"probability\": " << json_number(r.probability);
         js << "}";
     }

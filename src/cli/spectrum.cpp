@@ -280,7 +280,9 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
            << ", \"height\": " << json_number(studies::height_at_p(m.block.alpha, m.block.p))
            << ", \"overturns\": " << (m.overturns ? "true" : "false") << ", \"in_set\": " << (m.in_set ? "true" : "false")
            << ", \"change_below\": " << side(m.below, m.height_below)
-           << ", \"change_above\": " << side(m.above, m.height_above) << ", \"text\": " << json_string(describe_mark(m))
+           << ", \"change_above\": " << side(m.above, m.height_above)
+           << ", \"survivors_below\": " << side(m.survivors_below, m.height_survivors_below)
+           << ", \"survivors_above\": " << side(m.survivors_above, m.height_survivors_above) << ", \"text\": " << json_string(describe_mark(m))
            << "}";
     }
     js << "]}\n";

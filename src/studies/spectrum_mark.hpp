@@ -28,6 +28,12 @@ struct SpectrumMark {
     // The heights (m) of the blocks of this alpha at below.p and above.p
     // (H = 2 R cos alpha, R = 3 g/(4 p^2)); 0 where not found.
     double height_below = 0, height_above = 0;
+    // Inside an interval: how far the surviving blocks beyond each end reach
+    // before the set overturns them again (the next interval's end), found
+    // false where nothing overturns up to the spectrum's range.  A band
+    // narrower than the search's width may be one a finer search splits.
+    SpectrumFirst survivors_below, survivors_above;
+    double height_survivors_below = 0, height_survivors_above = 0;  // m, at their p; 0 where not found
 };
 
 // H = 2 R cos(alpha), R = 3 g / (4 p^2): the height of the block of slenderness alpha whose pulsation is p (eqs. 2, 4).
