@@ -102,6 +102,9 @@ check "fragility's JSON names the floor" "every record replaced by its floor's m
 check "eq27 names the floor" "every record replaced by its floor's motion" "$rocking" eq27 "$a" "$b" --alpha 0.15 --p-min 2 --p-points 1 --floor 0.5,1.5
 check "no NRML in a floor's PGA" "--nrml with --floor: the fit is in the floor's PGA" "$rocking" fragility "$a" "$b" --block 0.6x4 --floor 0.5,1.5 --nrml "$tmp/f.xml"
 status "no NRML in a floor's PGA" 2 "$rocking" fragility "$a" "$b" --block 0.6x4 --floor 0.5,1.5 --nrml "$tmp/f.xml"
+# The scaled search's guarantee stops at q = (pi/2 - alpha)/alpha = 9.55 at this alpha: said
+# where the record's q (10.6 on this roof) lies beyond it.
+check "assess says where its guarantee stops" "finds every island wider than w only below q = 9.5500" "$rocking" assess "$b" --thickness 0.6 --height 4 --floor 0.5,1.4
 check "floor named in the input" "floor T1=0.5 s zeta=0.05 G=1.5" "$rocking" simulate --record "$a" --floor 0.5,1.5 --thickness 0.25 --height 2
 check "floor's grammar" "--floor: floor model '0.5': takes T1,G[,zeta]" "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
 status "floor's grammar" 2 "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2

@@ -440,6 +440,8 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         d["change_below"] = nearest_side(r.mark.below, r.mark.height_below);
         d["change_above"] = nearest_side(r.mark.above, r.mark.height_above);
         d["in_spectrum_set"] = r.mark.in_set;
+        d["guaranteed"] = std::isfinite(r.ida.unguaranteed_from) ? "below q = " + significant(r.ida.unguaranteed_from, 17)
+                                                                 : std::string("over the whole search");
         d["survivors_below"] = nearest_side(r.mark.survivors_below, r.mark.height_survivors_below);
         d["survivors_above"] = nearest_side(r.mark.survivors_above, r.mark.height_survivors_above);
         if (r.has_probability) d["probability"] = r.probability;

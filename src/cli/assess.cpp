@@ -69,6 +69,12 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
         std::printf("  the record scaled: the block first overturns at %s; first robustly collapses at %s\n",
                     scale_text(r.ida.first_overturning, r.scale_first_overturning, r.q_record).c_str(),
                     scale_text(r.ida.first_robust_collapse, r.scale_first_robust, r.q_record).c_str());
+        // Said where it bears on the numbers above: the record's own q or its first overturning beyond it.
+        const double bound = r.ida.unguaranteed_from;
+        if (std::isfinite(bound) && (r.q_record >= bound || r.ida.first_overturning.q >= bound))
+            std::printf("  the scaled search finds every island wider than w only below q = %s ((pi/2 - alpha)/alpha: "
+                        "above it a run can overturn with no flight's margin above 0), so above it islands may be "
+                        "missed\n", four(r.ida.unguaranteed_from).c_str());
         std::printf("  blocks of this alpha: %s\n", studies::describe_mark(r.mark).c_str());
         if (r.has_probability)
             std::printf("  fragility over the %zu records: P(overturn) at this record's q = %s\n", files.size(),
@@ -115,6 +121,9 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
            << ", \"change_below\": " << side_json(r.mark.below, r.mark.height_below)
            << ", \"change_above\": " << side_json(r.mark.above, r.mark.height_above)
            << ", \"in_spectrum_set\": " << (r.mark.in_set ? "true" : "false")
+           << ", \"guaranteed\": " << (std::isfinite(r.ida.unguaranteed_from)
+                                            ? json_string("below q = " + significant(r.ida.unguaranteed_from, 17))
+                                            : std::string("\"over the whole search\""))
            << ", \"survivors_below\": " << side_json(r.mark.survivors_below, r.mark.height_survivors_below)
            << ", \"survivors_above\": " << side_json(r.mark.survivors_above, r.mark.height_survivors_above);
         if (r.has_probability) js << ", \"probability\": " << json_number(r.probability);
