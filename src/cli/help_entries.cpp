@@ -283,7 +283,8 @@ given twice (the same samples, whatever the path) is refused.
                     share per band; the fit then takes the first overturning (docs/fragility.md)
   --bootstrap K     K resamples of the records (0, the default: none; or 2 to 100000), drawn by
   --seed S          GSL mt19937 from S (1 to 2^32 - 1), required with K; the records drawn in the
-                    order of their samples' SHA-256, so that the listing's order changes nothing
+                    order of their samples' SHA-256, so that the listing's order changes nothing;
+                    the intervals are 90 % percentile intervals
   --restitution E   theta' after an impact over theta' before, in [0, 1], or housner (the default)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
