@@ -115,5 +115,8 @@ if command -v gnuplot >/dev/null; then
     then echo "ok: assess --png draws a PNG"; else echo "FAIL: assess --png"; fail=1; fi
     check "assess --png marks the block" "0.6x4: safe" env ROCKING_PLOT_SCRIPT="$tmp/assess.gp" sh -c "\"$rocking\" assess \"$a\" --thickness 0.6 --height 4 --png \"$tmp/a2.png\" >/dev/null && cat \"$tmp/assess.gp\""
 fi
+if command -v gnuplot >/dev/null; then
+    check "fragility's plot names the floor" "floor’s motion, first-mode" env ROCKING_PLOT_SCRIPT="$tmp/ff.gp" sh -c "\"$rocking\" fragility \"$a\" \"$b\" --block 0.6x4 --floor 0.5,1.5 --points 20 --png \"$tmp/ff.png\" >/dev/null && cat \"$tmp/ff.gp\""
+fi
 check "assess --png with two records" "--png draws one record's spectrum" "$rocking" assess "$a" "$b" --thickness 0.6 --height 4 --png "$tmp/x.png"
 exit $fail

@@ -143,6 +143,8 @@ std::string caption(const studies::Eq27Options& o, const studies::Eq27ByCapacity
         text += " Capacities: the first overturning (every island wider than w = " + g4(o.ida.width) +
                 " in ln q) and the first robust collapse (the first interval wider than " + g4(o.ida.robust_width) +
                 "); the right panel shows the first overturning.";
+    // With --floor the intensities are the floor's: said in the figure itself.
+    if (!o.ida.input_note.empty()) text += " Input: " + typographic_quotes(o.ida.input_note) + ".";
     return text;
 }
 

@@ -105,6 +105,8 @@ std::string caption(const studies::FragilityStudyOptions& o, const std::vector<B
                 "not a pointwise confidence band.";
     if (refined(o))
         text += " Squares: each stripe's mean overturned share, to which the multiple-stripe fit is fitted.";
+    // With --floor the intensities are the floor's: said in the figure itself.
+    if (!o.ida.input_note.empty()) text += " Input: " + typographic_quotes(o.ida.input_note) + ".";
     return text;
 }
 

@@ -195,4 +195,10 @@ std::string caption_and_end(const Figure& fig, const std::vector<std::string>& l
     return gp.str();
 }
 
+std::string typographic_quotes(const std::string& s) {
+    std::string out;
+    for (char c : s) out += c == '\'' ? std::string("\u2019") : std::string(1, c);
+    return out;
+}
+
 }  // namespace rocking::cli

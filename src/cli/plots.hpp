@@ -34,6 +34,10 @@ std::string gp_string(const std::string& s);
 // doubled.  Never a name from the inputs: those go through gp_string.
 std::string gp_text(const std::string& s);
 
+// Our own words with each ' as ’ (a note's D'' for a second derivative, the
+// floor's "floor's"): gnuplot's single-quoted strings split on runs of them.
+std::string typographic_quotes(const std::string& s);
+
 // A number in a script or a datablock, to the last bit (%.17g).
 std::string gp_number(double v);
 
