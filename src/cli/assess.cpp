@@ -15,6 +15,7 @@
 #include "cli/help.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
+#include "cli/set_words.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "qfactor/superposition.hpp"
 #include "studies/assessment.hpp"
@@ -94,11 +95,6 @@ std::string first_json(const studies::IdaPoint& at, double scale) {
            ", \"scale\": " + json_number(scale) + "}";
 }
 
-std::string side_json(const studies::SpectrumFirst& f, double height) {
-    return f.found ? "{\"found\": true, \"p\": " + json_number(f.p) + ", \"height\": " + json_number(height) + "}"
-                   : std::string("{\"found\": false}");
-}
-
 void print_json(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
                 const studies::Assessment& s, const studies::AssessOptions& o) {
     std::ostringstream js;
@@ -118,14 +114,14 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
            << ", \"peak_theta_over_alpha\": " << json_number(r.peak_theta_over_alpha)
            << ", \"first_overturning\": " << first_json(r.ida.first_overturning, r.scale_first_overturning)
            << ", \"first_robust_collapse\": " << first_json(r.ida.first_robust_collapse, r.scale_first_robust)
-           << ", \"change_below\": " << side_json(r.mark.below, r.mark.height_below)
-           << ", \"change_above\": " << side_json(r.mark.above, r.mark.height_above)
+           << ", \"change_below\": " << nearest_json(r.mark.below, r.mark.height_below)
+           << ", \"change_above\": " << nearest_json(r.mark.above, r.mark.height_above)
            << ", \"in_spectrum_set\": " << (r.mark.in_set ? "true" : "false")
            << ", \"guaranteed\": " << (std::isfinite(r.ida.unguaranteed_from)
                                             ? json_string("below q = " + significant(r.ida.unguaranteed_from, 17))
                                             : std::string("\"over the whole search\""))
-           << ", \"survivors_below\": " << side_json(r.mark.survivors_below, r.mark.height_survivors_below)
-           << ", \"survivors_above\": " << side_json(r.mark.survivors_above, r.mark.height_survivors_above);
+           << ", \"survivors_below\": " << nearest_json(r.mark.survivors_below, r.mark.height_survivors_below)
+           << ", \"survivors_above\": " << nearest_json(r.mark.survivors_above, r.mark.height_survivors_above);
         if (r.has_probability) js << ", \"probability\": " << json_number(r.probability);
         js << "}";
     }

@@ -21,4 +21,9 @@ std::string bands_json(const std::vector<studies::Band>& bands) {
     return text + "]";
 }
 
+std::string nearest_json(const studies::SpectrumFirst& f, double height) {
+    return f.found ? "{\"found\": true, \"p\": " + json_number(f.p) + ", \"height\": " + json_number(height) + "}"
+                   : std::string("{\"found\": false}");
+}
+
 }  // namespace rocking::cli

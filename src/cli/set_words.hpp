@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "studies/overturning_set.hpp"
+#include "studies/spectrum.hpp"
 
 namespace rocking::cli {
 
@@ -15,5 +16,9 @@ std::string bands_text(const std::vector<studies::Band>& bands);
 
 // [{"from": f, "to": t, "share": s}, ...] for every band, zeros included.
 std::string bands_json(const std::vector<studies::Band>& bands);
+
+// A p of the set beside a marked block, with the height of the block of its
+// alpha there: {"found": true, "p": p, "height": h}, or {"found": false}.
+std::string nearest_json(const studies::SpectrumFirst& f, double height);
 
 }  // namespace rocking::cli

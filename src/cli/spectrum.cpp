@@ -269,20 +269,16 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
         js << "]}";
     }
     js << "], \"marks\": [";
-    auto side = [](const studies::SpectrumFirst& f, double h) {
-        return f.found ? "{\"found\": true, \"p\": " + json_number(f.p) + ", \"height\": " + json_number(h) + "}"
-                       : std::string("{\"found\": false}");
-    };
     for (std::size_t k = 0; k < marks.size(); ++k) {
         const studies::SpectrumMark& m = marks[k];
         js << (k ? ", " : "") << "{\"built\": " << json_string(m.block.built) << ", \"alpha\": " << json_number(m.block.alpha)
            << ", \"p\": " << json_number(m.block.p)
            << ", \"height\": " << json_number(studies::height_at_p(m.block.alpha, m.block.p))
            << ", \"overturns\": " << (m.overturns ? "true" : "false") << ", \"in_set\": " << (m.in_set ? "true" : "false")
-           << ", \"change_below\": " << side(m.below, m.height_below)
-           << ", \"change_above\": " << side(m.above, m.height_above)
-           << ", \"survivors_below\": " << side(m.survivors_below, m.height_survivors_below)
-           << ", \"survivors_above\": " << side(m.survivors_above, m.height_survivors_above) << ", \"text\": " << json_string(describe_mark(m))
+           << ", \"change_below\": " << nearest_json(m.below, m.height_below)
+           << ", \"change_above\": " << nearest_json(m.above, m.height_above)
+           << ", \"survivors_below\": " << nearest_json(m.survivors_below, m.height_survivors_below)
+           << ", \"survivors_above\": " << nearest_json(m.survivors_above, m.height_survivors_above) << ", \"text\": " << json_string(describe_mark(m))
            << "}";
     }
     js << "]}\n";
