@@ -18,6 +18,20 @@ source "$(dirname "$0")/check_lib.sh"
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 
+# Records and blocks it cannot assess (studies::refusal_of), each named; no records needed.
+printf '0\n0\n0\n0\n' >"$tmp/zero.txt"
+check "assess: a record that never moves names its file" "$tmp/zero.txt: " "$rocking" assess "$tmp/zero.txt" --unit g --dt 0.01 --thickness 0.6 --height 4
+status "assess: a record that never moves" 1 "$rocking" assess "$tmp/zero.txt" --unit g --dt 0.01 --thickness 0.6 --height 4
+printf '1e300\n-1e300\n0\n0\n' >"$tmp/huge.txt"
+check "assess: eq. 27's x below 1e-150 names the option" "--p: the block's p (1e-200 rad/s) times the record's to_5" \
+    "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 0.1 --p 1e-200
+status "assess: eq. 27's x below 1e-150" 2 "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 0.1 --p 1e-200
+# A margin of -6.6e302 printed with %f filled its buffer with digits; an interval past the
+# spectrum's range read "no its interval ends".
+check "assess: a huge margin in powers of ten" "margin -6.57e+304 %)" "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 1e-5 --p 2
+check "assess: an interval past the spectrum's range" "for taller blocks its interval reaches the spectrum's lowest p" \
+    "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 1e-5 --p 2
+
 a="$records/esm/IT.AQK..HNE.D.20090406.013240.C.ACC.ASC"
 b="$records/esm/IT.NRC..HGE.D.20161030.064018.C.ACC.ASC"
 if [[ ! -f "$a" || ! -f "$b" ]]; then echo "SKIP: shared records folder absent ($records)"; exit 77; fi

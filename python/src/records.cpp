@@ -383,19 +383,11 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
     std::vector<const dynamics::SampledInput*> views;
     for (const RecordPtr& r : held) {
         motions.push_back(checked_peak_motion(*r));
-        const double x = given.block.p * motions.back().to5;
-        if (!(x >= kSmallestX)) {
-            char text[200];
-            std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
-                          "1e-150, where eq. 27 overflows", height ? "height" : half_height ? "half_height" : "p",
-                          given.block.p, motions.back().to5);
-            refuse(text);
-        }
-        if (!std::isfinite(motions.back().pga / (alpha * dynamics::kGravity)))
-            throw std::runtime_error(label_of(*r) + ": the record's q = PGA/(alpha g) overflows a double at alpha = " +
-                                     significant(alpha, 6));
         inputs.push_back(std::make_unique<dynamics::SampledInput>(r->in_g(dynamics::kGravity), r->dt, r->name));
-        if (!(inputs.back()->peak() > 0)) throw std::invalid_argument(label_of(*r) + ": the record never moves (PGA 0)");
+        const studies::Refusal refused = studies::refusal_of(*inputs.back(), motions.back(), studies::BlockShape{alpha, given.block.p});
+        if (refused.blame == studies::Refusal::Blame::block)
+            refuse(std::string(height ? "height" : half_height ? "half_height" : "p") + ": " + refused.why);
+        if (refused.blame == studies::Refusal::Blame::record) throw std::invalid_argument(label_of(*r) + ": " + refused.why);
         refuse_unresolvable_run(std::max(o.p_max, given.block.p), inputs.back()->t_end(), "record " + label_of(*r));
         views.push_back(inputs.back().get());
     }

@@ -36,9 +36,10 @@ records::PeakMotion peak_motion_of(const records::Record& r, const std::string& 
     }
 }
 
+// %f of a margin of -6.6e302 printed 300 digits into 40 characters.
 std::string percent(double v) {
     char text[40];
-    std::snprintf(text, sizeof text, "%+.1f %%", 100 * v);
+    std::snprintf(text, sizeof text, std::fabs(100 * v) < 1e5 ? "%+.1f %%" : "%+.3g %%", 100 * v);
     return text;
 }
 
@@ -165,21 +166,12 @@ int cmd_assess(int argc, char** argv) {
         records.push_back(load_record(path, a));
         const records::Record& r = records.back();
         motions.push_back(peak_motion_of(r, path));
-        const double x = given.block.p * motions.back().to5;
-        if (!(x >= kSmallestX)) {
-            char text[200];
-            std::snprintf(text, sizeof text, "%s: the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below "
-                          "1e-150, where eq. 27 overflows",
-                          a.values.count("--height") ? "--height" : a.values.count("--half-height") ? "--half-height" : "--p",
-                          given.block.p, motions.back().to5);
-            throw UsageError(text);
-        }
-        // A PGA near the largest double over a tiny alpha printed "q_record": inf.
-        if (!std::isfinite(motions.back().pga / (alpha * dynamics::kGravity)))
-            throw std::runtime_error(path + ": the record's q = PGA/(alpha g) overflows a double at alpha = " +
-                                     significant(alpha, 6) + " (PGA = " + four(motions.back().pga) + " m/s^2)");
         inputs.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
-        if (!(inputs.back()->peak() > 0)) throw std::runtime_error(path + ": the record never moves (PGA 0)");
+        const studies::Refusal refused = studies::refusal_of(*inputs.back(), motions.back(), studies::BlockShape{alpha, given.block.p});
+        if (refused.blame == studies::Refusal::Blame::block)
+            throw UsageError(std::string(a.values.count("--height") ? "--height" : a.values.count("--half-height") ? "--half-height" : "--p") +
+                             ": " + refused.why);
+        if (refused.blame == studies::Refusal::Blame::record) throw std::runtime_error(path + ": " + refused.why);
         refuse_unresolvable_run(std::max(o.p_max, given.block.p), inputs.back()->t_end(), a, {"--dt"}, path);
         views.push_back(inputs.back().get());
     }

@@ -18,14 +18,19 @@ std::string CollapseOptions::describe() const {
     return os.str();
 }
 
-namespace {
-
-SimulationResult run_block(const GroundInput& input, double alpha, double p, const CollapseOptions& options,
-                           bool free_rocking) {
+Model model_of(double alpha, double p, const CollapseOptions& options) {
     Model model;
     model.equation = options.equation;
     model.restitution = options.housner_restitution ? housner_restitution(alpha) : options.restitution;
     model.block = Block::from_p(p, alpha);
+    return model;
+}
+
+namespace {
+
+SimulationResult run_block(const GroundInput& input, double alpha, double p, const CollapseOptions& options,
+                           bool free_rocking) {
+    const Model model = model_of(alpha, p, options);
     SimulationOptions sim;
     sim.solver = options.solver;
     sim.free_rocking = free_rocking;

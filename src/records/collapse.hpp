@@ -35,6 +35,12 @@ struct CollapseResult {
     bool below_range() const { return found && !(p_safe > 0); }
 };
 
+// The model these options describe for the block (alpha, p): the equation,
+// the restitution (Housner's 1 - 1.5 sin^2 alpha of eq. 9, or the fixed
+// one) and the block of pulsation p.  One place, so that every search runs
+// the model its options print.
+dynamics::Model model_of(double alpha, double p, const CollapseOptions& options);
+
 CollapseResult smallest_collapse_p(const dynamics::GroundInput& input, double alpha, const CollapseOptions& options);
 
 // Whether the input collapses the block of slenderness alpha and pulsation p,

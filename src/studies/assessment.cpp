@@ -35,15 +35,32 @@ SpectrumOptions AssessOptions::spectrum_options() const {
     return sp;
 }
 
+Refusal refusal_of(const dynamics::SampledInput& input, const records::PeakMotion& m, const BlockShape& block) {
+    char text[200];
+    if (!(block.p * m.to5 >= kSmallestX)) {
+        std::snprintf(text, sizeof text, "the block's p (%.3g rad/s) times the record's to_5 (%.3g s) is below 1e-150, "
+                      "where eq. 27 overflows", block.p, m.to5);
+        return {Refusal::Blame::block, text};
+    }
+    // A PGA near the largest double over a tiny alpha printed "q_record": inf.
+    if (!std::isfinite(m.pga / (block.alpha * dynamics::kGravity))) {
+        std::snprintf(text, sizeof text, "the record's q = PGA/(alpha g) overflows a double at alpha = %.6g "
+                      "(PGA = %.4g m/s^2)", block.alpha, m.pga);
+        return {Refusal::Blame::record, text};
+    }
+    if (!(input.peak() > 0)) return {Refusal::Blame::record, "the record never moves (PGA 0)"};
+    return {};
+}
+
 namespace {
 
 RecordAssessment assess_record(const dynamics::SampledInput& input, const records::PeakMotion& m,
                                const BlockShape& block, const AssessOptions& o) {
     RecordAssessment a;
     a.motion = m;
+    const Refusal refused = refusal_of(input, m, block);
+    if (refused.blame != Refusal::Blame::none) throw std::invalid_argument(refused.why);
     a.x = block.p * m.to5;
-    if (!(a.x >= kSmallestX))
-        throw std::invalid_argument("the block's p times the record's to_5 is below 1e-150, where eq. 27 overflows");
     a.q_eq27 = q2_n6(a.x);
     a.q_record = m.pga / (block.alpha * dynamics::kGravity);
     a.ratio = a.q_record / a.q_eq27;

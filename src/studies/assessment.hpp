@@ -67,6 +67,16 @@ struct Assessment {
     LognormalFragility fit;
 };
 
+// Why the block cannot be assessed on this record, or none: eq. 27's x =
+// p to_5 below 1e-150, where q2_n6 overflows (the block's fault: its p),
+// the record's q = PGA/(alpha g) overflowing a double, or a record that
+// never moves (the record's).  The front ends name the option or the file.
+struct Refusal {
+    enum class Blame { none, block, record } blame = Blame::none;
+    std::string why;
+};
+Refusal refusal_of(const dynamics::SampledInput& input, const records::PeakMotion& m, const BlockShape& block);
+
 // The inputs in g (each a record), their peak motions (PGA in m/s^2, as
 // records::peak_motion measures them), the block.  Throws
 // std::invalid_argument where eq. 27 cannot be evaluated (x below 1e-150).

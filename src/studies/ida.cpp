@@ -104,14 +104,6 @@ void check_options(const GroundInput& input, double alpha, double p, const IdaOp
     if (!(o.robust_width > 0)) throw std::invalid_argument("ida: the robust width must be > 0");
 }
 
-dynamics::Model model_of(double alpha, double p, const records::CollapseOptions& m) {
-    dynamics::Model model;
-    model.equation = m.equation;
-    model.restitution = m.housner_restitution ? dynamics::housner_restitution(alpha) : m.restitution;
-    model.block = dynamics::Block::from_p(p, alpha);
-    return model;
-}
-
 
 // Through scaled(), so that a record stays a record and the exact solver
 // takes it through the record kernel.
@@ -148,7 +140,7 @@ IdaInterval interval_of(const Span& span, const std::vector<Bracket>& brackets) 
 class MarginSampler {
 public:
     MarginSampler(const GroundInput& input, double alpha, double p, const IdaOptions& o)
-        : input_(input), alpha_(alpha), p_(p), o_(o), model_(model_of(alpha, p, o.model)) {
+        : input_(input), alpha_(alpha), p_(p), o_(o), model_(records::model_of(alpha, p, o.model)) {
         sim_.solver = o.model.solver;
         sim_.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
         record_ = dynamic_cast<const dynamics::SampledInput*>(&input);

@@ -168,21 +168,13 @@ std::vector<Interval> intervals_of(const std::vector<SpectrumPoint>& pts, const 
     return intervals_of(spans_of(ps, collapse, brackets), boundaries);
 }
 
-dynamics::Model model_at(double alpha, double p, const records::CollapseOptions& m) {
-    dynamics::Model model;
-    model.equation = m.equation;
-    model.restitution = m.housner_restitution ? dynamics::housner_restitution(alpha) : m.restitution;
-    model.block = dynamics::Block::from_p(p, alpha);
-    return model;
-}
-
 bool record_kernel_runs(const GroundInput& input, double alpha, const SpectrumOptions& o) {
     const auto* record = dynamic_cast<const dynamics::SampledInput*>(&input);
     dynamics::SimulationOptions sim;
     sim.solver = o.model.solver;
     sim.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
     return record && o.model.criterion == dynamics::Criterion::overturning &&
-           dynamics::record_kernel_applies(model_at(alpha, o.p_min, o.model), *record, sim);
+           dynamics::record_kernel_applies(records::model_of(alpha, o.p_min, o.model), *record, sim);
 }
 
 // The two runs of a sample in p, at p and at p (1 + slope_step), each with
@@ -215,7 +207,7 @@ public:
 private:
     bool run(dynamics::RestOfInput& rest, double p, std::vector<dynamics::FlightMargin>& flights) {
         rest.retune(p);
-        const dynamics::Model model = model_at(alpha_, p, o_.model);
+        const dynamics::Model model = records::model_of(alpha_, p, o_.model);
         dynamics::FlightMargins margins(model, rest, 1.0, false);
         const bool c = dynamics::simulate_with_margins(model, record_, sim_, margins).collapse(o_.model.criterion, alpha_);
         flights = margins.flights();

@@ -48,8 +48,8 @@ std::string describe_mark(const SpectrumMark& m) {
                   m.block.alpha, m.block.p, height_at_p(m.block.alpha, m.block.p),
                   m.overturns ? "OVERTURNS" : "does not overturn");
     std::string out = text;
-    auto side = [&](const SpectrumFirst& f, double h, const char* which, const char* what) {
-        if (!f.found) return std::string("; no ") + what + " p " + which + " it on the spectrum's range";
+    auto side = [&](const SpectrumFirst& f, double h, const char* which, const char* what, const char* none) {
+        if (!f.found) return std::string("; ") + none;
         std::snprintf(text, sizeof text, "; %s p %s it %.6g rad/s (%+.3g %%: H = %.4g m)", what, which, f.p,
                       100 * (f.p / m.block.p - 1), h);
         return std::string(text);
@@ -57,7 +57,8 @@ std::string describe_mark(const SpectrumMark& m) {
     if (m.in_set) {
         out += "; inside an overturning interval of the spectrum, the blocks between its ends overturn too: "
                "the nearest surviving blocks lie beyond them";
-        out += side(m.below, m.height_below, "below", "its interval ends, for taller blocks, at");
+        out += side(m.below, m.height_below, "below", "its interval ends, for taller blocks, at",
+                    "for taller blocks its interval reaches the spectrum's lowest p");
         auto band = [&](const SpectrumFirst& edge, const SpectrumFirst& next, const char* which) {
             if (!edge.found) return std::string();
             if (!next.found) return std::string("; the ") + which + " blocks survive on the rest of the spectrum's range";
@@ -66,12 +67,15 @@ std::string describe_mark(const SpectrumMark& m) {
             return std::string(text);
         };
         out += band(m.below, m.survivors_below, "taller");
-        out += side(m.above, m.height_above, "above", "its interval ends, for shorter blocks, at");
+        out += side(m.above, m.height_above, "above", "its interval ends, for shorter blocks, at",
+                    "for shorter blocks its interval reaches the spectrum's highest p");
         out += band(m.above, m.survivors_above, "shorter");
     } else {
         if (m.overturns) out += ", on an island the spectrum's method did not resolve";
-        out += side(m.below, m.height_below, "below", "nearest overturning");
-        out += side(m.above, m.height_above, "above", "nearest overturning");
+        out += side(m.below, m.height_below, "below", "nearest overturning",
+                    "no overturning p below it on the spectrum's range");
+        out += side(m.above, m.height_above, "above", "nearest overturning",
+                    "no overturning p above it on the spectrum's range");
     }
     return out;
 }
