@@ -129,7 +129,7 @@ import csv, sys
 rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
 want = {2: None, 3: "manifest line 3: records/missing.txt: cannot open",
         4: "manifest line 4: alpha: must be in (0, pi/4) (got 0)",
-        5: "manifest line 5: alpha: must be in (0, 0.7) (got -0.2)",
+        5: "manifest line 5: alpha: must be in (0, pi/4) (got -0.2)",
         6: "manifest line 6: solver: unknown solver 'rk45'",
         7: "manifest line 7: alpha: 'abc' is not a number",
         8: "manifest line 8: p: 'two' is not a number",

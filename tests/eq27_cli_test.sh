@@ -31,7 +31,7 @@ small=(--alpha 0.1,0.2 --p-min 1 --p-max 4 --p-points 3)
 # Bad arguments: exit 2, the option named.
 check "FILE first"        "FILE comes first, before '--alpha'"           "$rocking" eq27 --alpha 0.1
 status "FILE first"       2                                              "$rocking" eq27 --alpha 0.1
-check "alpha range"       "--alpha: each must be in (0, 0.7) (got 0.8)"  "$rocking" eq27 x --alpha 0.8
+check "alpha range"       "--alpha: each must be in (0, pi/4) (got 0.8)"  "$rocking" eq27 x --alpha 0.8
 check "p-min range"       "--p-min: must be in (0.01, 1000] rad/s"       "$rocking" eq27 x --p-min 0
 check "p-max below p-min" "--p-max: must not be below --p-min (2)"       "$rocking" eq27 x --p-min 2 --p-max 1
 status "p-max below p-min" 2                                             "$rocking" eq27 x --p-min 2 --p-max 1

@@ -26,7 +26,7 @@ run=("$rocking" fragility "$tmp/sine1.txt" "$tmp/sine1.5.txt" --unit g --dt 0.01
 check "alpha required"     "--alpha is required"            "$rocking" fragility no-such-file --p 1
 status "alpha required"    2                                 "$rocking" fragility no-such-file --p 1
 check "p required"         "--p is required"                "$rocking" fragility no-such-file --alpha 0.1
-check "alpha out of range" "--alpha: each must be in (0, 0.7) (got 0.8)" "$rocking" fragility x --alpha 0.8 --p 1
+check "alpha out of range" "--alpha: each must be in (0, pi/4) (got 0.8)" "$rocking" fragility x --alpha 0.8 --p 1
 check "q-max too low"      "--q-max: must be in (1, 10000]" "$rocking" fragility x --alpha 0.1 --p 1 --q-max 1
 status "q-max too low"     2                                 "$rocking" fragility x --alpha 0.1 --p 1 --q-max 1
 check "seed needed"        "--bootstrap needs --seed"       "$rocking" fragility x --alpha 0.1 --p 1 --bootstrap 10
@@ -130,7 +130,8 @@ status "restitution refused" 2 "${run[@]}" --alpha 0.1 --p 2 --restitution 1.5
 check "block: its name in the text" "alpha = 0.14889, p = 1.90737 rad/s (block 0.6x4 m):" "${run[@]}" --block 0.6x4
 check "block with alpha refused" "--block gives each block's alpha and p" "${run[@]}" --block 0.6x4 --alpha 0.1
 status "block with alpha refused" 2 "${run[@]}" --block 0.6x4 --alpha 0.1
-check "block out of the search's alpha" "--block 3.5x4: alpha = atan(B/H) = 0.71883 rad, outside the searches' (0, 0.7)" "$rocking" fragility x --block 3.5x4
+check "a block as wide as tall" "--block 4x4: alpha = atan(B/H) = 0.785398 rad is not below pi/4" "$rocking" fragility x --block 4x4
+check "a squat block within pi/4 is searched" "x: cannot open the file" "$rocking" fragility x --block 3.5x4
 check "block wider than tall" "alpha = atan(B/H) = 0.896055 rad is not below pi/4" "$rocking" fragility x --block 5x4
 check "block grammar" "each block is THICKNESSxHEIGHT in m, e.g. 0.6x4 (got '0.6*4')" "$rocking" fragility x --block '0.6*4'
 read -r alpha p < <($py -c "import math; B, H = 0.6, 4.0; R = math.hypot(B, H) / 2; print(repr(math.atan(B / H)), repr(math.sqrt(3 * 9.81 / (4 * R))))")

@@ -105,21 +105,21 @@ kind,record,unit,record_dt,alpha,p,points
 simulate,rec.txt,g,0.01,1e400,2,
 simulate,rec.txt,g,0.01,0.1,1e-320,
 spectrum,rec.txt,g,0.01,0.1,,10000000
-spectrum,rec.txt,g,0.01,0.72,,
-ida,rec.txt,g,0.01,0.72,2,
+spectrum,rec.txt,g,0.01,0.8,,
+ida,rec.txt,g,0.01,0.8,2,
 simulate,rec.txt,g,0.01,0.1 ,2,
 CSV
 "$rocking" batch "$tmp/m.csv" --output "$tmp/out.csv" >/dev/null 2>&1
 check  "a cell 1e400"                    "manifest line 2: alpha: '1e400' $large" cat "$tmp/out.csv"
 check  "a cell 1e-320"                   "manifest line 3: p: '1e-320' $small" cat "$tmp/out.csv"
 check  "a points cell 10000000"          "manifest line 4: points: must be a whole number from 2 to 100000 (got 10000000)" cat "$tmp/out.csv"
-check  "a spectrum row's alpha 0.72"     "manifest line 5: alpha: must be in (0, 0.7) (got 0.72)" cat "$tmp/out.csv"
-check  "an ida row's alpha 0.72"         "manifest line 6: alpha: must be in (0, 0.7) (got 0.72)" cat "$tmp/out.csv"
+check  "a spectrum row's alpha 0.8"     "manifest line 5: alpha: must be in (0, pi/4) (got 0.8)" cat "$tmp/out.csv"
+check  "an ida row's alpha 0.8"         "manifest line 6: alpha: must be in (0, pi/4) (got 0.8)" cat "$tmp/out.csv"
 check  "a cell '0.1 ' runs"              "7,simulate,rec.txt,g,0.01,0.1,2,,ok," cat "$tmp/out.csv"
 
 # ---- The searches' alpha range, one for every command.
-for cmd in "collapse $r --alpha 0.72" "spectrum $r --alpha 0.72" "fragility $r --alpha 0.72 --p 2" "eq27 $r --alpha 0.72"; do
+for cmd in "collapse $r --alpha 0.8" "spectrum $r --alpha 0.8" "fragility $r --alpha 0.8 --p 2" "eq27 $r --alpha 0.8"; do
     # shellcheck disable=SC2086
-    check "${cmd%% *} alpha 0.72"        "must be in (0, 0.7) (got 0.72)" "$rocking" $cmd --unit g
+    check "${cmd%% *} alpha 0.8"        "must be in (0, pi/4) (got 0.8)" "$rocking" $cmd --unit g
 done
 exit $fail

@@ -42,7 +42,7 @@ run=("$rocking" spectrum "$rec" --unit g --dt 0.01)
 expect "alpha required"        2 "--alpha is required"                       "$rocking" spectrum no-such-file
 expect "alpha list ends"       2 "--alpha: a list of numbers"                "$rocking" spectrum no-such-file --alpha 0.1,
 expect "alpha not a number"    2 "--alpha: 'x' is not a number"              "$rocking" spectrum no-such-file --alpha 0.1,x
-expect "alpha out of range"    2 "--alpha: each must be in (0, 0.7) (got 0.8)" "$rocking" spectrum no-such-file --alpha 0.8
+expect "alpha out of range"    2 "--alpha: each must be in (0, pi/4) (got 0.8)" "$rocking" spectrum no-such-file --alpha 0.8
 expect "points too few"        2 "--points: must be a whole number from 2 to 100000 (got 1)" "$rocking" spectrum no-such-file --alpha 0.1 --points 1
 expect "points not whole"      2 "--points: must be a whole number from 2 to 100000 (got 2.5)" "$rocking" spectrum no-such-file --alpha 0.1 --points 2.5
 expect "p-min at 0"            2 "--p-min: must be in [0.01, 1000] rad/s"    "$rocking" spectrum no-such-file --alpha 0.1 --p-min 0

@@ -138,7 +138,7 @@ TEST(Jobs, EachBadCellIsRefusedNamingItsColumn) {
     const std::pair<std::string, std::string> rec{"record", "r.txt"}, a{"alpha", "0.1"}, p{"p", "2"};
     EXPECT_EQ(refusal({rec, {"alpha", "0"}, p}), "alpha: must be in (0, pi/4) (got 0)");
     EXPECT_EQ(refusal({rec, {"alpha", "-0.1"}, p, {"kind", "collapse"}}).substr(0, 7), "p: does");
-    EXPECT_EQ(refusal({rec, {"alpha", "-0.1"}, {"kind", "collapse"}}), "alpha: must be in (0, 0.7) (got -0.1)");
+    EXPECT_EQ(refusal({rec, {"alpha", "-0.1"}, {"kind", "collapse"}}), "alpha: must be in (0, pi/4) (got -0.1)");
     EXPECT_EQ(refusal({rec, {"alpha", "abc"}, p}), "alpha: 'abc' is not a number");
     EXPECT_EQ(refusal({rec, {"alpha", "0.1x"}, p}), "alpha: '0.1x' is not a number");
     // The command line's number reader and messages (numerics/number_text.hpp), in every numeric column.
@@ -420,26 +420,30 @@ TEST(Jobs, AResultRowHasTheHeadersColumnsAndQuotesWhatNeedsIt) {
 
 // The searches' slenderness is one range, studies::kSearchAlphaMax: a batch
 // row of each search, and the library's spectrum and IDA (which took (0, 1)
-// where every command took (0, 0.7)), refuse alpha = 0.72 alike.
+// where every command took (0, pi/4)), refuse alpha = 0.72 alike.
 TEST(Jobs, EverySearchTakesTheCommandsAlphaRange) {
-    const std::pair<std::string, std::string> rec{"record", "r.txt"}, alpha{"alpha", "0.72"};
-    EXPECT_EQ(refusal({rec, alpha, {"kind", "collapse"}}), "alpha: must be in (0, 0.7) (got 0.72)");
-    EXPECT_EQ(refusal({rec, alpha, {"kind", "spectrum"}}), "alpha: must be in (0, 0.7) (got 0.72)");
-    EXPECT_EQ(refusal({rec, alpha, {"kind", "ida"}, {"p", "2"}}), "alpha: must be in (0, 0.7) (got 0.72)");
-    EXPECT_EQ(refusal({rec, alpha, {"p", "2"}}), "accepted");  // simulate: the dynamics' own (0, pi/4)
+    const std::pair<std::string, std::string> rec{"record", "r.txt"}, alpha{"alpha", "0.8"};
+    EXPECT_EQ(refusal({rec, alpha, {"kind", "collapse"}}), "alpha: must be in (0, pi/4) (got 0.8)");
+    EXPECT_EQ(refusal({rec, alpha, {"kind", "spectrum"}}), "alpha: must be in (0, pi/4) (got 0.8)");
+    EXPECT_EQ(refusal({rec, alpha, {"kind", "ida"}, {"p", "2"}}), "alpha: must be in (0, pi/4) (got 0.8)");
+    for (const char* kind : {"collapse", "spectrum"})
+        EXPECT_EQ(refusal({rec, {"alpha", "0.72"}, {"kind", kind}}), "accepted") << kind;
+    for (const char* kind : {"simulate", "ida"})
+        EXPECT_EQ(refusal({rec, {"alpha", "0.72"}, {"kind", kind}, {"p", "2"}}), "accepted") << kind;
     const dynamics::PulseInput pulse(PulseTrain({{1.0, 1.0}}), 0.15, 1.0);
-    for (double a : {0.7, 0.72, 0.9}) {
+    EXPECT_NO_THROW(studies::incremental_dynamic_analysis(pulse, 0.72, 2.0, studies::IdaOptions{}));
+    for (double a : {0.8, 0.9}) {
         try {
             studies::rocking_spectrum(pulse, a, studies::SpectrumOptions{});
             ADD_FAILURE() << "spectrum took alpha = " << a;
         } catch (const std::invalid_argument& e) {
-            EXPECT_STREQ(e.what(), "spectrum: alpha must be in (0, 0.7)");
+            EXPECT_STREQ(e.what(), "spectrum: alpha must be in (0, pi/4)");
         }
         try {
             studies::incremental_dynamic_analysis(pulse, a, 2.0, studies::IdaOptions{});
             ADD_FAILURE() << "ida took alpha = " << a;
         } catch (const std::invalid_argument& e) {
-            EXPECT_STREQ(e.what(), "ida: alpha must be in (0, 0.7)");
+            EXPECT_STREQ(e.what(), "ida: alpha must be in (0, pi/4)");
         }
     }
 }

@@ -214,7 +214,7 @@ def test_eq27_refine_is_rocking_eq27_refine(synthetic):
 
 def test_study_arguments_are_checked():
     r = rq.record_synth(pulse=(0.6, 0.8, 0.4, 2.2), dt=0.01, duration=12)
-    with pytest.raises(ValueError, match=r"^alpha: each must be in \(0, 0.7\)"):
+    with pytest.raises(ValueError, match=r"^alpha: each must be in \(0, pi/4\)"):
         rq.spectrum(r, alpha=[0.1, 0.9])
     with pytest.raises(ValueError, match="^p_max: must be above p_min"):
         rq.spectrum(r, alpha=0.1, p_min=5, p_max=2)

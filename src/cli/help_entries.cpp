@@ -153,7 +153,7 @@ Table 1's search: the first pulsation p (rad/s) at which the record overturns a 
 slenderness alpha, p raised from 0.3 by 1 % up to 30 rad/s, then bisected to 1e-4 relative inside
 the last step. Not a bound: a lower p may overturn the block too (docs/findings.md, T1b; rocking
 spectrum finds every interval).
-  --alpha A         the slenderness (rad), in (0, 0.7)
+  --alpha A         the slenderness (rad), in (0, pi/4)
   --thickness B --height H   the block as built, full thickness and height (m), or with
                     --half-height h: its alpha = atan(B/H) is searched and its own p printed beside
                     (an --alpha given too must agree to 0.1 %)
@@ -198,7 +198,7 @@ named in the output. For each record:
                     --thickness B --half-height h (m)
   --alpha A         the slenderness (rad), with one of --height H (m), --half-height h (m, the H of
                     eq. 2) or --p P (rad/s). Given both ways (--thickness with --alpha or --p), the
-                    two must agree to 0.1 %. alpha in (0, 0.7)
+                    two must agree to 0.1 %. alpha in (0, pi/4)
   --width W         the refine searches' width, in ln q and ln p, in [1e-7, 0.1] (default 1e-3):
                     an island of overturning narrower than W may be missed
   --restitution E   the restitution on angular velocity at impact, in [0, 1], or housner (the default)
@@ -225,7 +225,7 @@ each end bisected to 1e-6 relative and confirmed by gsl-rk8pd at rtol 1e-13, or 
 ill-conditioned (the record times 1 +- 1e-13 flips it); beside Table 1's first collapse (rocking
 collapse), whose bracket joins the grid method's points. Islands narrower than half a step may be
 missed.
-  --alpha A[,A...]  slendernesses (rad), each in (0, 0.7), none twice; at least one of --alpha and
+  --alpha A[,A...]  slendernesses (rad), each in (0, pi/4), none twice; at least one of --alpha and
                     --mark, at most 20 alphas in all
   --mark BxH[,...]  the engineer's blocks, full thickness x full height in m (0.6x4; at most 50,
                     B < H, p in (0.01, 1000) rad/s): their alphas atan(B/H) join --alpha's; for
@@ -268,11 +268,11 @@ half a step), every overturning interval in q (ends bisected to 1e-6 relative), 
 collapse q or a point censored at --q-max; then, per block, the lognormal fit (median q, beta;
 Baker 2015), a bootstrap interval over records on request, and the empirical curve. A record
 given twice (the same samples, whatever the path) is refused.
-  --alpha A[,A...]  slendernesses (rad), 1 to 50, each in (0, 0.7), none twice
+  --alpha A[,A...]  slendernesses (rad), 1 to 50, each in (0, pi/4), none twice
   --p P[,P...]      pulsations (rad/s), 1 to 50, each in (0.01, 1000), none twice: the blocks are
                     every alpha with every p
   --block BxH[,...] instead of --alpha and --p: the blocks as built, full thickness x full height
-                    in m (0.6x4; at most 50), each its alpha = atan(B/H), in (0, 0.7), and its p,
+                    in m (0.6x4; at most 50), each its alpha = atan(B/H), in (0, pi/4), and its p,
                     in (0.01, 1000) rad/s
   --q-max Q         the grid's top, in (1, 10000] (default 20)
   --points N        the grid's points, log-spaced, 2 to 10000 (default 100)
@@ -316,7 +316,7 @@ half-period to_k (k = 1..11, as record info), the share of non-conservative case
 below eq. 27's; a record censored at --q-max counts as conservative) with its 95 % Wilson interval
 (cases taken as independent) and, with --bootstrap, a 90 % bootstrap interval over records. An
 alpha or a record given twice (the same samples, whatever the path) is refused.
-  --alpha A[,A...]  slendernesses (rad), 1 to 50, each in (0, 0.7) (default 0.05,0.1,0.15,0.2,0.25)
+  --alpha A[,A...]  slendernesses (rad), 1 to 50, each in (0, pi/4) (default 0.05,0.1,0.15,0.2,0.25)
   --p-min P, --p-max P   the range of p (rad/s), in (0.01, 1000] (default 0.5 and 10)
   --p-points N      p log-spaced over that range, ends included, 1 to 1000 (default 10); 1 is the
                     one p --p-min (--p-max, if given, equal to it)
@@ -352,7 +352,7 @@ lines are skipped; an empty cell takes the default of the command that runs that
                     spectrum)
   record            the record (see Records), a relative path from the manifest's folder;
                     unit, record_dt: a plain-text record's unit and step (s)
-  alpha             the slenderness (rad): in (0, pi/4) for simulate, (0, 0.7) for the others
+  alpha             the slenderness (rad), in (0, pi/4)
   p, height, half_height   one of them: the block's p (rad/s), full height or half-height (m)
                     (simulate, ida)
   scaling           q=Q (PGA = Q alpha g) or pga=G (g); default: as recorded (not ida)
