@@ -328,3 +328,43 @@ TEST(Fragility, TheBootstrapFitsResamplesOfEqualCollapsesBelowACensoredPoint) {
         EXPECT_GE(b.beta.lo, *std::min_element(betas.begin(), betas.end()) * (1 - 1e-11)) << c;
     }
 }
+
+// Three overturnings and a censored record at q = 1e200 fit (median e^147);
+// a resample of one overturning and three copies of the censored record has a
+// maximum (the censored lies above), but its median, e^844, is beyond a
+// double.  It is redrawn, as one without a maximum is: each end of the
+// interval lies among the fits of resamples a double holds (every composition
+// of four draws is enumerated here).
+TEST(Fragility, TheBootstrapRedrawsResamplesWhoseMedianIsBeyondADouble) {
+    const std::vector<IdaPoint> points = {{2.0, true}, {2.5, true}, {3.0, true}, {1e200, false}};
+    EXPECT_TRUE(std::isfinite(fit_lognormal(points).median));
+    const std::vector<IdaPoint> far = {{2.0, true}, {1e200, false}, {1e200, false}, {1e200, false}};
+    EXPECT_EQ(why_no_maximum(far), "");
+    EXPECT_THROW(fit_lognormal(far), std::invalid_argument);
+    std::vector<LognormalFragility> fits;
+    for (int a = 0; a <= 4; ++a)
+        for (int b = 0; a + b <= 4; ++b)
+            for (int c = 0; a + b + c <= 4; ++c) {
+                std::vector<IdaPoint> draw;
+                const int counts[4] = {a, b, c, 4 - a - b - c};
+                for (int k = 0; k < 4; ++k) draw.insert(draw.end(), counts[k], points[k]);
+                if (!why_no_maximum(draw).empty()) continue;
+                try {
+                    fits.push_back(fit_lognormal(draw));
+                } catch (const std::invalid_argument&) {
+                }
+            }
+    // The percentile interval interpolates between resamples' fits: its ends
+    // lie within the fits a double holds (before, the bootstrap threw).
+    const BootstrapInterval b = bootstrap(points, 50, 3, 0.9);
+    auto within = [&](double v, double LognormalFragility::*field) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (const LognormalFragility& f : fits) lo = std::min(lo, f.*field), hi = std::max(hi, f.*field);
+        return std::isfinite(v) && lo <= v && v <= hi;
+    };
+    EXPECT_TRUE(within(b.median.lo, &LognormalFragility::median)) << b.median.lo;
+    EXPECT_TRUE(within(b.median.hi, &LognormalFragility::median)) << b.median.hi;
+    EXPECT_TRUE(within(b.beta.lo, &LognormalFragility::beta)) << b.beta.lo;
+    EXPECT_TRUE(within(b.beta.hi, &LognormalFragility::beta)) << b.beta.hi;
+    EXPECT_LT(b.median.lo, b.median.hi);
+}

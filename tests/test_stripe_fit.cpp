@@ -244,6 +244,45 @@ TEST(StripeFit, TheBootstrapRedrawsResamplesWithoutAMaximum) {
     EXPECT_NEAR(b.beta.hi, f.beta, 1e-14 * f.beta);
 }
 
+TEST(StripeFit, TheBootstrapRedrawsResamplesWhoseMedianIsBeyondADouble) {
+    // Record A steps from share 0 to 1, records B rise from 1e-3 to `rise`: a
+    // resample of B's alone has a maximum of ln L (the shares rise), but its
+    // median lies e^(hundreds) out (at 1.008e-3, e^905: beyond a double; at
+    // 1.005e-3, further, where Newton's steps stall); of A's alone it has
+    // none.  Either is redrawn, so every fitted resample holds 1 or 2 copies
+    // of A, and the interval lies between the fits of those two mixtures.
+    for (double rise : {1.008e-3, 1.005e-3}) {
+        StripeShares shares;
+        shares.q = {1, 2};
+        shares.from = {0.9, 1.8};
+        shares.to = {1.1, 2.2};
+        shares.half_width = 0.1;
+        shares.share = {{0, 1}, {1e-3, rise}, {1e-3, rise}};
+        StripeShares only_b = shares;
+        only_b.share = {shares.share[1], shares.share[2]};
+        EXPECT_EQ(why_no_stripe_maximum(stripes_of(only_b)), "");
+        EXPECT_ANY_THROW(fit_stripes(stripes_of(only_b)));
+        std::vector<StripeFragility> mixtures;
+        for (int copies_of_a : {1, 2}) {
+            StripeShares mix = shares;
+            mix.share.clear();
+            for (int k = 0; k < 3; ++k) mix.share.push_back(shares.share[k < copies_of_a ? 0 : 1]);
+            mixtures.push_back(fit_stripes(stripes_of(mix)));
+        }
+        const BootstrapInterval b = bootstrap_stripes(shares, 50, 3, 0.9);
+        // The percentile interval interpolates between the resamples' fits.
+        auto within = [&](double v, double StripeFragility::*field) {
+            const double x = mixtures[0].*field, y = mixtures[1].*field;
+            return std::isfinite(v) && std::min(x, y) <= v && v <= std::max(x, y);
+        };
+        EXPECT_TRUE(within(b.median.lo, &StripeFragility::median)) << rise << ": " << b.median.lo;
+        EXPECT_TRUE(within(b.median.hi, &StripeFragility::median)) << rise << ": " << b.median.hi;
+        EXPECT_TRUE(within(b.beta.lo, &StripeFragility::beta)) << rise << ": " << b.beta.lo;
+        EXPECT_TRUE(within(b.beta.hi, &StripeFragility::beta)) << rise << ": " << b.beta.hi;
+        EXPECT_LT(b.median.lo, b.median.hi) << rise;  // both mixtures drawn
+    }
+}
+
 TEST(StripeFit, StripeSharesRefuseBadGrids) {
     const std::vector<std::vector<Span>> one = {set_of({{2, 3}})};
     EXPECT_THROW(stripe_shares({}, 1, 20, 20), std::invalid_argument);

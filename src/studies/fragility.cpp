@@ -195,12 +195,20 @@ BootstrapInterval bootstrap(const std::vector<IdaPoint>& points, int resamples, 
     std::vector<IdaPoint> draw(points.size());
     for (long attempts = 0; static_cast<int>(medians.size()) < resamples; ++attempts) {
         if (attempts > 100L * resamples)
-            throw std::invalid_argument("fragility bootstrap: fewer than 1 in 100 resamples have a maximum of ln L "
+            throw std::invalid_argument("fragility bootstrap: fewer than 1 in 100 resamples have a maximum of ln L within a double "
                                         "(two distinct overturning q, or one below a censored record); too few "
                                         "records overturned to resample");
         for (IdaPoint& d : draw) d = points[rng.index(points.size())];
         if (!why_no_maximum(draw).empty()) continue;
-        const LognormalFragility f = fit_lognormal(draw);
+        // A resample can have a maximum no double holds (one overturning under
+        // censored records far above it: a median of e^(hundreds)); the whole
+        // sample's fit succeeded, so it is redrawn as one without a maximum is.
+        LognormalFragility f;
+        try {
+            f = fit_lognormal(draw);
+        } catch (const std::invalid_argument&) {
+            continue;
+        }
         medians.push_back(f.median);
         betas.push_back(f.beta);
     }

@@ -201,12 +201,21 @@ BootstrapInterval bootstrap_stripes(const StripeShares& shares, int resamples, s
     StripeShares draw = shares;
     for (long attempts = 0; static_cast<int>(medians.size()) < resamples; ++attempts) {
         if (attempts > 100L * resamples)
-            throw std::invalid_argument("stripe bootstrap: fewer than 1 in 100 resamples have a maximum of ln L; too "
+            throw std::invalid_argument("stripe bootstrap: fewer than 1 in 100 resamples have a maximum of ln L within a double; too "
                                         "few records overturn, or overturn alike, to resample");
         for (std::size_t r = 0; r < records; ++r) draw.share[r] = shares.share[rng.index(records)];
         const std::vector<Stripe> stripes = stripes_of(draw);
         if (!why_no_stripe_maximum(stripes).empty()) continue;
-        const StripeFragility f = fit_stripes(stripes);
+        // A resample can have a maximum no double holds: its median e^(hundreds)
+        // out (fit_stripes refuses it), or further, where Newton's steps stall
+        // on the flat ln L.  The whole sample's fit succeeded, so such a
+        // resample is redrawn as one without a maximum is, not the study lost.
+        StripeFragility f;
+        try {
+            f = fit_stripes(stripes);
+        } catch (const std::exception&) {
+            continue;
+        }
         medians.push_back(f.median);
         betas.push_back(f.beta);
     }
