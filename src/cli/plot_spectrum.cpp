@@ -134,6 +134,9 @@ std::string script(const std::string& output, const records::Record& r, const st
        << log_tics("x", o.p_min, o.p_max) << "set xtics nomirror\nset ytics nomirror\nset format x '%g'\nset format y '%g'\n"
        << "set xlabel 'p [rad/s]'\nset ylabel 'max |θ|/α during the input'\n";
     const bool any_mark = !marks.empty();
+    // assess draws the record's spectrum without Table 1's search: no key for a line not drawn.
+    bool any_table1 = false;
+    for (const SpectrumStudy& s : studies) any_table1 = any_table1 || s.table1.found;
     for (int k = 0; k < n; ++k) {
         const SpectrumStudy& s = studies[k];
         const int top = kHeader + k * kPanel + kAbove;
@@ -146,18 +149,20 @@ std::string script(const std::string& output, const records::Record& r, const st
         gp << "set arrow " << ++arrows << " from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb 'gray40'\n";
         gp << "set arrow " << ++arrows << " from graph 0, first " << gp_number(y.top) << " to graph 1, first "
            << gp_number(y.top) << " nohead lc rgb 'gray60'\n";
-        if (s.table1.found)
-            gp << "set arrow " << ++arrows << " from " << gp_number(s.table1.p) << ", graph 0 to "
-               << gp_number(s.table1.p) << ", graph 1 nohead lw 2 dt 2 lc rgb 'blue'\n";
         int in_panel = 0;
         for (const studies::SpectrumMark& m : marks) {
             if (m.block.alpha != s.spectrum.alpha) continue;
             gp << "set arrow " << ++arrows << " from " << gp_number(m.block.p) << ", graph 0 to "
-               << gp_number(m.block.p) << ", graph 1 nohead lw 2 lc rgb '#008000' front\n";
+               << gp_number(m.block.p) << ", graph 1 nohead lw 4 lc rgb '#008000' front\n";
             gp << "set label " << ++labels << " " << gp_text(outcome(m)) << " at " << gp_number(m.block.p)
                << ", graph " << g7(0.08 + 0.1 * (in_panel++ % 4))
                << " left offset 0.4,0 front tc rgb '#006000' font ',10'\n";
         }
+        // After the marks, dashed over their wider line: a block marked at
+        // Table 1's own p hid it.
+        if (s.table1.found)
+            gp << "set arrow " << ++arrows << " from " << gp_number(s.table1.p) << ", graph 0 to "
+               << gp_number(s.table1.p) << ", graph 1 nohead lw 2 dt 2 lc rgb 'blue' front\n";
         gp << x2tics(height_tics(s.spectrum.alpha, o.p_min, o.p_max))
            << "set x2label " << gp_text("H [m]: the height of the block of α = " + g7(s.spectrum.alpha) + " at this p")
            << "\nset title " << gp_text(panel_title(s)) << " offset 0,0.2\n";
@@ -174,9 +179,9 @@ std::string script(const std::string& output, const records::Record& r, const st
            << " : 1/0) with points pt 7 ps 0.5 lc rgb '#c00000' title 'overturned run (θ reaches the fall angle)'";
         if (last)
             gp << ", NaN with boxes fs transparent solid 0.3 lc rgb '#e06060' title 'overturning interval (ends bisected)'"
-               << ", NaN with lines lw 2 dt 2 lc rgb 'blue' title \"Table 1's p (its upward search's first collapse)\""
-               << (any_mark ? ", NaN with lines lw 2 lc rgb '#008000' title 'marked block (--mark): its outcome at its p'"
-                            : "");
+               << (any_table1 ? ", NaN with lines lw 2 dt 2 lc rgb 'blue' title \"Table 1's p (its upward search's first collapse)\""
+                              : "")
+               << (any_mark ? ", NaN with lines lw 4 lc rgb '#008000' title 'marked block: its outcome at its p'" : "");
         gp << "\n";
     }
     gp << "unset multiplot\n";
