@@ -29,7 +29,7 @@ status "assess: eq. 27's x below 1e-150" 2 "$rocking" assess "$tmp/huge.txt" --u
 # A margin of -6.6e302 printed with %f filled its buffer with digits; an interval past the
 # spectrum's range read "no its interval ends".
 check "assess: a huge margin in powers of ten" "margin -6.57e+304 %)" "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 1e-5 --p 2
-check "assess: an interval past the spectrum's range" "for taller blocks its interval reaches the spectrum's lowest p" \
+check "assess: an interval past the spectrum's range" "inside an overturning interval, whose blocks all overturn: from the spectrum's lowest p to the spectrum's highest p" \
     "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 1e-5 --p 2
 
 a="$records/esm/IT.AQK..HNE.D.20090406.013240.C.ACC.ASC"
@@ -49,6 +49,9 @@ if "$rocking" assess "$b" --thickness 0.6 --height 400 --json | $py -c "
 import json, sys
 r = json.load(sys.stdin)['records'][0]
 assert r['q_record'] > 20 and r['first_overturning']['found'] and r['first_overturning']['scale'] < 1, r
+# Its p, 0.19 rad/s, lies below 0.3: the spectrum widens to hold it, so its nearest changes
+# are outcomes found, not the range's end (before: "nearest overturning p above it 0.3").
+assert r['change_above']['found'] and r['change_above']['p'] != 0.3 and r['change_below']['found'], r
 "; then echo "ok: assess reaches a weak block's scale"; else echo "FAIL: assess on a weak block"; fail=1; fi
 "$rocking" assess "$a" "$b" --thickness 0.6 --height 4 --json >"$tmp/assess.json" || { echo "FAIL: assess ran"; exit 1; }
 "$rocking" fragility "$a" "$b" --block 0.6x4 --method refine --width 1e-3 --json >"$tmp/fragility.json"
@@ -76,6 +79,11 @@ for r, path in zip(d["records"], files):
     assert fo["found"] and abs(fo["scale"] - fo["q"] / r["q_record"]) < 1e-15 * fo["scale"]
     assert sim(path, "--q", repr(fo["q"]))["collapse_overturning"], fo
     assert not sim(path, "--q", repr(fo["q"] * (1 - 2e-6)))["collapse_overturning"], fo
+    # Its interval: its middle overturns too, as the text's ten digits of q do.
+    assert fo["interval_to"] > fo["q"], fo
+    assert sim(path, "--q", repr(math.sqrt(fo["q"] * fo["interval_to"])))["collapse_overturning"], fo
+    rc = r["first_robust_collapse"]
+    assert math.log(rc["interval_to"] / rc["q"]) > 5e-3, rc  # wider than the robust width, 5e-3 in ln q
     # The same IDA as fragility's (same model, method and width).
     rec = [x for x in frag["blocks"][0]["records"] if x["file"] == path][0]
     assert rec["first_overturning"]["q"] == fo["q"], (rec["first_overturning"], fo)

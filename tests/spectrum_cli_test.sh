@@ -40,6 +40,7 @@ run=("$rocking" spectrum "$rec" --unit g --dt 0.01)
 
 # Bad arguments: exit 2, the option named, before the file is read.
 expect "alpha required"        2 "--alpha is required"                       "$rocking" spectrum no-such-file
+expect "a mark off the p range"  2 "--mark 0.6x400: its p, 0.191801 rad/s (H 400 m), lies outside the spectrum's p range [0.3, 30] rad/s (--p-min, --p-max)" "$rocking" spectrum no-such-file --mark 0.6x400
 expect "alpha list ends"       2 "--alpha: a list of numbers"                "$rocking" spectrum no-such-file --alpha 0.1,
 expect "alpha not a number"    2 "--alpha: 'x' is not a number"              "$rocking" spectrum no-such-file --alpha 0.1,x
 expect "alpha out of range"    2 "--alpha: each must be in (0, pi/4) (got 0.8)" "$rocking" spectrum no-such-file --alpha 0.8

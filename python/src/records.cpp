@@ -388,7 +388,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         if (refused.blame == studies::Refusal::Blame::block)
             refuse(std::string(height ? "height" : half_height ? "half_height" : "p") + ": " + refused.why);
         if (refused.blame == studies::Refusal::Blame::record) throw std::invalid_argument(label_of(*r) + ": " + refused.why);
-        refuse_unresolvable_run(std::max(o.p_max, given.block.p), inputs.back()->t_end(), "record " + label_of(*r));
+        refuse_unresolvable_run(o.spectrum_options(given.block.p).p_max, inputs.back()->t_end(), "record " + label_of(*r));
         views.push_back(inputs.back().get());
     }
     std::vector<std::string> labels;
@@ -403,11 +403,12 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         py::gil_scoped_release unlocked;
         a = studies::assess_block(views, motions, studies::BlockShape{alpha, given.block.p, given.label}, o);
     }
-    auto first = [](const studies::IdaPoint& at, double scale) {
+    auto first = [](const studies::IdaPoint& at, double scale, double to) {
         py::dict d = result();
         d["found"] = at.collapsed;
         d["q"] = at.q;
         d["scale"] = scale;
+        d["interval_to"] = at.collapsed ? py::object(py::float_(to)) : py::object(py::none());
         return d;
     };
     py::list rows;
@@ -427,8 +428,8 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         d["overturns"] = r.overturns;
         d["fell_during_input"] = r.fell_during_input;
         d["peak_theta_over_alpha"] = r.peak_theta_over_alpha;
-        d["first_overturning"] = first(r.ida.first_overturning, r.scale_first_overturning);
-        d["first_robust_collapse"] = first(r.ida.first_robust_collapse, r.scale_first_robust);
+        d["first_overturning"] = first(r.ida.first_overturning, r.scale_first_overturning, r.first_overturning_to);
+        d["first_robust_collapse"] = first(r.ida.first_robust_collapse, r.scale_first_robust, r.first_robust_to);
         d["change_below"] = nearest_side(r.mark.below, r.mark.height_below);
         d["change_above"] = nearest_side(r.mark.above, r.mark.height_above);
         d["in_spectrum_set"] = r.mark.in_set;

@@ -92,6 +92,10 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     if (m.refine) o.method = studies::SpectrumOptions::Method::refine;
     o.width = m.width;
     o.robust_width = m.robust_width;
+    for (const studies::BlockShape& b : marks) {
+        const std::string why = studies::why_not_markable(b, o);
+        if (!why.empty()) refuse("mark " + b.built + ": " + why + " (p_min, p_max)");
+    }
     restitution_into(restitution, o.model);
     const int threads = jobs_argument(jobs);
     const RecordPtr r = with_floor(record_argument(record, "record"), floor);

@@ -218,6 +218,8 @@ def test_study_arguments_are_checked():
         rq.spectrum(r, alpha=[0.1, 0.9])
     with pytest.raises(ValueError, match="^p_max: must be above p_min"):
         rq.spectrum(r, alpha=0.1, p_min=5, p_max=2)
+    with pytest.raises(ValueError, match=r"^mark 0.6x400: its p, 0.191801 rad/s \(H 400 m\), lies outside the spectrum's p range \[0.3, 30\] rad/s \(p_min, p_max\)$"):
+        rq.spectrum(r, mark="0.6x400")
     with pytest.raises(ValueError, match="^bootstrap needs seed"):
         rq.fragility([r], alpha=0.1, p=2, bootstrap=10)
     with pytest.raises(ValueError, match="^seed goes with bootstrap"):

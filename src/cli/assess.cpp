@@ -43,10 +43,15 @@ std::string percent(double v) {
     return text;
 }
 
-std::string scale_text(const studies::IdaPoint& at, double scale, double q_record) {
+// With the interval that starts there: a first overturning on an island
+// 1e-6 wide in q, printed to four digits, did not overturn in simulate --q.
+std::string scale_text(const studies::IdaPoint& at, double scale, double q_record, double to) {
     if (!at.collapsed)
         return "no scale up to " + four(at.q / q_record) + " times the record (q = " + four(at.q) + ", the search's end)";
-    return four(scale) + " times the record (q = " + four(at.q) + ")";
+    char text[200];
+    std::snprintf(text, sizeof text, "%s times the record (q = %.10g, the start of an overturning interval to q = %.10g, "
+                  "%.2g wide in ln q)", four(scale).c_str(), at.q, to, std::log(to / at.q));
+    return text;
 }
 
 void print_text(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
@@ -69,15 +74,16 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
                         r.overturns ? "OVERTURNS (in the free rocking after it)" : "does not overturn",
                         four(r.peak_theta_over_alpha).c_str());
         std::printf("  the record scaled: the block first overturns at %s; first robustly collapses at %s\n",
-                    scale_text(r.ida.first_overturning, r.scale_first_overturning, r.q_record).c_str(),
-                    scale_text(r.ida.first_robust_collapse, r.scale_first_robust, r.q_record).c_str());
+                    scale_text(r.ida.first_overturning, r.scale_first_overturning, r.q_record, r.first_overturning_to).c_str(),
+                    scale_text(r.ida.first_robust_collapse, r.scale_first_robust, r.q_record, r.first_robust_to).c_str());
         // Said where it bears on the numbers above: the record's own q or its first overturning beyond it.
         const double bound = r.ida.unguaranteed_from;
         if (std::isfinite(bound) && (r.q_record >= bound || r.ida.first_overturning.q >= bound))
             std::printf("  the scaled search finds every island wider than w only below q = %s ((pi/2 - alpha)/alpha: "
                         "above it a run can overturn with no flight's margin above 0), so above it islands may be "
                         "missed\n", four(r.ida.unguaranteed_from).c_str());
-        std::printf("  blocks of this alpha: %s\n", studies::describe_mark(r.mark).c_str());
+        std::printf("  blocks of this alpha:\n");
+        for (const std::string& line : studies::describe_mark_lines(r.mark)) std::printf("    %s\n", line.c_str());
         if (r.has_probability)
             std::printf("  fragility over the %zu records: P(overturn) at this record's q = %s\n", files.size(),
                         four(r.probability).c_str());
@@ -91,9 +97,9 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
     }
 }
 
-std::string first_json(const studies::IdaPoint& at, double scale) {
+std::string first_json(const studies::IdaPoint& at, double scale, double to) {
     return "{\"found\": " + std::string(at.collapsed ? "true" : "false") + ", \"q\": " + json_number(at.q) +
-           ", \"scale\": " + json_number(scale) + "}";
+           ", \"scale\": " + json_number(scale) + ", \"interval_to\": " + (at.collapsed ? json_number(to) : "null") + "}";
 }
 
 void print_json(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
@@ -113,8 +119,8 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
            << ", \"overturns\": " << (r.overturns ? "true" : "false")
            << ", \"fell_during_input\": " << (r.fell_during_input ? "true" : "false")
            << ", \"peak_theta_over_alpha\": " << json_number(r.peak_theta_over_alpha)
-           << ", \"first_overturning\": " << first_json(r.ida.first_overturning, r.scale_first_overturning)
-           << ", \"first_robust_collapse\": " << first_json(r.ida.first_robust_collapse, r.scale_first_robust)
+           << ", \"first_overturning\": " << first_json(r.ida.first_overturning, r.scale_first_overturning, r.first_overturning_to)
+           << ", \"first_robust_collapse\": " << first_json(r.ida.first_robust_collapse, r.scale_first_robust, r.first_robust_to)
            << ", \"change_below\": " << nearest_json(r.mark.below, r.mark.height_below)
            << ", \"change_above\": " << nearest_json(r.mark.above, r.mark.height_above)
            << ", \"in_spectrum_set\": " << (r.mark.in_set ? "true" : "false")
@@ -172,7 +178,7 @@ int cmd_assess(int argc, char** argv) {
             throw UsageError(std::string(a.values.count("--height") ? "--height" : a.values.count("--half-height") ? "--half-height" : "--p") +
                              ": " + refused.why);
         if (refused.blame == studies::Refusal::Blame::record) throw std::runtime_error(path + ": " + refused.why);
-        refuse_unresolvable_run(std::max(o.p_max, given.block.p), inputs.back()->t_end(), a, {"--dt"}, path);
+        refuse_unresolvable_run(o.spectrum_options(given.block.p).p_max, inputs.back()->t_end(), a, {"--dt"}, path);
         views.push_back(inputs.back().get());
     }
     // As fragility: a record given twice (the same samples, whatever the path) would count twice in the fit.
@@ -186,7 +192,7 @@ int cmd_assess(int argc, char** argv) {
     for (const records::Record& r : records) names.push_back(r.name);
     if (a.values.count("--png")) {
         const std::vector<jobs::SpectrumStudy> spectra = {jobs::SpectrumStudy{s.records[0].spectrum, records::CollapseResult{}}};
-        write_spectrum_png(a.values.at("--png"), records[0], o.spectrum_options(), spectra, {s.records[0].mark});
+        write_spectrum_png(a.values.at("--png"), records[0], o.spectrum_options(given.block.p), spectra, {s.records[0].mark});
     }
     if (a.json) print_json(files, names, given, s, o);
     else print_text(files, names, given, s, o);

@@ -191,7 +191,11 @@ void print_text(const std::string& path, const records::Record& r, const Spectru
                     table1_remark(s).c_str());
         std::printf("  %ld simulations, %ld by the second solver\n", sp.simulations, sp.check_simulations);
     }
-    for (const studies::SpectrumMark& m : marks) std::printf("marked: %s\n", studies::describe_mark(m).c_str());
+    for (const studies::SpectrumMark& m : marks) {
+        const std::vector<std::string> lines = studies::describe_mark_lines(m);
+        std::printf("marked: %s\n", lines[0].c_str());
+        for (std::size_t k = 1; k < lines.size(); ++k) std::printf("  %s\n", lines[k].c_str());
+    }
 }
 
 std::string boundary_json(const Interval& in, bool lower) {
@@ -354,6 +358,10 @@ Command command_from(int argc, char** argv, bool mpi) {
         if (c.alphas.size() > 20) throw UsageError("--alpha and --mark: at most 20 alphas in all");
     }
     c.grid = grid_from(a);
+    for (const studies::BlockShape& b : c.marks) {
+        const std::string why = studies::why_not_markable(b, c.grid);
+        if (!why.empty()) throw UsageError("--mark " + b.built + ": " + why + " (--p-min, --p-max)");
+    }
     check_outputs(a, {"--output", "--png", "--rows"}, {c.path});
     require_gnuplot(a);
     refuse_engine_files_over(a, "--rows", {"--output", "--png"}, {c.path});

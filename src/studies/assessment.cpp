@@ -17,7 +17,7 @@ std::string AssessOptions::describe() const {
     char range[200];
     std::snprintf(range, sizeof range, "q in [1, %g] (or to twice the record's q, at most 1e4)", q_max);
     char p_range[200];
-    std::snprintf(p_range, sizeof p_range, "p in [%g, %g] rad/s", p_min, p_max);
+    std::snprintf(p_range, sizeof p_range, "p in [%g, %g] rad/s (or wider, to hold the block's p)", p_min, p_max);
     char w[40];
     std::snprintf(w, sizeof w, "%g", width);
     return ida.describe_model() + "; the scale factors from the IDA over " + range +
@@ -25,11 +25,13 @@ std::string AssessOptions::describe() const {
            ", both by the refine search at w = " + w + " (islands narrower than w may be missed)";
 }
 
-SpectrumOptions AssessOptions::spectrum_options() const {
+SpectrumOptions AssessOptions::spectrum_options(double block_p) const {
     SpectrumOptions sp;
     sp.model = model;
-    sp.p_min = p_min;
-    sp.p_max = p_max;
+    // A block outside [0.3, 30] rad/s (H above 160 m or below 2 cm at small
+    // alpha) read the range's end as its nearest change of outcome.
+    sp.p_min = std::max(0.01, std::min(p_min, block_p / 1.5));
+    sp.p_max = std::min(1000.0, std::max(p_max, block_p * 1.5));
     sp.method = SpectrumOptions::Method::refine;
     sp.width = width;
     return sp;
@@ -82,8 +84,12 @@ RecordAssessment assess_record(const dynamics::SampledInput& input, const record
     a.ida = incremental_dynamic_analysis(input, block.alpha, block.p, ida);
     a.scale_first_overturning = a.ida.first_overturning.q / a.q_record;
     a.scale_first_robust = a.ida.first_robust_collapse.q / a.q_record;
+    for (const IdaInterval& in : a.ida.intervals) {
+        if (a.ida.first_overturning.collapsed && in.from == a.ida.first_overturning.q) a.first_overturning_to = in.to;
+        if (a.ida.first_robust_collapse.collapsed && in.from == a.ida.first_robust_collapse.q) a.first_robust_to = in.to;
+    }
 
-    const SpectrumOptions sp = o.spectrum_options();
+    const SpectrumOptions sp = o.spectrum_options(block.p);
     a.spectrum = rocking_spectrum(input, block.alpha, sp);
     a.mark = mark_block(input, a.spectrum, block, sp);
     return a;

@@ -35,8 +35,10 @@ struct AssessOptions {
     double q_max = 20;                 // the IDA's range, from q = 1, or to twice the record's q where higher (at most 1e4)
     double p_min = 0.3, p_max = 30;    // the spectrum's range, rad/s
     std::string describe() const;
-    // The spectrum's: the model, [p_min, p_max] and the refine search at width.
-    SpectrumOptions spectrum_options() const;
+    // The spectrum's: the model, [p_min, p_max] widened to hold the block's p
+    // with a factor 1.5 to spare (within [0.01, 1000] rad/s), and the refine
+    // search at width.
+    SpectrumOptions spectrum_options(double block_p) const;
 };
 
 struct RecordAssessment {
@@ -51,6 +53,10 @@ struct RecordAssessment {
     // first robust collapse, found false (censored at q_max) without one.
     Ida ida;
     double scale_first_overturning = 0, scale_first_robust = 0;
+    // The overturning intervals (in q) that start at each: the first
+    // overturning is often an island 1e-6 wide, which a q rounded to four
+    // digits misses.  {0, 0} where not found.
+    double first_overturning_to = 0, first_robust_to = 0;
     // The block on the record's spectrum at its alpha, and that spectrum (its options: spectrum_options).
     SpectrumMark mark;
     Spectrum spectrum;

@@ -112,7 +112,7 @@ struct Ida {
     double unguaranteed_from = std::numeric_limits<double>::infinity();
 };
 
-// Throws std::invalid_argument for alpha not in (0, 1), p not finite and > 0,
+// Throws std::invalid_argument for alpha not in (0, pi/4), p not finite and > 0,
 // an input that never moves (peak 0), points < 2, q_min not > 0, q_max not
 // > q_min, rel_tol not in [1e-15, 0.1], width not in (0, 0.1],
 // robust_width not > 0, and whatever simulate() throws.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include "dynamics/model.hpp"
 #include "records/collapse.hpp"
@@ -14,11 +15,37 @@ double height_at_p(double alpha, double p) {
     return 2 * R * std::cos(alpha);
 }
 
+std::string why_not_markable(const BlockShape& block, const SpectrumOptions& o) {
+    if (block.p >= o.p_min && block.p <= o.p_max) return "";
+    char text[300];
+    std::snprintf(text, sizeof text, "its p, %.6g rad/s (H %.4g m), lies outside the spectrum's p range [%g, %g] rad/s",
+                  block.p, height_at_p(block.alpha, block.p), o.p_min, o.p_max);
+    return text;
+}
+
+namespace {
+
+std::string resolution_of(const SpectrumOptions& o) {
+    char text[300];
+    if (o.method == SpectrumOptions::Method::refine)
+        std::snprintf(text, sizeof text, "the set to w = %g in ln p: islands and gaps narrower than w may be missed", o.width);
+    else
+        std::snprintf(text, sizeof text, "the set read on a grid (steps x%.5g): it may hold survivors and miss islands "
+                      "between its points (--method refine finds every one wider than w)",
+                      o.offset_grid ? std::sqrt(o.step()) : o.step());
+    return text;
+}
+
+}  // namespace
+
 SpectrumMark mark_block(const dynamics::GroundInput& input, const Spectrum& s, const BlockShape& block,
                         const SpectrumOptions& o) {
     if (s.alpha != block.alpha) throw std::invalid_argument("mark_block: the spectrum is of another alpha");
+    const std::string why = why_not_markable(block, o);
+    if (!why.empty()) throw std::invalid_argument("mark_block: " + why);
     SpectrumMark m;
     m.block = block;
+    m.resolution = resolution_of(o);
     m.overturns = records::collapses_at(input, block.alpha, block.p, o.model);
     for (std::size_t k = 0; k < s.intervals.size(); ++k) {
         const Interval& in = s.intervals[k];
@@ -41,42 +68,52 @@ SpectrumMark mark_block(const dynamics::GroundInput& input, const Spectrum& s, c
     return m;
 }
 
-std::string describe_mark(const SpectrumMark& m) {
+std::vector<std::string> describe_mark_lines(const SpectrumMark& m) {
     const std::string name = m.block.built.empty() ? "the block" : "block " + m.block.built + " m";
+    const double alpha = m.block.alpha;
     char text[600];
-    std::snprintf(text, sizeof text, "%s (alpha %.6g, p %.6g rad/s, H %.4g m): %s at its own p (a run)", name.c_str(),
-                  m.block.alpha, m.block.p, height_at_p(m.block.alpha, m.block.p),
-                  m.overturns ? "OVERTURNS" : "does not overturn");
-    std::string out = text;
-    auto side = [&](const SpectrumFirst& f, double h, const char* which, const char* what, const char* none) {
-        if (!f.found) return std::string("; ") + none;
-        std::snprintf(text, sizeof text, "; %s p %s it %.6g rad/s (%+.3g %%: H = %.4g m)", what, which, f.p,
-                      100 * (f.p / m.block.p - 1), h);
+    std::vector<std::string> out;
+    std::snprintf(text, sizeof text, "%s (alpha %.6g, p %.6g rad/s, H %.4g m): %s (a run at its p)%s", name.c_str(),
+                  alpha, m.block.p, height_at_p(alpha, m.block.p), m.overturns ? "OVERTURNS" : "does not overturn",
+                  !m.in_set && m.overturns ? ", on an island the spectrum's method did not resolve" : "");
+    out.push_back(text);
+    // H and p of a side's change, with its distance from the block in p.
+    auto at = [&](const SpectrumFirst& f) {
+        std::snprintf(text, sizeof text, "H %.4g m (p %.6g rad/s, %+.3g %%)", height_at_p(alpha, f.p), f.p,
+                      100 * (f.p / m.block.p - 1));
         return std::string(text);
     };
     if (m.in_set) {
-        out += "; inside an overturning interval of the spectrum, the blocks between its ends overturn too: "
-               "the nearest surviving blocks lie beyond them";
-        out += side(m.below, m.height_below, "below", "its interval ends, for taller blocks, at",
-                    "for taller blocks its interval reaches the spectrum's lowest p");
+        std::string line = "inside an overturning interval, whose blocks all overturn: from ";
+        line += m.below.found ? at(m.below) : std::string("the spectrum's lowest p");
+        line += " to ";
+        line += m.above.found ? at(m.above) : std::string("the spectrum's highest p");
+        out.push_back(line);
         auto band = [&](const SpectrumFirst& edge, const SpectrumFirst& next, const char* which) {
-            if (!edge.found) return std::string();
-            if (!next.found) return std::string("; the ") + which + " blocks survive on the rest of the spectrum's range";
-            std::snprintf(text, sizeof text, "; the %s survivors reach only to p %.6g rad/s (H %.4g m: a band %.3g in ln p)",
-                          which, next.p, height_at_p(m.block.alpha, next.p), std::fabs(std::log(next.p / edge.p)));
-            return std::string(text);
+            if (!edge.found) return;
+            if (!next.found) {
+                out.push_back(std::string(which) + " blocks survive from there to the end of the spectrum's range");
+                return;
+            }
+            std::snprintf(text, sizeof text, "%s blocks survive only to H %.4g m (p %.6g rad/s: a band %.3g in ln p)",
+                          which, height_at_p(alpha, next.p), next.p, std::fabs(std::log(next.p / edge.p)));
+            out.push_back(text);
         };
-        out += band(m.below, m.survivors_below, "taller");
-        out += side(m.above, m.height_above, "above", "its interval ends, for shorter blocks, at",
-                    "for shorter blocks its interval reaches the spectrum's highest p");
-        out += band(m.above, m.survivors_above, "shorter");
+        band(m.below, m.survivors_below, "taller");
+        band(m.above, m.survivors_above, "shorter");
     } else {
-        if (m.overturns) out += ", on an island the spectrum's method did not resolve";
-        out += side(m.below, m.height_below, "below", "nearest overturning",
-                    "no overturning p below it on the spectrum's range");
-        out += side(m.above, m.height_above, "above", "nearest overturning",
-                    "no overturning p above it on the spectrum's range");
+        out.push_back("the nearest taller block that overturns: " +
+                      (m.below.found ? at(m.below) : std::string("none on the spectrum's range")));
+        out.push_back("the nearest shorter block that overturns: " +
+                      (m.above.found ? at(m.above) : std::string("none on the spectrum's range")));
     }
+    if (!m.resolution.empty()) out.push_back(m.resolution);
+    return out;
+}
+
+std::string describe_mark(const SpectrumMark& m) {
+    std::string out;
+    for (const std::string& line : describe_mark_lines(m)) out += (out.empty() ? "" : "; ") + line;
     return out;
 }
 

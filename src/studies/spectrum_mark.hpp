@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "dynamics/ground_input.hpp"
 #include "studies/ida.hpp"
@@ -34,16 +35,29 @@ struct SpectrumMark {
     // narrower than the search's width may be one a finer search splits.
     SpectrumFirst survivors_below, survivors_above;
     double height_survivors_below = 0, height_survivors_above = 0;  // m, at their p; 0 where not found
+    // How far the set's reading holds (the spectrum's method): a grid's
+    // intervals join its sampled points and may hold survivors and miss
+    // islands between them; refine's hold to its width w.
+    std::string resolution;
 };
+
+// Why the block cannot be marked on a spectrum of these options ("" where
+// it can): its p outside [p_min, p_max], where the set says nothing of it.
+std::string why_not_markable(const BlockShape& block, const SpectrumOptions& o);
 
 // H = 2 R cos(alpha), R = 3 g / (4 p^2): the height of the block of slenderness alpha whose pulsation is p (eqs. 2, 4).
 double height_at_p(double alpha, double p);
 
-// The block against the spectrum of its alpha (s.alpha must be block.alpha).
+// The block against the spectrum of its alpha (s.alpha must be block.alpha;
+// throws std::invalid_argument where why_not_markable says why not).
 SpectrumMark mark_block(const dynamics::GroundInput& input, const Spectrum& s, const BlockShape& block,
                         const SpectrumOptions& o);
 
-// One line: "block 0.6x4 (p 1.90737 rad/s): overturns (a run at its p); the set holds it ..."
+// The mark in lines: the block and its outcome; its interval's ends, or the
+// nearest overturning block on each side, as heights; the surviving bands
+// beyond an interval's ends; the set's resolution.  describe_mark joins them
+// with "; " (JSON, CSV notes).
+std::vector<std::string> describe_mark_lines(const SpectrumMark& m);
 std::string describe_mark(const SpectrumMark& m);
 
 }  // namespace rocking::studies
