@@ -130,15 +130,17 @@ check "assess says where its guarantee stops" "finds every island wider than w o
 check "floor named in the input" "floor T1=0.5 s zeta=0.05 G=1.5" "$rocking" simulate --record "$a" --floor 0.5,1.5 --thickness 0.25 --height 2
 check "floor's grammar" "--floor: floor model '0.5': takes T1,G[,zeta]" "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
 status "floor's grammar" 2 "$rocking" assess "$a" --floor 0.5 --thickness 0.25 --height 2
-# --png (issue 40: the parapet's plot is one option): one record's spectrum with the block marked.
+# --png (issue 40: the parapet's plot is one option): the check on one record, read by
+# tests/plot_check.py against the same run's JSON and simulate: the runs of the record
+# scaled, the lines of the check's and the model's q, the spectrum with the block marked.
 if command -v gnuplot >/dev/null; then
-    "$rocking" assess "$a" --thickness 0.6 --height 4 --png "$tmp/assess.png" >/dev/null
-    if $py -c "import sys; d = open(sys.argv[1], 'rb').read(); sys.exit(0 if d[:8] == b'\x89PNG\r\n\x1a\n' and d[12:16] == b'IHDR' else 1)" "$tmp/assess.png"
-    then echo "ok: assess --png draws a PNG"; else echo "FAIL: assess --png"; fail=1; fi
-    check "assess --png marks the block" "0.6x4: safe" env ROCKING_PLOT_SCRIPT="$tmp/assess.gp" sh -c "\"$rocking\" assess \"$a\" --thickness 0.6 --height 4 --png \"$tmp/a2.png\" >/dev/null && cat \"$tmp/assess.gp\""
+    ROCKING_PLOT_SCRIPT="$tmp/assess.gp" "$rocking" assess "$a" --thickness 0.6 --height 4 --png "$tmp/assess.png" --json \
+        >"$tmp/assess_png.json" || { echo "FAIL: assess --png"; fail=1; }
+    $py "$(dirname "$0")/plot_check.py" assess "$tmp/assess.gp" "$tmp/assess.png" "$tmp/assess_png.json" "$rocking" "$a" || fail=1
+    check "assess --png marks the block" "0.6x4: safe" cat "$tmp/assess.gp"
 fi
 if command -v gnuplot >/dev/null; then
     check "fragility's plot names the floor" "floor’s motion, first-mode" env ROCKING_PLOT_SCRIPT="$tmp/ff.gp" sh -c "\"$rocking\" fragility \"$a\" \"$b\" --block 0.6x4 --floor 0.5,1.5 --points 20 --png \"$tmp/ff.png\" >/dev/null && cat \"$tmp/ff.gp\""
 fi
-check "assess --png with two records" "--png draws one record's spectrum" "$rocking" assess "$a" "$b" --thickness 0.6 --height 4 --png "$tmp/x.png"
+check "assess --png with two records" "--png draws the check on one record" "$rocking" assess "$a" "$b" --thickness 0.6 --height 4 --png "$tmp/x.png"
 exit $fail

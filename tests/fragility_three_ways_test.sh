@@ -31,7 +31,7 @@ check "the text: the first overturning's fit" "fit on the first overturning (con
 check "the text: the robust collapse's fit" "fit on the first robust collapse: lognormal median q = " cat "$tmp/text"
 check "the text: the stripe fit" "multiple-stripe fit: lognormal median q = " cat "$tmp/text"
 check "the text: the stripe fit's bootstrap" "(19 stripes x 3 records); 90 % bootstrap (20 resamples, seed 5)" cat "$tmp/text"
-check "the text: the stripes" "stripes (q:mean overturned share, where above 0): " cat "$tmp/text"
+check "the text: the stripes in brief" "stripes: 19 (mean overturned share above 0 from q = " cat "$tmp/text"
 check "the note: the three capacities" "three lognormal fits, each named by its capacity" cat "$tmp/text"
 check "the CSV: the robust fit" "first robust collapse fit at alpha 0.1, p 3" cat "$tmp/out.csv"
 check "the CSV: the stripe fit" "stripe fit at alpha 0.1, p 3" cat "$tmp/out.csv"

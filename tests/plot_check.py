@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The PNGs of rocking spectrum, fragility and eq27 (issue 40) against what
+"""The PNGs of rocking spectrum, fragility, eq27 and assess (issue 40) against what
 they must draw, from the gnuplot script the command kept (ROCKING_PLOT_SCRIPT)
 and the same run's --json: every number recomputed here, with the standard
 library only.
@@ -7,6 +7,7 @@ library only.
     plot_check.py spectrum SCRIPT PNG JSON
     plot_check.py fragility SCRIPT PNG JSON [FITS_CSV]
     plot_check.py eq27 SCRIPT PNG JSON INFO_JSONL ROCKING
+    plot_check.py assess SCRIPT PNG JSON ROCKING RECORD
 
 Each PNG: its signature, its IHDR's width and height (the size its layout
 gives for the panels it has), and its IEND last.  Exit 1 with the failures
@@ -255,10 +256,61 @@ def check_eq27(script_path, png, json_path, info_path, rocking):
     want("plot x with lines" in script, "eq27: no 1:1 line")
 
 
+# ---- rocking assess --png ----
+
+def check_assess(script_path, png, json_path, rocking, record):
+    script = open(script_path).read()
+    d = json.load(open(json_path))
+    r = d["records"][0]
+    size = png_size(png)
+    want(size == (1000, 36 + 2 * 350 + 110), "assess PNG size %r, wanted 1000 x 846" % (size,))
+    panels = sections(script)
+    if not want(len(panels) == 2, "assess: %d plots, wanted the response and the spectrum" % len(panels)):
+        return
+    upper = "\n".join(panels[0])
+    # The runs: 300 q log-spaced from 1 to the IDA's end (20, or twice the record's q).
+    rows = datablocks(script).get("response", [])
+    q_hi = min(1e4, max(20.0, 2 * r["q_record"]))
+    want(len(rows) == 300 and rows[0][0] == 1.0 and rows[-1][0] == q_hi,
+         "assess: the runs are not 300 q from 1 to %r: %d rows from %r to %r" % (q_hi, len(rows), rows[0][0], rows[-1][0]))
+    for k in range(1, len(rows)):
+        want(close(rows[k][0] / rows[k - 1][0], (q_hi / 1.0) ** (1 / 299), 1e-12), "assess: run %d not log-spaced" % k)
+    # Below the first overturning the IDA found, no run overturns (the search against the runs).
+    fo = r["first_overturning"]
+    early = [row for row in rows if row[0] < fo["q"] and row[2] != 0]
+    want(not early, "assess: runs overturn below the IDA's first overturning %r: %r" % (fo["q"], early[:3]))
+    # Five runs again, by simulate at their q: the same peak and outcome.
+    for row in (rows[0], rows[75], rows[150], rows[225], rows[-1]):
+        out = subprocess.run([rocking, "simulate", "--record", record, "--alpha", repr(d["alpha"]), "--p", repr(d["p"]),
+                              "--q", repr(row[0]), "--json"], capture_output=True, check=True).stdout
+        s = json.loads(out)
+        want(bool(row[2]) == s["collapse_overturning"], "assess: the run at q %r: overturns %r, simulate %r" %
+             (row[0], row[2], s["collapse_overturning"]))
+        if not s["overturned_during_input"]:
+            want(close(row[1], s["max_theta_input_over_alpha"], 1e-12), "assess: the run at q %r: peak %r, simulate %r" %
+                 (row[0], row[1], s["max_theta_input_over_alpha"]))
+    # A line at each q of the check and of the model, where on the axis.
+    drawn = [float(x) for x in re.findall(r"^set arrow \d+ from ([-+0-9.eE]+), graph 0 to ", upper, re.M)]
+    for name, q in (("the record", r["q_record"]), ("eq. 27", r["q_eq27"]), ("first overturning", fo["q"]),
+                    ("first robust collapse", r["first_robust_collapse"]["q"])):
+        if 1 <= q <= q_hi:
+            want(q in drawn, "assess: no line at %s's q %r (lines at %r)" % (name, q, drawn))
+    # The top axis: the record's scale factor, q / q_record.
+    m = re.search(r"^set x2range \[([-+0-9.eE]+):([-+0-9.eE]+)\]$", upper, re.M)
+    want(m and close(float(m.group(1)), 1 / r["q_record"], 1e-15) and close(float(m.group(2)), q_hi / r["q_record"], 1e-15),
+         "assess: the top axis is not q / the record's q")
+    verdict = "eq. 27 check %s" % ("PASSES" if r["passes"] else "FAILS")
+    want(re.search(r"^set title '%s \(margin" % verdict, upper, re.M), "assess: the title does not say '%s'" % verdict)
+    # Below, the spectrum with the block marked at its p.
+    lower = "\n".join(panels[1])
+    want(re.search(r"^set arrow \d+ from %s, graph 0 .*#008000" % re.escape(repr(d["p"])), lower, re.M),
+         "assess: the spectrum has no line at the block's p %r" % d["p"])
+
+
 if __name__ == "__main__":
     kind, args = sys.argv[1], sys.argv[2:]
     try:
-        {"spectrum": check_spectrum, "fragility": check_fragility, "eq27": check_eq27}[kind](*args)
+        {"spectrum": check_spectrum, "fragility": check_fragility, "eq27": check_eq27, "assess": check_assess}[kind](*args)
     except FileNotFoundError as e:
         problems.append("%s: not written (the command kept no script, drew no PNG or wrote no JSON)" % e.filename)
     for p in problems:

@@ -19,6 +19,7 @@
 #include "jobs/spectrum_plan.hpp"
 #include "qfactor/superposition.hpp"
 #include "studies/assessment.hpp"
+#include "studies/scaled_response.hpp"
 #include "studies/search_alpha.hpp"
 
 namespace rocking::cli {
@@ -49,22 +50,34 @@ std::string scale_text(const studies::IdaPoint& at, double scale, double q_recor
     if (!at.collapsed)
         return "no scale up to " + four(at.q / q_record) + " times the record (q = " + four(at.q) + ", the search's end)";
     char text[200];
-    std::snprintf(text, sizeof text, "%s times the record (q = %.10g, the start of an overturning interval to q = %.10g, "
-                  "%.2g wide in ln q)", four(scale).c_str(), at.q, to, std::log(to / at.q));
+    std::snprintf(text, sizeof text, "%s times the record (q = %.10g; it overturns up to q = %.10g, "
+                  "%.2g in ln q)", four(scale).c_str(), at.q, to, std::log(to / at.q));
     return text;
 }
 
+// floor: the --floor note ("" for the ground's motion), said where the
+// verdict is, since the record's path names the ground's.
 void print_text(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
-                const studies::Assessment& s, const studies::AssessOptions& o) {
+                const studies::Assessment& s, const studies::AssessOptions& o, const std::string& floor) {
     std::printf("assess: %s\n  model: %s\n", describe_block(given).c_str(), o.describe().c_str());
+    if (!floor.empty()) std::printf("  input: %s\n", floor.c_str());
+    // The answer over several records before each record's evidence.
+    if (files.size() > 1) {
+        if (s.fitted)
+            std::printf("fragility over the %zu records (first overturnings): lognormal median q = %s, beta = %s "
+                        "(from %zu records: fragility --bootstrap gives its uncertainty)\n",
+                        files.size(), four(s.fit.median).c_str(), four(s.fit.beta).c_str(), files.size());
+        else
+            std::printf("fragility over the %zu records: no fit (%s)\n", files.size(), s.no_fit.c_str());
+    }
     for (std::size_t k = 0; k < files.size(); ++k) {
         const studies::RecordAssessment& r = s.records[k];
-        std::printf("%s: eq. 27 check %s (the record's q is %s eq. 27's: ratio %s, margin %s)\n", files[k].c_str(),
-                    r.passes ? "PASSES" : "FAILS", r.passes ? "below" : "at or above", four(r.ratio).c_str(),
-                    percent(r.margin).c_str());
+        std::printf("%s%s: eq. 27 check %s (the %s q is %s eq. 27's: ratio %s, margin %s)\n", files[k].c_str(),
+                    floor.empty() ? "" : " at the floor", r.passes ? "PASSES" : "FAILS", floor.empty() ? "record's" : "floor's",
+                    r.passes ? "below" : "at or above", four(r.ratio).c_str(), percent(r.margin).c_str());
         std::printf("  input: %s\n", names[k].c_str());
-        std::printf("  record: PGA = %s g, to_5 = pi PGV/PGA = %s s; x = p to_5 = %s; q from eq. 27 = %s; the "
-                    "record's q = PGA/(alpha g) = %s\n",
+        std::printf("  %s: PGA = %s g, to_5 = pi PGV/PGA = %s s; x = p to_5 = %s; q from eq. 27 = %s; the "
+                    "input's q = PGA/(alpha g) = %s\n", floor.empty() ? "record" : "floor motion",
                     four(r.motion.pga / dynamics::kGravity).c_str(), four(r.motion.to5).c_str(), four(r.x).c_str(),
                     four(r.q_eq27).c_str(), four(r.q_record).c_str());
         if (r.fell_during_input)
@@ -73,7 +86,7 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
             std::printf("  the model on this record: %s (peak |theta|/alpha during the input %s)\n",
                         r.overturns ? "OVERTURNS (in the free rocking after it)" : "does not overturn",
                         four(r.peak_theta_over_alpha).c_str());
-        std::printf("  the record scaled: the block first overturns at %s; first robustly collapses at %s\n",
+        std::printf("  the record scaled: the block first overturns at %s\n    and first robustly collapses at %s\n",
                     scale_text(r.ida.first_overturning, r.scale_first_overturning, r.q_record, r.first_overturning_to).c_str(),
                     scale_text(r.ida.first_robust_collapse, r.scale_first_robust, r.q_record, r.first_robust_to).c_str());
         // Said where it bears on the numbers above: the record's own q or its first overturning beyond it.
@@ -87,13 +100,6 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
         if (r.has_probability)
             std::printf("  fragility over the %zu records: P(overturn) at this record's q = %s\n", files.size(),
                         four(r.probability).c_str());
-    }
-    if (files.size() > 1) {
-        if (s.fitted)
-            std::printf("fragility over the %zu records (first overturnings): lognormal median q = %s, beta = %s\n",
-                        files.size(), four(s.fit.median).c_str(), four(s.fit.beta).c_str());
-        else
-            std::printf("fragility over the %zu records: no fit (%s)\n", files.size(), s.no_fit.c_str());
     }
 }
 
@@ -149,9 +155,9 @@ int cmd_assess(int argc, char** argv) {
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(argc, argv, first, allowed);
     const GivenBlock given = block_option(a);
-    // The plot is the record's spectrum around the block: one record's.
+    // The plot is the check on one record: its response scaled and its spectrum.
     if (a.values.count("--png") && files.size() != 1)
-        throw UsageError("--png draws one record's spectrum with the block marked: give one FILE (or use spectrum --mark)");
+        throw UsageError("--png draws the check on one record: give one FILE (fragility --png draws several)");
     check_outputs(a, {"--png"}, files);
     require_gnuplot(a);
     const double alpha = given.alpha;
@@ -191,11 +197,14 @@ int cmd_assess(int argc, char** argv) {
     std::vector<std::string> names;
     for (const records::Record& r : records) names.push_back(r.name);
     if (a.values.count("--png")) {
-        const std::vector<jobs::SpectrumStudy> spectra = {jobs::SpectrumStudy{s.records[0].spectrum, records::CollapseResult{}}};
-        write_spectrum_png(a.values.at("--png"), records[0], o.spectrum_options(given.block.p), spectra, {s.records[0].mark});
+        // 300 runs across the IDA's range: the curve between the outcomes it found.
+        const studies::RecordAssessment& r = s.records[0];
+        const std::vector<studies::ScaledRun> response =
+            studies::scaled_response(*views[0], alpha, given.block.p, o.model, 1, o.ida_q_max(r.q_record), 300);
+        write_assess_png(a.values.at("--png"), records[0], r, response, o.spectrum_options(given.block.p));
     }
     if (a.json) print_json(files, names, given, s, o);
-    else print_text(files, names, given, s, o);
+    else print_text(files, names, given, s, o, floor_input_note(a));
     return 0;
 }
 

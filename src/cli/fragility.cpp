@@ -74,11 +74,19 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     return o;
 }
 
+// The first few intervals: a record's whole set (a hundred islands on the
+// refine method) is in --json and --output, not on the screen.
 std::string interval_list(const Ida& ida) {
     if (ida.intervals.empty()) return "none";
+    constexpr std::size_t kShown = 4;
     std::string text;
-    for (const IdaInterval& in : ida.intervals)
+    for (std::size_t k = 0; k < ida.intervals.size() && k < kShown; ++k) {
+        const IdaInterval& in = ida.intervals[k];
         text += (text.empty() ? "[" : " [") + g7(in.from) + ", " + g7(in.to) + (in.has_upper ? "]" : "+]");
+    }
+    if (ida.intervals.size() > kShown)
+        text += " and " + std::to_string(ida.intervals.size() - kShown) + " more to q = " + g7(ida.intervals.back().to) +
+                (ida.intervals.back().has_upper ? "" : "+") + " (all in --json, --output)";
     return text;
 }
 
@@ -111,8 +119,8 @@ std::string first_overturning_text(const Ida& ida) {
 
 std::string refine_line(const Ida& ida) {
     std::string text = "first overturning " + first_overturning_text(ida) + "; first robust collapse " +
-                       robust_text(ida.first_robust_collapse) + "; overturned share (q band:share) " + bands_text(ida.bands) +
-                       "; " + std::to_string(ida.samples) + " runs with margins" +
+                       robust_text(ida.first_robust_collapse) + "; overturned share: " + bands_summary(ida.bands, "q") + "; " +
+                       std::to_string(ida.samples) + " runs with margins" +
                        (ida.with_margins ? "" : " (no margins: every interval split to w)");
     if (std::isfinite(ida.unguaranteed_from)) text += "; unguaranteed from q = " + g7(ida.unguaranteed_from);
     return text;
@@ -150,12 +158,19 @@ std::string stripe_fit_text(const BlockFragility& f) {
     return s.bootstrapped ? text + "; " + bootstrap_text(s.interval) : text;
 }
 
-// Each stripe's mean overturned share (z_j / n_j), where above 0.
+// The stripes in brief: each one's mean overturned share (z_j / n_j, a
+// hundred of them) is in --json and --output.
 std::string stripes_text(const BlockFragility& f) {
-    std::string text;
-    for (const studies::Stripe& s : f.stripes.stripes)
-        if (s.overturned > 0) text += (text.empty() ? "" : " ") + g7(s.q) + ":" + g7(s.overturned / s.records);
-    return text.empty() ? "none" : text;
+    const std::vector<studies::Stripe>& stripes = f.stripes.stripes;
+    const studies::Stripe *first = nullptr, *whole = nullptr;
+    for (const studies::Stripe& s : stripes) {
+        if (!first && s.overturned > 0) first = &s;
+        if (!whole && s.overturned >= s.records) whole = &s;
+    }
+    std::string text = std::to_string(stripes.size()) + " (mean overturned share ";
+    text += first ? "above 0 from q = " + g7(first->q) : std::string("0 at every stripe");
+    if (whole) text += ", first 1 at q = " + g7(whole->q);
+    return text + "; each stripe's share in --json and --output)";
 }
 
 std::string empirical_text(const BlockFragility& f) {
@@ -169,6 +184,7 @@ std::string grid_note(const studies::FragilityStudyOptions& o) {
            o.ida.describe_checks();
 }
 
+// Each block's fits first, then its records: the answer before the evidence.
 void print_text(const std::vector<std::string>& files, const studies::FragilityStudyOptions& o,
                 const std::vector<BlockFragility>& study) {
     std::printf("fragility of %zu record(s)\n  model: %s\n  grid: %s\n", files.size(), o.ida.describe_model().c_str(),
@@ -177,20 +193,23 @@ void print_text(const std::vector<std::string>& files, const studies::FragilityS
     for (const BlockFragility& f : study) {
         std::printf("alpha = %g, p = %g rad/s%s:\n", f.block.alpha, f.block.p,
                     f.block.built.empty() ? "" : (" (block " + f.block.built + " m)").c_str());
+        if (!f.three_ways) {
+            std::printf("  fit on the first overturnings the grid saw (islands between its points missed): %s\n",
+                        fit_text(f).c_str());
+        } else {
+            std::printf("  fit on the first overturning (conservative): %s\n", fit_text(f).c_str());
+            std::printf("  fit on the first robust collapse: %s\n", robust_fit_text(f).c_str());
+            std::printf("  multiple-stripe fit: %s\n", stripe_fit_text(f).c_str());
+        }
+        std::printf("  empirical (q:share): %s\n", empirical_text(f).c_str());
+        if (f.three_ways)
+            std::printf("  stripes: %s\n", stripes_text(f).c_str());
+        std::printf("  records:\n");
         for (std::size_t k = 0; k < files.size(); ++k) {
             std::printf("  %s: %s; overturns for q in %s\n", files[k].c_str(), point_text(f.idas[k]).c_str(),
                         interval_list(f.idas[k]).c_str());
             if (refined(o)) std::printf("    %s\n", refine_line(f.idas[k]).c_str());
         }
-        if (!f.three_ways) {
-            std::printf("  %s\n  empirical (q:share): %s\n", fit_text(f).c_str(), empirical_text(f).c_str());
-            continue;
-        }
-        std::printf("  fit on the first overturning (conservative): %s\n  empirical (q:share): %s\n",
-                    fit_text(f).c_str(), empirical_text(f).c_str());
-        std::printf("  fit on the first robust collapse: %s\n", robust_fit_text(f).c_str());
-        std::printf("  multiple-stripe fit: %s\n  stripes (q:mean overturned share, where above 0): %s\n",
-                    stripe_fit_text(f).c_str(), stripes_text(f).c_str());
     }
 }
 

@@ -204,8 +204,11 @@ named in the output. For each record:
   --restitution E   the restitution on angular velocity at impact, in [0, 1], or housner (the default)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
-  --png PNG         one record's rocking spectrum at the block's alpha with the block marked, as
-                    spectrum --mark --png draws it (gnuplot); with one FILE only
+  --png PNG         the check on one record (gnuplot): above, max |theta|/alpha of 300 runs of
+                    the record scaled against q, the IDA's overturning intervals, the record's
+                    q, eq. 27's q and the first overturning and robust collapse, the scale
+                    factor on the top axis; below, the record's spectrum at the block's alpha
+                    with the block marked (as spectrum --mark); with one FILE only
   --json            machine-readable output, one member a record
 A record given twice (the same samples, whatever the path) is refused: it would count twice in the fit.
 )";

@@ -24,14 +24,9 @@ namespace {
 
 using jobs::SpectrumStudy;
 
-// The figure in pixels: a title, the panels, then the key and the caption.
-constexpr int kWidth = 1000, kLeft = 80, kRight = 970;
-constexpr int kHeader = 36;          // the figure's title
-constexpr int kAbove = 80;           // a panel's title, top axis label and tics
-constexpr int kArea = 220;           // a panel's plot area
-constexpr int kBelow = 50;           // its bottom tics and label
-constexpr int kPanel = kAbove + kArea + kBelow;
-constexpr int kFooter = 110;         // the key (two rows) and the caption
+constexpr int kWidth = PanelLayout::width, kLeft = PanelLayout::left, kRight = PanelLayout::right;
+constexpr int kHeader = PanelLayout::header, kAbove = PanelLayout::above, kArea = PanelLayout::area;
+constexpr int kPanel = PanelLayout::panel, kFooter = PanelLayout::footer;
 
 std::string g7(double v) { return significant(v, 7); }
 
@@ -113,21 +108,20 @@ std::string caption_labels(const Figure& fig, const YRange& y) {
     return text;
 }
 
-std::string script(const std::string& output, const records::Record& r, const studies::SpectrumOptions& o,
+}  // namespace
+
+std::string spectrum_panels(const Figure& fig, int first_top, const studies::SpectrumOptions& o,
                    const std::vector<SpectrumStudy>& studies, const std::vector<studies::SpectrumMark>& marks) {
     const int n = static_cast<int>(studies.size());
-    const Figure fig{kWidth, kHeader + n * kPanel + kFooter};
     const YRange y = y_range(studies);
     std::ostringstream gp;
-    gp << fig.terminal(output) << "set termoption noenhanced\n";
     for (int k = 0; k < n; ++k) {
         std::vector<std::vector<double>> rows;
         for (const studies::SpectrumPoint& pt : studies[k].spectrum.points)
             rows.push_back({pt.p, pt.max_theta, pt.overturning ? 1.0 : 0.0});
         gp << datablock("spectrum" + std::to_string(k), rows);
     }
-    gp << "set multiplot title " << gp_string("Rocking spectrum: " + r.name) << "\n"
-       << "set logscale xy\nset logscale x2\nset grid\n"
+    gp << "set logscale xy\nset logscale x2\nset grid\n"
        << "set xrange [" << gp_number(o.p_min) << ":" << gp_number(o.p_max) << "]\n"
        << "set x2range [" << gp_number(o.p_min) << ":" << gp_number(o.p_max) << "]\n"
        << "set yrange [" << gp_number(y.lo) << ":" << gp_number(y.max()) << "]\n"
@@ -139,7 +133,7 @@ std::string script(const std::string& output, const records::Record& r, const st
     for (const SpectrumStudy& s : studies) any_table1 = any_table1 || s.table1.found;
     for (int k = 0; k < n; ++k) {
         const SpectrumStudy& s = studies[k];
-        const int top = kHeader + k * kPanel + kAbove;
+        const int top = first_top + k * kPanel + kAbove;
         gp << fig.area(kLeft, top, kRight, top + kArea) << "unset object\nunset arrow\nunset label\n";
         int objects = 0, arrows = 0, labels = 0;
         for (const studies::Interval& in : s.spectrum.intervals)
@@ -168,7 +162,7 @@ std::string script(const std::string& output, const records::Record& r, const st
            << "\nset title " << gp_text(panel_title(s)) << " offset 0,0.2\n";
         const bool last = k == n - 1;
         if (last)
-            gp << "set key at " << fig.screen(kWidth / 2, kHeader + n * kPanel + 12)
+            gp << "set key at " << fig.screen(kWidth / 2, first_top + n * kPanel + 12)
                << " center top horizontal maxcols 3 samplen 2.5 spacing 1.1 font ',10' opaque box lc rgb 'gray80'\n";
         else gp << "unset key\n";
         if (last) gp << caption_labels(fig, y);
@@ -184,8 +178,16 @@ std::string script(const std::string& output, const records::Record& r, const st
                << (any_mark ? ", NaN with lines lw 4 lc rgb '#008000' title 'marked block: its outcome at its p'" : "");
         gp << "\n";
     }
-    gp << "unset multiplot\n";
     return gp.str();
+}
+
+namespace {
+
+std::string script(const std::string& output, const records::Record& r, const studies::SpectrumOptions& o,
+                   const std::vector<SpectrumStudy>& studies, const std::vector<studies::SpectrumMark>& marks) {
+    const Figure fig{kWidth, kHeader + static_cast<int>(studies.size()) * kPanel + kFooter};
+    return fig.terminal(output) + "set termoption noenhanced\nset multiplot title " +
+           gp_string("Rocking spectrum: " + r.name) + "\n" + spectrum_panels(fig, kHeader, o, studies, marks) + "unset multiplot\n";
 }
 
 }  // namespace

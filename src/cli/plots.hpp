@@ -18,8 +18,10 @@
 #include "cli/options.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "records/record.hpp"
+#include "studies/assessment.hpp"
 #include "studies/eq27_at_scale.hpp"
 #include "studies/ida.hpp"
+#include "studies/scaled_response.hpp"
 #include "studies/spectrum.hpp"
 #include "studies/spectrum_mark.hpp"
 
@@ -92,6 +94,35 @@ std::string caption_and_end(const Figure& fig, const std::vector<std::string>& l
 // block height H of that alpha on the top axis; one y range for all.
 void write_spectrum_png(const std::string& png, const records::Record& r, const studies::SpectrumOptions& o,
                         const std::vector<jobs::SpectrumStudy>& studies, const std::vector<studies::SpectrumMark>& marks);
+
+// The layout, in pixels, of a figure of panels above one another (the
+// spectrum's, assess's): a title, the panels (each its title and top axis,
+// its plot area, its bottom axis), then the key and the caption.
+struct PanelLayout {
+    static constexpr int width = 1000, left = 80, right = 970;
+    static constexpr int header = 36;   // the figure's title
+    static constexpr int above = 80;    // a panel's title, top axis label and tics
+    static constexpr int area = 220;    // a panel's plot area
+    static constexpr int below = 50;    // its bottom tics and label
+    static constexpr int panel = above + area + below;
+    static constexpr int footer = 110;  // the key (two rows) and the caption
+};
+
+// The spectrum panels of write_spectrum_png, the first `first_top` pixels
+// from the figure's top, with their data, axes, key and caption: for a
+// figure that draws other panels above them (assess's).
+std::string spectrum_panels(const Figure& fig, int first_top, const studies::SpectrumOptions& o,
+                            const std::vector<jobs::SpectrumStudy>& studies,
+                            const std::vector<studies::SpectrumMark>& marks);
+
+// rocking assess --png: the check on one record.  Above, the block's
+// response along the record's scale (peak |theta|/alpha of runs at
+// log-spaced q, studies::scaled_response) with the IDA's overturning
+// intervals, the record's own q, eq. 27's q and the first overturning and
+// robust collapse, the scale factor on the top axis; below, the record's
+// spectrum at the block's alpha with the block marked.
+void write_assess_png(const std::string& png, const records::Record& r, const studies::RecordAssessment& a,
+                      const std::vector<studies::ScaledRun>& response, const studies::SpectrumOptions& o);
 
 // rocking fragility --png: per block, the fitted lognormal curves, the
 // empirical points, the censored records and the bootstrap's band.

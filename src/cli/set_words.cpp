@@ -13,6 +13,24 @@ std::string bands_text(const std::vector<studies::Band>& bands) {
     return text.empty() ? "none" : text;
 }
 
+std::string bands_summary(const std::vector<studies::Band>& bands, const char* variable) {
+    int whole = 0, partial = 0;
+    double from = 0, to = 0;
+    for (const studies::Band& b : bands) {
+        if (b.share >= 1) ++whole;
+        else if (b.share > 0) {
+            if (partial++ == 0) from = b.from;
+            to = b.to;
+        }
+    }
+    if (whole + partial == 0) return "none";
+    std::string text = std::to_string(whole) + " of " + std::to_string(bands.size()) + " bands wholly overturned, " +
+                       std::to_string(partial) + " in part";
+    if (partial > 0)
+        text += std::string(" (between ") + variable + " = " + significant(from, 7) + " and " + significant(to, 7) + ")";
+    return text + "; each band's share in --json and --output";
+}
+
 std::string bands_json(const std::vector<studies::Band>& bands) {
     std::string text = "[";
     for (std::size_t i = 0; i < bands.size(); ++i)

@@ -13,6 +13,9 @@ namespace rocking::cli {
 
 // "[from, to]:share ..." for every band whose share is above 0, or "none".
 std::string bands_text(const std::vector<studies::Band>& bands);
+// For the screen: how many bands overturn wholly and in part, and where the
+// partial ones lie; the shares themselves (a hundred bands) go to files.
+std::string bands_summary(const std::vector<studies::Band>& bands, const char* variable);
 
 // [{"from": f, "to": t, "share": s}, ...] for every band, zeros included.
 std::string bands_json(const std::vector<studies::Band>& bands);

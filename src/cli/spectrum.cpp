@@ -150,7 +150,7 @@ std::string refine_lines(const Spectrum& sp) {
     }
     text += "\n  first robust collapse: " +
             (sp.first_robust_collapse.found ? "p = " + g7(sp.first_robust_collapse.p) : std::string("none up to p_max")) +
-            "\n  overturned share (p band:share): " + bands_text(sp.bands) + "\n  " + std::to_string(sp.samples) +
+            "\n  overturned share: " + bands_summary(sp.bands, "p") + "\n  " + std::to_string(sp.samples) +
             " runs with margins, " + std::to_string(sp.accepted) + " intervals accepted by them, " +
             std::to_string(sp.at_width) + " split to w" +
             (sp.with_margins ? "" : " (no margins for this model: every interval split to w)");

@@ -25,6 +25,8 @@ std::string AssessOptions::describe() const {
            ", both by the refine search at w = " + w + " (islands narrower than w may be missed)";
 }
 
+double AssessOptions::ida_q_max(double q_record) const { return std::min(1e4, std::max(q_max, 2 * q_record)); }
+
 SpectrumOptions AssessOptions::spectrum_options(double block_p) const {
     SpectrumOptions sp;
     sp.model = model;
@@ -78,7 +80,7 @@ RecordAssessment assess_record(const dynamics::SampledInput& input, const record
     ida.model = o.model;
     // The scale factors of interest lie about 1: the search reaches twice the
     // record's own q where that is above q_max (a block far weaker than the record).
-    ida.q_max = std::min(1e4, std::max(o.q_max, 2 * a.q_record));
+    ida.q_max = o.ida_q_max(a.q_record);
     ida.method = IdaOptions::Method::refine;
     ida.width = o.width;
     a.ida = incremental_dynamic_analysis(input, block.alpha, block.p, ida);

@@ -35,6 +35,9 @@ struct AssessOptions {
     double q_max = 20;                 // the IDA's range, from q = 1, or to twice the record's q where higher (at most 1e4)
     double p_min = 0.3, p_max = 30;    // the spectrum's range, rad/s
     std::string describe() const;
+    // The IDA's upper q for a record of this q: q_max, or twice the record's
+    // q where higher, at most 1e4.
+    double ida_q_max(double q_record) const;
     // The spectrum's: the model, [p_min, p_max] widened to hold the block's p
     // with a factor 1.5 to spare (within [0.01, 1000] rad/s), and the refine
     // search at width.
