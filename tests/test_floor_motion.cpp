@@ -370,6 +370,12 @@ TEST(FloorMotion, RefusesWhatItCannotModel) {
     EXPECT_EQ(parameter_of({0.5, 1, 1}, 0.01), "zeta: zeta must be in [0, 1): an oscillator below critical damping (got 1)");
     EXPECT_EQ(parameter_of({0.5, 1, -0.01}, 0.01).substr(0, 6), "zeta: ");
     EXPECT_EQ(parameter_of({0.5, NAN, 0.05}, 0.01), "G: G must be finite (got nan)");
+    // Beyond any building's first mode: refused, the bounds themselves taken.
+    EXPECT_EQ(parameter_of({1e308, 1.3, 0.05}, 0.01), "T1: T1 must be at most 20 s: no building's first period is longer (got 1e+308)");
+    EXPECT_EQ(parameter_of({20, 1.3, 0.05}, 0.01), "accepted");
+    EXPECT_EQ(parameter_of({0.5, 1e30, 0.05}, 0.01).substr(0, 20), "G: G must be in [-5,");
+    EXPECT_EQ(parameter_of({0.5, -5.5, 0.05}, 0.01).substr(0, 20), "G: G must be in [-5,");
+    EXPECT_EQ(parameter_of({0.5, 5, 0.05}, 0.01), "accepted");
     // T1 at 2 dt is refused, just above it taken.
     EXPECT_EQ(parameter_of({0.02, 1, 0.05}, 0.01).substr(0, 40), "T1: T1 = 0.02 s is at most 2 dt = 0.02 s");
     EXPECT_EQ(parameter_of({std::nextafter(0.02, 1.0), 1, 0.05}, 0.01), "accepted");

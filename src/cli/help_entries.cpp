@@ -133,8 +133,9 @@ by the record FILE, a_f = a_g + G D'' with D the oscillator's displacement relat
 at the record's samples: the same dt and count, without the building's free vibration after the
 record's end (its amplitude there is printed). Prints the ground's and the floor's PGA.
   --period T1       the building's first-mode period (s), above 2 dt (the record's Nyquist limit)
-  --participation G the floor's participation Gamma phi(z) in that mode (any finite number: 0 at the
-                    base; 3N/(2N + 1) at the roof of N equal storeys with a linear mode shape)
+                    and at most 20 s
+  --participation G the floor's participation Gamma phi(z) in that mode, in [-5, 5]: 0 at the
+                    base; 3N/(2N + 1) at the roof of N equal storeys with a linear mode shape
   --damping Z       the damping ratio, in [0, 1) (default 0.05)
   --unit U, --dt DT the ground record's unit and step, for a plain-text record (see Records)
   --output FILE     writes t (s), acceleration (m/s^2) under '#' lines stating the model and the

@@ -63,6 +63,12 @@ void check_floor_model(const FloorModel& m) {
     if (!(m.T1 > 0) || !std::isfinite(m.T1)) refuse("T1", "> 0 and finite, in s", m.T1);
     if (!(m.zeta >= 0 && m.zeta < 1)) refuse("zeta", "in [0, 1): an oscillator below critical damping", m.zeta);
     if (!std::isfinite(m.G)) refuse("G", "finite", m.G);
+    // The arithmetic holds beyond these, but no building's first mode does:
+    // T1 = 1e308 s gave a floor of (1 - G) times the ground without a word,
+    // G = 1e30 a margin of -2.6e35 %.  The tallest towers' first periods are
+    // below 10 s; Gamma phi at a roof is about 1.2-1.6 (shear to bending).
+    if (!(m.T1 <= 20)) refuse("T1", "at most 20 s: no building's first period is longer", m.T1);
+    if (!(std::fabs(m.G) <= 5)) refuse("G", "in [-5, 5]: a first mode's Gamma phi is about 1.2-1.6 at a roof", m.G);
 }
 
 void check_floor_model(const FloorModel& m, double dt) {

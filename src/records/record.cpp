@@ -389,7 +389,11 @@ Record parse_plain(const std::string& text, const std::string& path, const std::
         while (ss >> token) tokens.push_back(token);
         const std::size_t want = dt > 0 ? 1 : 2;
         if (tokens.size() != want)
-            throw RecordError(path, number, std::to_string(tokens.size()) + " values, expected " + std::to_string(want));
+            throw RecordError(path, number,
+                              std::to_string(tokens.size()) + " values, expected " + std::to_string(want) +
+                                  (dt > 0 ? " (one column, acceleration, as the step dt is given)"
+                                          : " (two columns, time and acceleration, as no step dt is given: give it "
+                                            "for one column)"));
         std::vector<double> values;  // each token parsed once: [time,] acceleration
         for (const auto& tok : tokens) {
             double v;
