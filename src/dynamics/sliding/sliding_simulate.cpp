@@ -1,0 +1,347 @@
+#include "dynamics/sliding/sliding_simulate.hpp"
+
+#include <algorithm>
+#include <array>
+#include <boost/numeric/odeint.hpp>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+
+#include "dynamics/stepper.hpp"
+
+namespace rocking::dynamics::sliding {
+
+namespace odeint = boost::numeric::odeint;
+
+namespace {
+
+constexpr double g = kGravity;
+
+// theta, theta', the base's slip X and its rate (over R), the input's work
+// and the friction's loss (over g R): one absolute tolerance fits them all.
+using State = std::array<double, 6>;
+
+int sign(double v) { return (v > 0) - (v < 0); }
+
+// The run's regime between two events.
+struct Phase {
+    Regime regime = Regime::rest;
+    int sigma = 0, s = 0;
+};
+
+// The ground's inertial acceleration (m/s^2) as a segment sees it: left of
+// t_stop, so that no stage reads the jump at the segment's end.
+struct Ground {
+    const GroundInput* input = nullptr;
+    double t_stop = INFINITY;
+    double at(double t) const {
+        if (t < t_stop) return g * input->accel(t);
+        return g * input->piece_at(std::nextafter(t_stop, -INFINITY)).at(t);
+    }
+};
+
+struct System {
+    const FrictionBlock* block = nullptr;
+    Ground ground;
+    Phase phase;
+    long* counter = nullptr;
+
+    void operator()(const State& x, State& dxdt, double t) const {
+        ++*counter;
+        dxdt.fill(0);
+        const double A = ground.at(t), R = block->R;
+        switch (phase.regime) {
+            case Regime::rest: return;
+            case Regime::slide:
+                dxdt[2] = x[3];
+                dxdt[3] = sliding_accel(*block, phase.s, A) / R;
+                dxdt[4] = A * x[3] / g;
+                dxdt[5] = block->mu * std::fabs(x[3]);
+                return;
+            case Regime::rock: {
+                const Contact c = stick_rocking(*block, x[0], x[1], phase.sigma, A);
+                const Lever d = centroid_from_pivot(*block, x[0], phase.sigma);
+                dxdt[0] = x[1];
+                dxdt[1] = c.theta_dd;
+                dxdt[4] = A * d.dy * x[1] / (g * R);
+                return;
+            }
+            case Regime::slide_rock: {
+                const Contact c = slip_rocking(*block, x[0], x[1], phase.sigma, phase.s, A);
+                const Lever d = centroid_from_pivot(*block, x[0], phase.sigma);
+                dxdt[0] = x[1];
+                dxdt[1] = c.theta_dd;
+                dxdt[2] = x[3];
+                dxdt[3] = c.pivot_dd / R;
+                dxdt[4] = A * (x[3] * R + d.dy * x[1]) / (g * R);
+                dxdt[5] = block->mu * c.n * std::fabs(x[3]) / g;
+                return;
+            }
+        }
+    }
+};
+
+// E per unit mass over g R: kinetic (G's and about G) and potential.
+double energy(const FrictionBlock& block, const Phase& phase, const State& x) {
+    const double R = block.R;
+    if (phase.regime == Regime::rest || phase.regime == Regime::slide)
+        return (0.5 * x[3] * x[3] * R * R + g * block.h()) / (g * R);
+    const Lever d = centroid_from_pivot(block, x[0], phase.sigma);
+    const double xg = x[3] * R + d.dy * x[1], yg = -d.dx * x[1];
+    return (0.5 * (xg * xg + yg * yg) + 0.5 * R * R / 3 * x[1] * x[1] + g * d.dy) / (g * R);
+}
+
+// The events of a regime, each triggered where its value turns negative.
+enum Event { impact, fall, slip_starts, slip_stops, flight, kEvents };
+
+std::array<double, kEvents> events(const FrictionBlock& block, const Phase& phase, const State& x, double A,
+                                   double overturn_angle) {
+    std::array<double, kEvents> e;
+    e.fill(1);
+    switch (phase.regime) {
+        case Regime::rest: break;
+        case Regime::slide: e[slip_stops] = phase.s * x[3]; break;
+        case Regime::rock: {
+            const Contact c = stick_rocking(block, x[0], x[1], phase.sigma, A);
+            e[impact] = phase.sigma * x[0];
+            e[fall] = overturn_angle - phase.sigma * x[0];
+            e[slip_starts] = block.mu * c.n - std::fabs(c.f);
+            e[flight] = c.n;
+            break;
+        }
+        case Regime::slide_rock: {
+            const Contact c = slip_rocking(block, x[0], x[1], phase.sigma, phase.s, A);
+            e[impact] = phase.sigma * x[0];
+            e[fall] = overturn_angle - phase.sigma * x[0];
+            e[slip_stops] = phase.s * x[3];
+            e[flight] = c.n;
+            break;
+        }
+    }
+    return e;
+}
+
+void check_tolerance(const char* name, double v) {
+    if (!(v >= kSmallestTolerance && v < 1))
+        throw std::invalid_argument(std::string("sliding: ") + name + " must be in [2.2e-14, 1) (got " +
+                                    std::to_string(v) + ")");
+}
+
+}  // namespace
+
+std::string SlidingOptions::describe() const {
+    char text[200];
+    std::snprintf(text, sizeof text, "event-driven Dormand-Prince 5(4), rtol %g, atol %g alpha, steps at most %g/p",
+                  rtol, atol_alpha, max_step_p);
+    return text;
+}
+
+bool SlidingResult::collapse(Criterion c, double alpha) const {
+    if (overturned_during_input) return true;
+    switch (c) {
+        case Criterion::final_rotation: return std::fabs(theta_at_tfin) >= alpha;
+        case Criterion::peak_rotation: return max_abs_theta_input >= alpha;
+        case Criterion::overturning: return overturned;
+    }
+    return false;
+}
+
+SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& input, const SlidingOptions& o) {
+    check_block(block);
+    check_tolerance("rtol", o.rtol);
+    check_tolerance("atol", o.atol_alpha);
+    if (!(o.max_step_p > 0 && o.max_step_p <= 1)) throw std::invalid_argument("sliding: max_step_p must be in (0, 1]");
+    const double alpha = block.alpha, p = block.p(), R = block.R, t_fin = input.t_end();
+    SlidingResult out;
+    out.t_fin = t_fin;
+    long counter = 0;
+    System sys{&block, Ground{&input, t_fin}, Phase{}, &counter};
+    auto dense = odeint::make_dense_output(o.atol_alpha * alpha, o.rtol, o.max_step_p / p,
+                                           odeint::runge_kutta_dopri5<State>());
+    State x{};
+    Phase phase;
+    double t = 0;
+    const double e0 = energy(block, phase, x);
+    bool input_over = false;
+    double t_limit = t_fin;  // raised to t_fin + 200/p while the block may still fall
+    const double rest_threshold = std::min(block.mu, block.b() / block.h());
+
+    auto balance = [&](const State& at, const Phase& ph) {
+        const double residual = energy(block, ph, at) - (e0 + at[4] - at[5] - out.impact_loss / (g * R));
+        out.balance_error = std::max(out.balance_error, std::fabs(residual));
+    };
+    auto track = [&](double when, const State& at) {
+        out.max_abs_slip = std::max(out.max_abs_slip, std::fabs(at[2]) * R);
+        if (when <= t_fin) out.max_abs_theta_input = std::max(out.max_abs_theta_input, std::fabs(at[0]));
+    };
+    auto set_phase = [&](const Start& st) {
+        if (st.regime != phase.regime || st.sigma != phase.sigma || st.s != phase.s) ++out.regime_changes;
+        phase = Phase{st.regime, st.sigma, st.s};
+        out.uplifted = out.uplifted || st.regime == Regime::rock || st.regime == Regime::slide_rock;
+        out.slid = out.slid || st.regime == Regime::slide || st.regime == Regime::slide_rock;
+    };
+    auto at_tfin = [&](const State& at) {
+        input_over = true;
+        out.theta_at_tfin = at[0];
+        out.slip_at_tfin = at[2] * R;
+        sys.ground.t_stop = INFINITY;  // the ground at rest from here
+        t_limit = o.free_rocking ? t_fin + kFreeRockingTimesP / p : t_fin;
+    };
+    // After the input, a block that cannot reach the top (its energy below
+    // the barrier, on the near side) is done: friction and impacts only take.
+    auto may_still_fall = [&](const State& at) {
+        if (phase.regime == Regime::rest) return false;
+        if (phase.regime == Regime::slide) return true;  // until it stops
+        return phase.sigma * at[0] > alpha || energy(block, phase, at) >= 1.0;
+    };
+
+    for (long count = 0;; ++count) {
+        if (count > o.max_events) throw std::runtime_error("sliding: more than max_events regime changes");
+        if (!input_over && t >= t_fin) at_tfin(x);
+        if (input_over && (t >= t_limit || !may_still_fall(x))) break;
+        if (phase.regime == Regime::rest) {
+            if (input_over) break;
+            // Where |A| first exceeds g min(mu, tan alpha): the block leaves rest.
+            const double go = uplift_time(input, t, t_fin, rest_threshold, [&](double s) { return input.accel(s); });
+            out.time_in[0] += std::min(go, t_fin) - t;
+            t = std::min(go, t_fin);
+            if (t >= t_fin) continue;
+            set_phase(start_flat(block, g * input.accel(t), 0));
+            continue;
+        }
+        // One segment of the regime, to the input's end or the run's limit.
+        const double t_stop = input_over ? t_limit : t_fin;
+        sys.phase = phase;
+        dense.initialize(x, t, std::min(1e-3 / p, t_stop - t));
+        bool changed = false;
+        while (!changed && t < t_stop) {
+            const double kink = std::min(input.piece_from(t).t1, t_stop);
+            if (dense.current_time() + dense.current_time_step() > kink) dense.initialize(x, t, kink - t);
+            const auto step = dense.do_step(sys);
+            ++out.steps;
+            const double t0 = step.first, t1 = std::min(step.second, t_stop);
+            auto state = [&](double s) {
+                State y;
+                dense.calc_state(s, y);
+                return y;
+            };
+            auto values = [&](double s) { return events(block, phase, state(s), sys.ground.at(s), o.overturn_angle); };
+            // Four looks inside the step: an event that comes and goes between
+            // the step's ends (theta back over 0 within it) is still seen.
+            double lo = t0, found = INFINITY;
+            int which = -1;
+            for (int j = 1; j <= 4 && which < 0; ++j) {
+                const double hi = j == 4 ? t1 : t0 + (t1 - t0) * j / 4;
+                const std::array<double, kEvents> v = values(hi);
+                if (*std::min_element(v.begin(), v.end()) >= 0) {
+                    // The peak of |theta| inside: where theta' turns.
+                    const State ya = state(lo), yb = state(hi);
+                    if (ya[1] * yb[1] < 0 && lo < t_fin) {
+                        double a = lo, b = hi;
+                        for (int it = 0; it < 200 && b - a > 2 * std::numeric_limits<double>::epsilon() * std::fabs(b); ++it) {
+                            const double m = 0.5 * (a + b);
+                            (state(m)[1] * ya[1] > 0 ? a : b) = m;
+                        }
+                        track(std::min(a, t_fin), state(a));
+                    }
+                    track(hi, yb);
+                }
+                for (int k = 0; k < kEvents; ++k) {
+                    if (!(v[k] < 0)) continue;
+                    // Bisect for the first time its value turns negative.
+                    double a = lo, b = hi;
+                    for (int it = 0; it < 200 && b - a > 2 * std::numeric_limits<double>::epsilon() * std::fabs(b); ++it) {
+                        const double m = 0.5 * (a + b);
+                        (values(m)[k] < 0 ? b : a) = m;
+                    }
+                    if (b < found) found = b, which = k;
+                }
+                lo = hi;
+            }
+            if (which < 0) {
+                out.time_in[static_cast<int>(phase.regime)] += t1 - t;
+                t = t1;
+                x = t1 == step.second ? dense.current_state() : state(t1);
+                continue;
+            }
+            // The event: the state there, the time in the regime, the transition.
+            out.time_in[static_cast<int>(phase.regime)] += found - t;
+            t = found;
+            x = state(found);
+            track(t, x);
+            balance(x, phase);
+            changed = true;
+            const double A = sys.ground.at(t);
+            switch (which) {
+                case fall:
+                    // At the fall angle, as simulate() puts it; theta(t_fin) 0 for a block
+                    // that fell during the input, as there.
+                    x[0] = phase.sigma * o.overturn_angle;
+                    track(t, x);
+                    out.overturned = true;
+                    out.overturned_during_input = t <= t_fin;
+                    out.t_overturn = t;
+                    out.final_slip = x[2] * R;
+                    out.input_work = x[4] * g * R;
+                    out.friction_loss = x[5] * g * R;
+                    out.final_energy = energy(block, phase, x) * g * R;
+                    out.rhs_evaluations = counter;
+                    return out;
+                case flight: {
+                    char text[200];
+                    std::snprintf(text, sizeof text,
+                                  "sliding: the block leaves the ground at t = %.9g s (n = 0 at its pivot): free flight "
+                                  "is outside the sliding-rocking model", t);
+                    throw std::runtime_error(text);
+                }
+                case slip_starts: {
+                    const Contact c = stick_rocking(block, x[0], x[1], phase.sigma, A);
+                    set_phase({Regime::slide_rock, phase.sigma, -sign(c.f)});
+                    break;
+                }
+                case slip_stops:
+                    x[3] = 0;
+                    if (phase.regime == Regime::slide) set_phase(start_flat(block, A, 0));
+                    else set_phase(start_on_corner(block, x[0], x[1], phase.sigma, A));
+                    break;
+                case impact: {
+                    const double e_before = energy(block, phase, x);
+                    const Lever d = centroid_from_pivot(block, 0, phase.sigma);
+                    const double xg = x[3] * R + d.dy * x[1], yg = -d.dx * x[1];
+                    const Impact hit = corner_impact(block, phase.sigma, x[1], xg, yg);
+                    ++out.impacts;
+                    out.slipping_impacts += hit.slipped;
+                    x[0] = 0;
+                    if (std::fabs(hit.omega) < o.rest_velocity * alpha * p) {
+                        // Lies flat: what moves on is G's velocity along the ground.
+                        x[1] = 0;
+                        x[3] = (xg + hit.p_t) / R;
+                        phase = Phase{Regime::rest, 0, 0};
+                        const Start st = start_flat(block, A, x[3] * R);
+                        set_phase(st);
+                        if (st.regime == Regime::rest) x[3] = 0;
+                    } else {
+                        x[1] = hit.omega;
+                        x[3] = hit.pivot_v / R;
+                        const int pivot = -phase.sigma;
+                        if (hit.slipped) set_phase({Regime::slide_rock, pivot, sign(hit.pivot_v)});
+                        else set_phase(start_on_corner(block, 0, hit.omega, pivot, A));
+                    }
+                    out.impact_loss += (e_before - energy(block, phase, x)) * g * R;
+                    break;
+                }
+                default: break;
+            }
+        }
+    }
+    out.final_slip = x[2] * R;
+    out.input_work = x[4] * g * R;
+    out.friction_loss = x[5] * g * R;
+    out.final_energy = energy(block, phase, x) * g * R;
+    out.rhs_evaluations = counter;
+    balance(x, phase);
+    return out;
+}
+
+}  // namespace rocking::dynamics::sliding

@@ -1,0 +1,247 @@
+// The sliding-rocking block (issue 41; dynamics/sliding/) against truth
+// that does not come from its code: the regime a block at rest enters under
+// a constant acceleration, by criteria derived here in closed form; the slip
+// of a block that only slides under a rectangular pulse (Newmark's block);
+// Housner's restitution from a stuck impact; the rocking-only full model of
+// dynamics/simulate.hpp as mu -> infinity; the energy balance; the mirror
+// image of the input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "dynamics/ground_input.hpp"
+#include "dynamics/model.hpp"
+#include "dynamics/simulate.hpp"
+#include "dynamics/sliding/friction_block.hpp"
+#include "dynamics/sliding/sliding_simulate.hpp"
+#include "pulse/pulse_train.hpp"
+
+using namespace rocking;
+using namespace rocking::dynamics;
+using namespace rocking::dynamics::sliding;
+
+namespace {
+
+constexpr double g = kGravity;
+
+// The regime from rest under a constant a = A/g > 0, in closed form.  At
+// rest, the stuck block needs a friction a g (so a <= mu) and both corners
+// pressed (the moment of a g at height h against g at arm b: a <= tan alpha).
+// Beyond: with mu < tan(alpha) it slides, and cannot rock while sliding (the
+// corners' normal forces, g (1 -+ mu tan... )/2, stay positive); with mu >=
+// tan(alpha) it turns about its leading corner, stuck while the friction
+// that needs, f/g = (3/4) cos(alpha) (a cos(alpha) - sin(alpha)) - a, lies
+// within mu n/g = mu [1 + (3/4) sin(alpha) (a cos(alpha) - sin(alpha))];
+// slipping as it turns otherwise.
+Regime closed_form_regime(double mu, double a, double alpha) {
+    const double tan_alpha = std::tan(alpha);
+    if (a <= mu && a <= tan_alpha) return Regime::rest;
+    if (mu < tan_alpha) return Regime::slide;
+    const double c = std::cos(alpha), s = std::sin(alpha), turn = 0.75 * (a * c - s);
+    const double f = c * turn - a, n = 1 + s * turn;
+    return std::fabs(f) <= mu * n ? Regime::rock : Regime::slide_rock;
+}
+
+}  // namespace
+
+TEST(Sliding, TheRegimeFromRestIsTheClosedFormsOverAGrid) {
+    int counts[4] = {0, 0, 0, 0};
+    for (double alpha : {0.05, 0.15, 0.3, 0.5, 0.7})
+        for (double mu : {0.05, 0.1, 0.2, 0.3, 0.4, 0.6, 0.8, 1.0, 1.5})
+            for (double a : {0.02, 0.08, 0.12, 0.18, 0.25, 0.35, 0.5, 0.7, 1.0, 1.5, 2.5, 5.0, 10.0}) {
+                const FrictionBlock block{alpha, 1.5, mu};
+                const Regime want = closed_form_regime(mu, a, alpha);
+                for (int d : {1, -1}) {
+                    const Start got = start_flat(block, d * a * g, 0);
+                    EXPECT_EQ(regime_name(got.regime), std::string(regime_name(want)))
+                        << "alpha " << alpha << " mu " << mu << " a " << d * a;
+                    // It turns and slips towards the side the input pushes.
+                    if (got.regime == Regime::rock || got.regime == Regime::slide_rock) {
+                        EXPECT_EQ(got.sigma, d);
+                    }
+                    if (got.regime == Regime::slide || got.regime == Regime::slide_rock) {
+                        EXPECT_EQ(got.s, d);
+                    }
+                }
+                ++counts[static_cast<int>(want)];
+            }
+    // The grid reaches all four.
+    for (int k = 0; k < 4; ++k) EXPECT_GT(counts[k], 5) << regime_name(static_cast<Regime>(k));
+}
+
+TEST(Sliding, StuckRockingIsTheFullEquation) {
+    // theta'' = p^2 [(A/g) cos(sigma alpha - theta) - sin(sigma alpha - theta)] (dynamics/model.hpp).
+    const FrictionBlock block{0.25, 1.2, 10};
+    Model model;
+    model.equation = Equation::full;
+    model.block = Block::from_p(block.p(), block.alpha);
+    for (double theta : {-0.3, -0.05, 0.0, 0.1, 0.4})
+        for (int sigma : {1, -1})
+            for (double a : {-0.7, 0.0, 0.3, 1.1}) {
+                const Contact c = stick_rocking(block, theta, 0.7, sigma, a * g);
+                EXPECT_NEAR(c.theta_dd, model.acceleration(theta, sigma, a), 1e-12 * block.p() * block.p());
+            }
+}
+
+TEST(Sliding, AStuckImpactIsHousnersRestitution) {
+    for (double alpha : {0.05, 0.2, 0.4}) {
+        const FrictionBlock block{alpha, 2.0, 5.0};
+        for (int sigma : {1, -1}) {
+            // Rocking on corner sigma, theta = 0: G moves as the corner is fixed.
+            const double omega = -sigma * 0.8;
+            const Lever d = centroid_from_pivot(block, 0, sigma);
+            const Impact hit = corner_impact(block, sigma, omega, d.dy * omega, -d.dx * omega);
+            EXPECT_FALSE(hit.slipped);
+            EXPECT_NEAR(hit.omega / omega, 1 - 1.5 * std::sin(alpha) * std::sin(alpha), 1e-15);
+            EXPECT_GE(hit.p_n, 0);
+        }
+    }
+}
+
+TEST(Sliding, WithoutFrictionAnImpactKeepsTheHorizontalMomentum) {
+    // mu -> 0: no tangential impulse, so x_G' is unchanged; the normal
+    // impulse stops the new corner's fall: y_G'+ + dx' theta'+ = 0.
+    const FrictionBlock block{0.2, 1.0, 1e-12};
+    const int sigma = 1;
+    const double omega = -0.6;
+    const Lever d = centroid_from_pivot(block, 0, sigma);
+    const double xg = d.dy * omega, yg = -d.dx * omega;
+    const Impact hit = corner_impact(block, sigma, omega, xg, yg);
+    EXPECT_TRUE(hit.slipped);
+    EXPECT_NEAR(hit.p_t, 0, 1e-12);
+    const double dx_new = sigma * block.b();
+    EXPECT_NEAR(yg + hit.p_n + dx_new * hit.omega, 0, 1e-14);
+    // Angular momentum about G changes by the normal impulse's moment alone.
+    EXPECT_NEAR(block.R * block.R / 3 * (hit.omega - omega), dx_new * hit.p_n, 1e-11);  // less mu = 1e-12's p_t moment
+}
+
+TEST(Sliding, ASlippingImpactKeepsCoulombsLawAndTheMomentumBalance) {
+    // alpha 0.3: a stuck impact needs |p_t|/p_n = 1.5 sin(a) cos(a)/(2 - 1.5 sin^2 a)
+    // = 0.2265, so at mu = 0.05 and 0.15 the new corner slips.  What defines the
+    // slipping impact, checked on its result: the impulse changes G's momentum
+    // and its angular momentum about G; the new corner's normal velocity is 0
+    // after; the tangential impulse is mu p_n, against the slip it leaves; no
+    // kinetic energy is gained.
+    for (double mu : {0.05, 0.15})
+        for (int sigma : {1, -1}) {
+            const FrictionBlock block{0.3, 1.3, mu};
+            const double omega = -sigma * 0.9, K = block.R * block.R / 3;
+            const Lever d = centroid_from_pivot(block, 0, sigma);
+            const double xg = d.dy * omega, yg = -d.dx * omega;
+            const Impact hit = corner_impact(block, sigma, omega, xg, yg);
+            EXPECT_TRUE(hit.slipped) << mu;
+            const double dx_new = sigma * block.b(), dy_new = block.h();
+            const double xg_after = xg + hit.p_t, yg_after = yg + hit.p_n;
+            EXPECT_NEAR(K * (hit.omega - omega), dx_new * hit.p_n - dy_new * hit.p_t, 1e-14) << mu;
+            EXPECT_NEAR(yg_after + dx_new * hit.omega, 0, 1e-14) << mu;
+            EXPECT_NEAR(hit.pivot_v, xg_after - dy_new * hit.omega, 1e-14) << mu;
+            EXPECT_GT(hit.p_n, 0) << mu;
+            EXPECT_NEAR(std::fabs(hit.p_t), mu * hit.p_n, 1e-15) << mu;
+            EXPECT_LT(hit.p_t * hit.pivot_v, 0) << mu;
+            const double before = xg * xg + yg * yg + K * omega * omega;
+            const double after = xg_after * xg_after + yg_after * yg_after + K * hit.omega * hit.omega;
+            EXPECT_LT(after, before) << mu;
+        }
+}
+
+TEST(Sliding, ABlockThatOnlySlidesMatchesNewmarksSlip) {
+    // mu = 0.2 < tan(0.3): a 0.5 g pulse of 0.4 s slides the block and cannot
+    // rock it.  Relative to the ground it accelerates at (a - mu) g for T,
+    // then decelerates at mu g until it stops: slip = (a - mu) g T^2/2 +
+    // v_T tau - mu g tau^2/2, v_T = (a - mu) g T, tau = v_T/(mu g).
+    const double a = 0.5, mu = 0.2, T = 0.4;
+    const FrictionBlock block{0.3, 1.0, mu};
+    const PulseInput pulse(PulseTrain({{1.0, 1.0}}), a, T);
+    SlidingOptions o;
+    o.rtol = 1e-12;
+    o.atol_alpha = 1e-12;
+    const SlidingResult r = simulate_sliding(block, pulse, o);
+    const double vT = (a - mu) * g * T, tau = vT / (mu * g);
+    const double slip = 0.5 * (a - mu) * g * T * T + vT * tau - 0.5 * mu * g * tau * tau;
+    EXPECT_FALSE(r.uplifted);
+    EXPECT_TRUE(r.slid);
+    EXPECT_NEAR(r.final_slip, slip, 1e-9 * slip);
+    EXPECT_NEAR(r.slip_at_tfin, 0.5 * (a - mu) * g * T * T, 1e-9 * slip);
+    EXPECT_NEAR(r.time_in[static_cast<int>(Regime::slide)], T + tau, 1e-9);
+    // Energy: the input's work is spent by friction (nothing else moves at the end).
+    EXPECT_NEAR(r.input_work, r.friction_loss, 1e-9 * r.input_work);
+}
+
+TEST(Sliding, AsMuGrowsItIsTheRockingOnlyFullModel) {
+    // Two pulses that rock the block through an impact (0.3 g) or lift it
+    // past its top during the input (0.6 g): the sliding engine at mu = 1e6
+    // against simulate() on the full equation with Housner's restitution
+    // (dopri5 at the same tolerance).  The fall is called at 1 rad in both:
+    // nearer pi/2 the falling block's pivot unloads (n -> 0), slips even at
+    // mu = 1e6 and then flies, which the rocking-only model does not see.
+    const FrictionBlock block{0.15, 1.0, 1e6};
+    for (double pga : {0.3, 0.6})
+        for (bool free_rocking : {false, true}) {
+            const PulseInput pulse(PulseTrain({{1.0, 1.0}, {-1.0, 1.0}}), pga, 0.3);
+            SlidingOptions so;
+            so.rtol = 1e-11;
+            so.atol_alpha = 1e-11;
+            so.overturn_angle = 1.0;
+            so.free_rocking = free_rocking;
+            const SlidingResult s = simulate_sliding(block, pulse, so);
+            Model model;
+            model.equation = Equation::full;
+            model.block = Block::from_p(block.p(), block.alpha);
+            model.restitution = housner_restitution(block.alpha);
+            SimulationOptions ro;
+            ro.solver.kind = SolverKind::dopri5;
+            ro.solver.rtol = 1e-11;
+            ro.solver.atol_alpha = 1e-11;
+            ro.overturn_angle = 1.0;
+            ro.free_rocking = free_rocking;
+            const SimulationResult r = simulate(model, pulse, ro);
+            const std::string at = "pga " + std::to_string(pga) + (free_rocking ? ", free rocking" : "");
+            EXPECT_FALSE(s.slid) << at;
+            EXPECT_TRUE(s.uplifted) << at;
+            EXPECT_EQ(s.overturned, r.overturned) << at;
+            EXPECT_EQ(s.overturned_during_input, r.overturned_during_input) << at;
+            EXPECT_EQ(s.impacts, r.impacts) << at;
+            EXPECT_NEAR(s.max_abs_theta_input, r.max_abs_theta_input, 1e-9 * block.alpha) << at;
+            EXPECT_NEAR(s.theta_at_tfin, r.theta_at_tfin, 1e-9 * block.alpha) << at;
+            if (r.overturned) {
+                EXPECT_NEAR(s.t_overturn, r.t_overturn, 1e-8) << at;
+            }
+        }
+}
+
+TEST(Sliding, TheEnergyBalancesAndTheMirrorImageMirrors) {
+    // A decaying sine of 0.45 g on a block of alpha 0.2: at mu = 0.1 it only
+    // slides; at 0.3 and 1 it rocks through two impacts and slide-rocks as it
+    // falls.  At every event, E - E(0) = W - D_friction - D_impacts to the
+    // integration's tolerance (over g R), and the input negated gives the
+    // same run mirrored.
+    std::vector<double> a;
+    const double dt = 0.01;
+    for (int k = 0; k < 600; ++k) a.push_back(0.45 * std::sin(2 * M_PI * 1.3 * k * dt) * std::exp(-0.3 * k * dt));
+    std::vector<double> minus = a;
+    for (double& v : minus) v = -v;
+    const SampledInput up(a, dt, "decaying sine"), down(minus, dt, "its mirror");
+    for (double mu : {0.1, 0.3, 1.0}) {
+        const FrictionBlock block{0.2, 0.8, mu};
+        SlidingOptions o;
+        o.rtol = 1e-11;
+        o.atol_alpha = 1e-11;
+        const SlidingResult r = simulate_sliding(block, up, o), m = simulate_sliding(block, down, o);
+        EXPECT_TRUE(r.slid) << mu;
+        EXPECT_EQ(r.uplifted, mu > 0.2) << mu;
+        if (mu > 0.2) {
+            EXPECT_EQ(r.impacts, 2) << mu;
+            EXPECT_GT(r.time_in[static_cast<int>(Regime::slide_rock)], 0) << mu;
+            EXPECT_GT(r.impact_loss, 0) << mu;
+        }
+        EXPECT_GT(r.friction_loss, 0) << mu;
+        EXPECT_LT(r.balance_error, 1e-9) << mu;
+        EXPECT_NEAR(m.max_abs_theta_input, r.max_abs_theta_input, 1e-12) << mu;
+        EXPECT_NEAR(m.theta_at_tfin, -r.theta_at_tfin, 1e-12) << mu;
+        EXPECT_NEAR(m.final_slip, -r.final_slip, 1e-12) << mu;
+        EXPECT_EQ(m.impacts, r.impacts) << mu;
+        EXPECT_EQ(m.overturned, r.overturned) << mu;
+    }
+}
