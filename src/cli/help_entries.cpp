@@ -41,7 +41,8 @@ collapse q theta grows like e^(x t/to): the rows stop where it leaves the double
 
 const char* kSimulate = R"(
 rocking simulate INPUT BLOCK [--paper] [--model M] [--solver S] [--rtol R] [--atol A]
-                 [--criterion C] [--restitution E|housner] [--output FILE [--dt DT]] [--json]
+                 [--criterion C] [--restitution E|housner] [--output FILE [--dt DT]]
+                 [--friction MU] [--json]
 )";
 const char* kSimulateDetails = R"(
 One block under a pulse train, a one-sine pulse or a record, with impacts, the free rocking
@@ -77,6 +78,12 @@ The model (default: see The model):
                     paper's) or peak-rotation (|theta| reaches alpha during the input)
   --restitution E   theta' after an impact over theta' before it, in [0, 1], or housner
                     (1 - 1.5 sin^2 alpha, the default)
+  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: the sliding-rocking model
+                    (full equations; rest, slide, rock and slide-rock; impacts without rebound,
+                    the new corner stuck or slipping), its own event-driven Dormand-Prince
+                    solver at --rtol/--atol (default 1e-9); adds the base's slip (m), the time in
+                    each regime and the energy balance; without --model, --solver,
+                    --restitution, --output and --paper (docs/sliding.md)
 Output:
   --output FILE     writes t (s), theta/alpha, theta'/(alpha p) every --dt DT s (default 0.01), at
                     most 10^6 rows: a --dt that could write more over t_fin and the free rocking

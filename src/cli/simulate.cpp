@@ -10,6 +10,7 @@
 
 #include "cli/geometry.hpp"
 #include "cli/options.hpp"
+#include "cli/simulate_friction.hpp"
 #include "dynamics/ground_input.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "harness/table.hpp"
@@ -49,7 +50,7 @@ int cmd_simulate(int argc, char** argv) {
         else ++it;
     std::vector<std::string> allowed = {"--case", "--train", "--pulses", "--x", "--to", "--pga", "--q", "--rd", "--ap",
                                         "--wp", "--model", "--solver", "--rtol", "--atol", "--criterion", "--restitution",
-                                        "--output", "--dt", "--record", "--unit", "--record-dt", "--floor"};
+                                        "--output", "--dt", "--record", "--unit", "--record-dt", "--floor", "--friction"};
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(static_cast<int>(args.size()), args.data(), 2, allowed);
     auto has = [&](const char* f) { return a.values.count(f) > 0; };
@@ -146,6 +147,17 @@ int cmd_simulate(int argc, char** argv) {
             throw UsageError(std::string(amplitude_flag) + ": the PGA it gives, " + harness::format_number(pga) +
                              " g, is outside the range of double");
         input = std::make_unique<PulseInput>(train, pga, to);
+    }
+    // The sliding-rocking model keeps its own equations, impact law and solver.
+    if (has("--friction")) {
+        for (const char* f : {"--model", "--solver", "--restitution", "--output", "--dt"})
+            if (has(f))
+                throw UsageError(std::string(f) + " does not apply with --friction: the sliding-rocking model has its "
+                                 "full equations, its impact law and its event-driven solver");
+        if (paper) throw UsageError("--paper does not apply with --friction (the paper's block does not slide)");
+        refuse_unresolvable_run(model.block.p, input->t_end(), a, {"--record-dt", "--to", "--x", "--p", "--height"},
+                                has("--record") ? a.values.at("--record") : "the input");
+        return simulate_friction(a, given, *input, criterion, friction_option(a));
     }
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");

@@ -281,6 +281,7 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                     track(t, x);
                     out.overturned = true;
                     out.overturned_during_input = t <= t_fin;
+                    if (!input_over) out.slip_at_tfin = x[2] * R;  // at the fall, where the run ends
                     out.t_overturn = t;
                     out.final_slip = x[2] * R;
                     out.input_work = x[4] * g * R;

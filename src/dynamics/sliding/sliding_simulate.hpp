@@ -38,7 +38,7 @@ struct SlidingResult {
     double t_fin = 0;
     double max_abs_theta_input = 0;   // largest |theta| on [0, t_fin]
     double theta_at_tfin = 0;
-    double slip_at_tfin = 0;          // the base's displacement on the ground at t_fin, m
+    double slip_at_tfin = 0;          // the base's displacement on the ground at t_fin (or the fall before it), m
     double max_abs_slip = 0;          // largest |slip| over the run, m
     double final_slip = 0;            // at the run's end, m
     bool overturned = false, overturned_during_input = false;

@@ -1,0 +1,19 @@
+// rocking simulate --friction MU: the sliding-rocking run (simulate_friction.cpp).
+#pragma once
+
+#include "cli/geometry.hpp"
+#include "cli/options.hpp"
+#include "dynamics/ground_input.hpp"
+#include "dynamics/simulate.hpp"
+
+namespace rocking::cli {
+
+// --friction's value, in (0, 1e6]; a UsageError otherwise.
+double friction_option(const Args& a);
+
+// Runs the block on the input with friction mu and prints the result (text
+// or --json); the tolerances from --rtol and --atol.
+int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::GroundInput& input,
+                      dynamics::Criterion criterion, double mu);
+
+}  // namespace rocking::cli

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# rocking simulate --friction MU (issue 41): the sliding-rocking model from the
+# command line.  Newmark's slip of a block that only slides under a
+# rectangular pulse, recomputed here; friction 1e6 against --model full on a
+# pulse that rocks the block through an impact; the energy balance it
+# reports; refusals of the options that do not apply.
+#
+#   tests/sliding_cli_test.sh ROCKING
+set -u
+rocking="$1"
+py=/usr/bin/python3
+source "$(dirname "$0")/check_lib.sh"
+
+# alpha 0.3, mu 0.2 < tan(0.3): 0.5 g for 0.4 s slides it without rocking.
+if "$rocking" simulate --train 1:1 --to 0.4 --pga 0.5 --alpha 0.3 --height 2 --friction 0.2 --rtol 1e-12 --json | $py -c "
+import json, sys
+d = json.load(sys.stdin)
+g, a, mu, T = 9.81, 0.5, 0.2, 0.4
+vT = (a - mu) * g * T
+tau = vT / (mu * g)
+slip = 0.5 * (a - mu) * g * T * T + vT * tau - 0.5 * mu * g * tau * tau
+assert abs(d['final_slip_m'] - slip) < 1e-9 * slip, (d['final_slip_m'], slip)
+assert abs(d['time_in']['slide'] - (T + tau)) < 1e-9 and d['time_in']['rock'] == 0, d['time_in']
+assert abs(d['energy']['input_work'] - d['energy']['friction_loss']) < 1e-9 * d['energy']['input_work'], d['energy']
+assert d['friction'] == 0.2 and 'Coulomb friction mu = 0.2' in d['model']
+"; then echo "ok: Newmark's slip"; else echo "FAIL: Newmark's slip"; fail=1; fi
+
+# Friction 1e6 never slips before the fall: the rocking-only full model's run.
+"$rocking" simulate --case 1 --x 1.5 --rd 0.9 --alpha 0.2 --height 3 --friction 1e6 --rtol 1e-11 --json >"${TMPDIR:-/tmp}/friction.$$.json"
+"$rocking" simulate --case 1 --x 1.5 --rd 0.9 --alpha 0.2 --height 3 --model full --rtol 1e-11 --json >"${TMPDIR:-/tmp}/full.$$.json"
+if $py - "${TMPDIR:-/tmp}/friction.$$.json" "${TMPDIR:-/tmp}/full.$$.json" <<'PY'
+import json, sys
+s, r = (json.load(open(f)) for f in sys.argv[1:3])
+for key in ("max_theta_input_over_alpha", "theta_tfin_over_alpha"):
+    assert abs(s[key] - r[key]) < 1e-8, (key, s[key], r[key])
+assert s["impacts"] == r["impacts"] == 1 and s["overturned"] == r["overturned"]
+assert s["time_in"]["slide"] == 0 and s["energy"]["balance_error_over_gR"] < 1e-8, s
+PY
+then echo "ok: friction 1e6 is the full model"; else echo "FAIL: friction 1e6 against --model full"; fail=1; fi
+rm -f "${TMPDIR:-/tmp}/friction.$$.json" "${TMPDIR:-/tmp}/full.$$.json"
+
+base=(--case 1 --x 1.5 --rd 0.9 --alpha 0.2 --height 3)
+check "friction states its model" "Coulomb friction mu = 0.6" "$rocking" simulate "${base[@]}" --friction 0.6
+check "friction states its solver" "event-driven Dormand-Prince 5(4), rtol 1e-09" "$rocking" simulate "${base[@]}" --friction 0.6
+check "friction's range" "--friction: the friction coefficient must be in (0, 1e6] (got 0)" "$rocking" simulate "${base[@]}" --friction 0
+status "friction's range" 2 "$rocking" simulate "${base[@]}" --friction -1
+check "no solver with friction" "--solver does not apply with --friction" "$rocking" simulate "${base[@]}" --friction 0.6 --solver exact
+check "no restitution with friction" "--restitution does not apply with --friction" "$rocking" simulate "${base[@]}" --friction 0.6 --restitution 0.9
+check "no --paper with friction" "--paper does not apply with --friction" "$rocking" simulate "${base[@]}" --friction 0.6 --paper
+exit $fail
