@@ -23,9 +23,11 @@ printf '0\n0\n0\n0\n' >"$tmp/zero.txt"
 check "assess: a record that never moves names its file" "$tmp/zero.txt: " "$rocking" assess "$tmp/zero.txt" --unit g --dt 0.01 --thickness 0.6 --height 4
 status "assess: a record that never moves" 1 "$rocking" assess "$tmp/zero.txt" --unit g --dt 0.01 --thickness 0.6 --height 4
 printf '1e300\n-1e300\n0\n0\n' >"$tmp/huge.txt"
-check "assess: eq. 27's x below 1e-150 names the option" "--p: the block's p (1e-200 rad/s) times the record's to_5" \
+check "assess: a p no search reads names the option" "--p: the block's p, 1e-200 rad/s, is outside the searches' (0.01, 1000) rad/s" \
     "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 0.1 --p 1e-200
-status "assess: eq. 27's x below 1e-150" 2 "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 0.1 --p 1e-200
+status "assess: a p no search reads" 2 "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 0.1 --p 1e-200
+check "assess: a block too small for the searches" "--height: the block's p, 1210.04 rad/s" \
+    "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --thickness 1e-6 --height 1e-5
 # A margin of -6.6e302 printed with %f filled its buffer with digits; an interval past the
 # spectrum's range read "no its interval ends".
 check "assess: a huge margin in powers of ten" "margin -6.57e+304 %)" "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 1e-5 --p 2

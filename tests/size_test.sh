@@ -33,7 +33,7 @@ if [ -f "$norcia" ]; then
     else echo "FAIL: on Norcia, assess's to_5 ($assess) is not record info's ($info)"; fail=1; fi
     # A tiny height gives p = 3.8e150 rad/s, which %.4f printed in 150 digits.
     check_no_long_number "assess prints a huge p in exponent form" "$rocking" assess "$norcia" --alpha 0.15 --height 1e-300
-    check "and refuses the run it cannot follow" "p = 3.81442e+150 rad/s over 39.995 s) exceeds 1e+09" "$rocking" assess "$norcia" --alpha 0.15 --height 1e-300
+    check "and refuses a p no search reads" "--height: the block's p, 3.81442e+150 rad/s, is outside the searches' (0.01, 1000) rad/s" "$rocking" assess "$norcia" --alpha 0.15 --height 1e-300
 else
     echo "skipped: Norcia checks (no shared records folder at $records)"
 fi

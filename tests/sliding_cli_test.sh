@@ -47,4 +47,45 @@ status "friction's range" 2 "$rocking" simulate "${base[@]}" --friction -1
 check "no solver with friction" "--solver does not apply with --friction" "$rocking" simulate "${base[@]}" --friction 0.6 --solver exact
 check "no restitution with friction" "--restitution does not apply with --friction" "$rocking" simulate "${base[@]}" --friction 0.6 --restitution 0.9
 check "no --paper with friction" "--paper does not apply with --friction" "$rocking" simulate "${base[@]}" --friction 0.6 --paper
+# The studies take --friction (issue 41): a synthetic record, a spectrum and an IDA on the
+# sliding-rocking model, each boundary seen by simulate --friction on either side.
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+"$rocking" record synth --stochastic 3 --dt 0.01 --duration 15 --output "$tmp/s.txt" >/dev/null || { echo "FAIL: synth"; exit 1; }
+"$rocking" spectrum "$tmp/s.txt" --unit m/s2 --alpha 0.1 --points 30 --p-min 1 --p-max 10 --friction 0.4 --json >"$tmp/sp.json" \
+    || { echo "FAIL: spectrum --friction"; fail=1; }
+"$rocking" fragility "$tmp/s.txt" --unit m/s2 --alpha 0.1 --p 6.5 --points 30 --q-max 5 --friction 0.4 --json >"$tmp/fr.json" \
+    || { echo "FAIL: fragility --friction"; fail=1; }
+if $py - "$tmp/sp.json" "$tmp/fr.json" "$rocking" "$tmp/s.txt" <<'PY'
+import json, subprocess, sys
+sp, fr = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+rocking, record = sys.argv[3], sys.argv[4]
+def falls(*args):
+    out = subprocess.run([rocking, "simulate", "--record", record, "--unit", "m/s2", "--friction", "0.4", *args, "--json"],
+                         capture_output=True, check=True).stdout
+    return json.loads(out)["collapse_overturning"]
+assert "Coulomb friction mu = 0.4" in sp["model"] and "Coulomb friction mu = 0.4" in fr["model"], (sp["model"], fr["model"])
+s = sp["spectra"][0]
+assert s["intervals"], "the friction spectrum overturns somewhere on [1, 10] rad/s"
+seen = 0
+for iv in s["intervals"]:
+    for end in ("lower", "upper"):
+        b = iv.get(end)
+        if not b:
+            continue
+        assert falls("--alpha", "0.1", "--p", repr(b["p_collapse"])), (end, b)
+        assert not falls("--alpha", "0.1", "--p", repr(b["p_safe"])), (end, b)
+        seen += 1
+assert seen >= 1, s["intervals"]
+ida = fr["blocks"][0]["records"][0]
+assert ida["collapsed"], ida
+assert falls("--alpha", "0.1", "--p", "6.5", "--q", repr(ida["q"])), ida
+print("ok: %d spectrum boundaries and the IDA's first collapse (q %s) seen by simulate --friction" % (seen, ida["q"]))
+PY
+then :; else echo "FAIL: the studies with --friction"; fail=1; fi
+check "a study's check is named for friction" "the sliding-rocking run at rtol 1e-12" cat "$tmp/fr.json"
+check "a study refuses restitution with friction" "--restitution does not apply with --friction" \
+    "$rocking" spectrum "$tmp/s.txt" --unit m/s2 --alpha 0.2 --friction 0.4 --restitution 0.9
+check "collapse refuses a solver with friction" "--model and --solver do not apply with --friction" \
+    "$rocking" collapse "$tmp/s.txt" --unit m/s2 --alpha 0.2 --friction 0.4 --solver dopri5
 exit $fail

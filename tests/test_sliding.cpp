@@ -245,3 +245,23 @@ TEST(Sliding, TheEnergyBalancesAndTheMirrorImageMirrors) {
         EXPECT_EQ(m.overturned, r.overturned) << mu;
     }
 }
+
+TEST(Sliding, AnImpactCascadeEndsAtRest) {
+    // A tall block rocked by one pulse rocks on after it with each impact
+    // taking 1 - (1 - 1.5 sin^2 alpha)^2 of its energy, until the rest rule
+    // lays it flat.  A residue of 1e-13 m/s of slip left by the last impact
+    // set it slide-rocking, stopping and striking again without end (on the
+    // Norcia record at p = 1 rad/s, mu 0.6): the cascade must end, at rest.
+    // The input goes on, at 0, for 60 s after the pulse: a run stops after
+    // the input once the block cannot fall, before the cascade ends.
+    std::vector<double> a(6051, 0.0);
+    for (int k = 0; k <= 50; ++k) a[k] = 0.3;
+    const SampledInput pulse(a, 0.01, "0.3 g for 0.5 s, then 60 s at rest");
+    const FrictionBlock block{0.15, 8.0, 0.6};
+    const SlidingResult r = simulate_sliding(block, pulse, SlidingOptions{});
+    EXPECT_FALSE(r.overturned);
+    EXPECT_GT(r.impacts, 100);
+    EXPECT_FALSE(r.slid);
+    EXPECT_EQ(r.final_slip, 0);
+    EXPECT_LT(r.balance_error, 1e-7);
+}

@@ -373,6 +373,9 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
     if (!(o.width >= 1e-7 && o.width <= 0.1)) refuse("width: must be in [1e-7, 0.1] (got " + significant(o.width, 17) + ")");
     if (!studies::in_search_alpha_range(alpha))
         refuse("the block's alpha, " + significant(alpha, 6) + " rad, is outside the searches' " + studies::kSearchAlphaRange);
+    if (!studies::in_search_p_range(given.block.p))
+        refuse(std::string(height ? "height" : half_height ? "half_height" : "p") + ": the block's p, " +
+               significant(given.block.p, 6) + " rad/s, is outside the searches' " + studies::kSearchPRange);
     // One record (a Record or a path) or a list of them.
     std::vector<RecordPtr> held;
     if (py::isinstance<py::list>(records_given) || py::isinstance<py::tuple>(records_given)) held = record_list(records_given, "record");

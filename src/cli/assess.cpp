@@ -151,7 +151,7 @@ int cmd_assess(int argc, char** argv) {
     int first = 0;
     const std::vector<std::string> files = file_arguments(argc, argv, first, usage_line("assess"));
     if (files.size() > 1000) throw UsageError("at most 1000 files");
-    std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor", "--restitution", "--png"};
+    std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor", "--restitution", "--friction", "--png"};
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(argc, argv, first, allowed);
     const GivenBlock given = block_option(a);
@@ -163,6 +163,7 @@ int cmd_assess(int argc, char** argv) {
     const double alpha = given.alpha;
     studies::AssessOptions o;
     restitution_into(a, o.model);
+    friction_into(a, o.model);
     if (a.values.count("--width")) {
         o.width = number("--width", a.values.at("--width"));
         if (!(o.width >= 1e-7 && o.width <= 0.1)) throw UsageError("--width: must be in [1e-7, 0.1] (got " + a.values.at("--width") + ")");
@@ -170,6 +171,10 @@ int cmd_assess(int argc, char** argv) {
     if (!studies::in_search_alpha_range(alpha))
         throw UsageError("the block's alpha, " + significant(alpha, 6) + " rad, is outside the searches' " +
                          studies::kSearchAlphaRange);
+    if (!studies::in_search_p_range(given.block.p))
+        throw UsageError(std::string(a.values.count("--height") ? "--height" : a.values.count("--half-height") ? "--half-height" : "--p") +
+                         ": the block's p, " + significant(given.block.p, 6) + " rad/s, is outside the searches' " +
+                         studies::kSearchPRange);
     std::vector<records::Record> records;
     std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
     std::vector<const dynamics::SampledInput*> views;

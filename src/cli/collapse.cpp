@@ -24,7 +24,7 @@ int cmd_collapse(int argc, char** argv) {
         file_argument(argc, argv, 2, usage_line("collapse"));
     const Args a = parse(argc, argv, 3,
                          {"--alpha", "--thickness", "--height", "--half-height", "--model", "--solver", "--criterion",
-                          "--restitution", "--rtol", "--atol", "--unit", "--dt", "--floor"});
+                          "--restitution", "--rtol", "--atol", "--unit", "--dt", "--floor", "--friction"});
     // The search is over p: of a block given as built only its alpha counts,
     // and its own p is printed beside the search's.
     std::optional<GivenBlock> given;
@@ -50,6 +50,11 @@ int cmd_collapse(int argc, char** argv) {
     }
     tolerance_options(a.values, alpha, o.solver);
     restitution_into(a, o);
+    friction_into(a, o);
+    if (o.friction > 0 && (a.values.count("--model") || a.values.count("--solver")))
+        throw UsageError("--model and --solver do not apply with --friction: the sliding-rocking model has its full "
+                         "equations and its event-driven solver");
+    if (o.friction > 0 && a.values.count("--rtol")) o.sliding_rtol = o.solver.rtol;
     if (o.equation == Equation::full && o.solver.kind == SolverKind::exact)
         throw UsageError("the exact solver handles the linearised equation only");
     const records::Record r = load_record(path, a);

@@ -153,7 +153,7 @@ The other commands take the same floor with --floor T1,G[,zeta], without the fil
 
 const char* kCollapse = R"(
 rocking collapse FILE (--alpha A | --thickness B (--height H | --half-height h)) [--model M]
-                 [--solver S] [--rtol R] [--atol A] [--criterion C] [--restitution E|housner]
+                 [--solver S] [--rtol R] [--atol A] [--criterion C] [--restitution E|housner | --friction MU]
                  [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]
 )";
 const char* kCollapseDetails = R"(
@@ -171,6 +171,9 @@ spectrum finds every interval).
   --rtol R, --atol A   the ODE solvers' tolerances, as for rocking simulate (default 1e-6, R alpha)
   --criterion C     overturning (the default), final-rotation or peak-rotation
   --restitution E   a factor in [0, 1] or housner (the default)
+  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
+                    model (docs/sliding.md: full equations, impacts without rebound, its own
+                    event-driven solver); without --restitution
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --json            machine-readable output
@@ -179,7 +182,7 @@ spectrum finds every interval).
 const char* kAssess = R"(
 rocking assess FILE... (--thickness B (--height H | --half-height h)
                        | --alpha A (--height H | --half-height h | --p P))
-               [--width W] [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
+               [--width W] [--restitution E|housner | --friction MU] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
                [--png PNG] [--json]
 )";
 const char* kAssessDetails = R"(
@@ -210,6 +213,9 @@ named in the output. For each record:
   --width W         the refine searches' width, in ln q and ln p, in [1e-7, 0.1] (default 1e-3):
                     an island of overturning narrower than W may be missed
   --restitution E   the restitution on angular velocity at impact, in [0, 1], or housner (the default)
+  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
+                    model (docs/sliding.md: full equations, impacts without rebound, its own
+                    event-driven solver); without --restitution
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --png PNG         the check on one record (gnuplot): above, max |theta|/alpha of 300 runs of
@@ -224,7 +230,7 @@ A record given twice (the same samples, whatever the path) is refused: it would 
 const char* kSpectrum = R"(
 rocking spectrum FILE [--alpha A[,A...]] [--mark BxH[,BxH...]] [--p-min P] [--p-max P]
                  [--points N] [--method grid|refine [--width W] [--robust-width R]]
-                 [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
+                 [--restitution E|housner | --friction MU] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
                  [--jobs N] [--output CSV] [--png PNG] [--json] [--rows FILE [--resume]]
                  [--quiet]
 mpirun -np K rocking spectrum FILE --alpha A[,A...] ... [--rows FILE [--resume]]
@@ -251,6 +257,9 @@ missed.
                     --robust-width R in ln p, default 5e-3, in [1e-7, 1]) and overturned share per
                     band (docs/overturning_set.md)
   --restitution E   theta' after an impact over theta' before, in [0, 1], or housner (the default)
+  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
+                    model (docs/sliding.md: full equations, impacts without rebound, its own
+                    event-driven solver); without --restitution
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      the grid: alpha, p, grid, max |theta|/alpha, the three criteria, t_overturn
@@ -266,7 +275,7 @@ missed.
 
 const char* kFragility = R"(
 rocking fragility FILE... (--alpha A[,A...] --p P[,P...] | --block BxH[,BxH...])
-                  [--q-max Q] [--points N] [--bootstrap K --seed S] [--restitution E|housner]
+                  [--q-max Q] [--points N] [--bootstrap K --seed S] [--restitution E|housner | --friction MU]
                   [--method grid|refine [--width W] [--robust-width R]]
                   [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--jobs N] [--output CSV]
                   [--fits CSV] [--nrml XML] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]
@@ -297,6 +306,9 @@ given twice (the same samples, whatever the path) is refused.
                     order of their samples' SHA-256, so that the listing's order changes nothing;
                     the intervals are 90 % percentile intervals
   --restitution E   theta' after an impact over theta' before, in [0, 1], or housner (the default)
+  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
+                    model (docs/sliding.md: full equations, impacts without rebound, its own
+                    event-driven solver); without --restitution
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      one row per block and record
@@ -316,7 +328,7 @@ given twice (the same samples, whatever the path) is refused.
 const char* kEq27 = R"(
 rocking eq27 FILE... [--alpha A[,A...]] [--p-min P] [--p-max P] [--p-points N] [--q-max Q]
              [--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S]
-             [--restitution E|housner] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--jobs N]
+             [--restitution E|housner | --friction MU] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--jobs N]
              [--output CSV] [--png PNG] [--json] [--quiet]
 mpirun -np K rocking eq27 FILE... [--alpha A,...] ...
 )";
@@ -336,6 +348,9 @@ alpha or a record given twice (the same samples, whatever the path) is refused.
                     under each capacity, the first overturning and the first robust collapse
   --bootstrap K, --seed S   as for rocking fragility
   --restitution E   theta' after an impact over theta' before, in [0, 1], or housner (the default)
+  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
+                    model (docs/sliding.md: full equations, impacts without rebound, its own
+                    event-driven solver); without --restitution
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      the map: per block, the records non-conservative for each to_k

@@ -474,6 +474,22 @@ std::string floor_input_note(const Args& a) {
     return records::describe_as_input(m);
 }
 
+double friction_option(const Args& a) {
+    const std::string& text = a.values.at("--friction");
+    const double mu = number("--friction", text);
+    if (!(mu > 0 && mu <= 1e6))
+        throw UsageError("--friction: the friction coefficient must be in (0, 1e6] (got " + text + ")");
+    return mu;
+}
+
+void friction_into(const Args& a, records::CollapseOptions& model) {
+    if (!a.values.count("--friction")) return;
+    if (a.values.count("--restitution"))
+        throw UsageError("--restitution does not apply with --friction: the sliding-rocking model's impacts follow "
+                         "from impulse and momentum (Housner's restitution where the corner sticks)");
+    model.friction = friction_option(a);
+}
+
 void restitution_into(const Args& a, records::CollapseOptions& model) {
     if (!a.values.count("--restitution")) return;
     const double e = restitution_option(a.values.at("--restitution"));

@@ -40,6 +40,11 @@ void restitution_into(const Args& a, records::CollapseOptions& model);
 // floor's motion, the model named; q and to_k the floor's), for
 // IdaOptions::input_note; empty without it.
 std::string floor_input_note(const Args& a);
+// --friction's value, in (0, 1e6]; a UsageError otherwise.
+double friction_option(const Args& a);
+// --friction MU into a search's model (the sliding-rocking model, issue 41);
+// refused beside --restitution, which that model's impact law replaces.
+void friction_into(const Args& a, records::CollapseOptions& model);
 std::string smallest_tolerance();
 double rtol_option(const std::string& text);
 void tolerance_options(const std::map<std::string, std::string>& values, double alpha,

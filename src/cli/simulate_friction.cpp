@@ -28,14 +28,6 @@ std::string model_text(double mu) {
 
 }  // namespace
 
-double friction_option(const Args& a) {
-    const std::string& text = a.values.at("--friction");
-    const double mu = number("--friction", text);
-    if (!(mu > 0 && mu <= 1e6))
-        throw UsageError("--friction: the friction coefficient must be in (0, 1e6] (got " + text + ")");
-    return mu;
-}
-
 int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::GroundInput& input,
                       dynamics::Criterion criterion, double mu) {
     using namespace dynamics;

@@ -8,9 +8,6 @@
 
 namespace rocking::cli {
 
-// --friction's value, in (0, 1e6]; a UsageError otherwise.
-double friction_option(const Args& a);
-
 // Runs the block on the input with friction mu and prints the result (text
 // or --json); the tolerances from --rtol and --atol.
 int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::GroundInput& input,

@@ -77,6 +77,7 @@ SpectrumOptions grid_from(const Args& a) {
     o.width = m.width;
     o.robust_width = m.robust_width;
     restitution_into(a, o.model);
+    friction_into(a, o.model);
     return o;
 }
 
@@ -344,7 +345,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     std::vector<char*> args = without_engine_switches(argc, argv, c.engine.resume, c.engine.quiet);
     const int count = static_cast<int>(args.size());
     c.path = file_argument(count, args.data(), 2, usage_line("spectrum"));
-    c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--floor", "--restitution", "--jobs",
+    c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--floor", "--restitution", "--friction", "--jobs",
                                            "--output", "--png", "--rows", "--method", "--width", "--robust-width",
                                            "--mark"});
     const Args& a = c.args;

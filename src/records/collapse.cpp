@@ -1,20 +1,46 @@
 #include "records/collapse.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
+
+#include "dynamics/sliding/sliding_simulate.hpp"
 
 namespace rocking::records {
 
 using namespace dynamics;
 
+std::string CollapseOptions::describe_model() const {
+    char number[40];
+    if (friction > 0) {
+        std::snprintf(number, sizeof number, "%g", friction);
+        std::string text = "sliding-rocking on Coulomb friction mu = " + std::string(number) +
+                           " (full equations; rest, slide, rock, slide-rock; impacts without rebound, stuck or "
+                           "slipping), criterion " + criterion_name(criterion);
+        std::snprintf(number, sizeof number, "%g", sliding_rtol);
+        return text + ", solver event-driven dopri5 (rtol " + number + ", atol " + number + " alpha)";
+    }
+    std::snprintf(number, sizeof number, "%g", restitution);  // std::to_string printed 1e-7 as 0.000000
+    std::string text = equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1";
+    text += ", restitution ";
+    text += housner_restitution ? std::string("Housner 1 - 1.5 sin^2 alpha") : std::string(number);
+    text += ", criterion " + criterion_name(criterion) + ", solver " + solver_name(solver.kind);
+    if (solver.kind != SolverKind::exact) text += " (" + tolerance_text(solver) + ")";
+    return text;
+}
+
 std::string CollapseOptions::describe() const {
     std::ostringstream os;
-    os << (equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1") << ", restitution ";
-    if (housner_restitution) os << "Housner 1 - 1.5 sin^2 alpha";
-    else os << restitution;  // %g: std::to_string printed 1e-7 as 0.000000
-    os << ", criterion " << criterion_name(criterion) << ", solver " << solver_name(solver.kind)
-       << (solver.kind == SolverKind::exact ? std::string("") : " " + tolerance_text(solver))
-       << ", p scanned from " << p_min << " by x" << growth << ", refined to " << rel_tol;
+    if (friction > 0) os << describe_model();
+    else {
+        // Its own bytes since before the studies' describe_model: "solver dopri5 rtol ..." without parentheses.
+        os << (equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1") << ", restitution ";
+        if (housner_restitution) os << "Housner 1 - 1.5 sin^2 alpha";
+        else os << restitution;
+        os << ", criterion " << criterion_name(criterion) << ", solver " << solver_name(solver.kind)
+           << (solver.kind == SolverKind::exact ? std::string("") : " " + tolerance_text(solver));
+    }
+    os << ", p scanned from " << p_min << " by x" << growth << ", refined to " << rel_tol;
     return os.str();
 }
 
@@ -28,8 +54,32 @@ Model model_of(double alpha, double p, const CollapseOptions& options) {
 
 namespace {
 
+// A sliding-rocking run in a rocking run's terms: what the searches and
+// their outputs read (the criteria's inputs, impacts, uplift).
+SimulationResult sliding_run(const GroundInput& input, double alpha, double p, const CollapseOptions& options,
+                             bool free_rocking) {
+    const sliding::FrictionBlock block{alpha, 3 * kGravity / (4 * p * p), options.friction};
+    sliding::SlidingOptions o;
+    o.rtol = o.atol_alpha = options.sliding_rtol;
+    o.free_rocking = free_rocking;
+    const sliding::SlidingResult r = sliding::simulate_sliding(block, input, o);
+    SimulationResult out;
+    out.t_fin = r.t_fin;
+    out.theta_at_tfin = r.theta_at_tfin;
+    out.max_abs_theta_input = r.max_abs_theta_input;
+    out.uplifted = r.uplifted;
+    out.overturned = r.overturned;
+    out.overturned_during_input = r.overturned_during_input;
+    out.t_overturn = r.t_overturn;
+    out.impacts = r.impacts;
+    out.steps = r.steps;
+    out.rhs_evaluations = r.rhs_evaluations;
+    return out;
+}
+
 SimulationResult run_block(const GroundInput& input, double alpha, double p, const CollapseOptions& options,
                            bool free_rocking) {
+    if (options.friction > 0) return sliding_run(input, alpha, p, options, free_rocking);
     const Model model = model_of(alpha, p, options);
     SimulationOptions sim;
     sim.solver = options.solver;

@@ -20,6 +20,18 @@ struct CollapseOptions {
     double p_min = 0.3, p_max = 30.0;  // rad/s
     double growth = 1.01;              // scan step: p *= growth
     double rel_tol = 1e-4;             // bisection until (p_hi - p_lo) / p_hi < rel_tol
+    // > 0: the base on Coulomb friction (issue 41, dynamics/sliding/): the
+    // sliding-rocking model, with its full equations, its impact law and its
+    // event-driven solver at sliding_rtol, in place of equation, restitution
+    // and solver.  0: the block that never slides.
+    double friction = 0;
+    double sliding_rtol = 1e-9;        // rtol and atol (in alpha) of the sliding-rocking runs
+    // A search's check of a boundary: the sliding engine 1000 times tighter
+    // (it has no second method in C++ yet: tools/siconos_block.py is one).
+    static constexpr double kSlidingCheckRtol = 1e-12;
+    // The model in words: the equation, the restitution (or the friction
+    // and its impact law), the criterion and the solver.
+    std::string describe_model() const;
     std::string describe() const;
 };
 

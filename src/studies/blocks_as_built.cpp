@@ -17,10 +17,10 @@ std::vector<BlockShape> blocks_as_built(const std::string& text, const std::stri
             throw std::invalid_argument(what + " " + g.label + ": alpha = atan(B/H) = " + number +
                                         " rad, outside the searches' " + kSearchAlphaRange);
         }
-        if (!(g.block.p > 0.01 && g.block.p < 1000)) {
+        if (!in_search_p_range(g.block.p)) {
             std::snprintf(number, sizeof number, "%.6g", g.block.p);
-            throw std::invalid_argument(what + " " + g.label + ": p = " + number +
-                                        " rad/s, outside the studies' (0.01, 1000) rad/s");
+            throw std::invalid_argument(what + " " + g.label + ": p = " + number + " rad/s, outside the studies' " +
+                                        kSearchPRange);
         }
         out.push_back({g.block.alpha, g.block.p, g.label});
     }

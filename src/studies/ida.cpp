@@ -67,23 +67,17 @@ std::string FragilityStudyOptions::describe_fits() const {
 
 std::string IdaOptions::describe_checks() const {
     if (checks == Checks::none) return "brackets not checked";
-    char text[200];
+    char text[300];
     std::snprintf(text, sizeof text,
-                  "%s: the input times 1 +- %g at both ends (a flip: ill-conditioned), then GSL rk8pd at rtol 1e-13",
+                  "%s: the input times 1 +- %g at both ends (a flip: ill-conditioned), then %s",
                   checks == Checks::first_collapse ? "the first collapse's bracket checked" : "every bracket checked",
-                  probe);
+                  probe, model.friction > 0 ? "the sliding-rocking run at rtol 1e-12 (the same engine, tighter)"
+                                            : "GSL rk8pd at rtol 1e-13");
     return text;
 }
 
 std::string IdaOptions::describe_model() const {
-    const records::CollapseOptions& m = model;
-    char e[40];
-    std::snprintf(e, sizeof e, "%g", m.restitution);
-    std::string text = m.equation == dynamics::Equation::linearised ? "linearised eq. 3" : "full eq. 1";
-    text += ", restitution ";
-    text += m.housner_restitution ? std::string("Housner 1 - 1.5 sin^2 alpha") : std::string(e);
-    text += ", criterion " + dynamics::criterion_name(m.criterion) + ", solver " + dynamics::solver_name(m.solver.kind);
-    if (m.solver.kind != dynamics::SolverKind::exact) text += " (" + dynamics::tolerance_text(m.solver) + ")";
+    std::string text = model.describe_model();
     if (!input_note.empty()) text += "; input: " + input_note;
     return text;
 }
@@ -117,6 +111,7 @@ bool collapses_at_q(const GroundInput& input, double alpha, double p, double q, 
 BracketChecks checks_of(const GroundInput& input, double alpha, double p, const IdaOptions& o) {
     IdaOptions second = o;
     second.model.solver = SpectrumOptions::rk8pd_check();
+    second.model.sliding_rtol = records::CollapseOptions::kSlidingCheckRtol;
     return {[&input, alpha, p, o](double q) { return collapses_at_q(input, alpha, p, q * (1 + o.probe), o); },
             [&input, alpha, p, o](double q) { return collapses_at_q(input, alpha, p, q * (1 - o.probe), o); },
             [&input, alpha, p, second](double q) { return collapses_at_q(input, alpha, p, q, second); }};
@@ -144,7 +139,8 @@ public:
         sim_.solver = o.model.solver;
         sim_.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
         record_ = dynamic_cast<const dynamics::SampledInput*>(&input);
-        if (record_ && o.model.criterion == dynamics::Criterion::overturning &&
+        // The margins come from the rocking-only record kernel: a block that slides has none.
+        if (record_ && o.model.criterion == dynamics::Criterion::overturning && !(o.model.friction > 0) &&
             dynamics::record_kernel_applies(model_, *record_, sim_))
             rest_ = std::make_unique<dynamics::RestOfInput>(*record_, p);
     }

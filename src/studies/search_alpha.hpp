@@ -13,4 +13,11 @@ constexpr const char* kSearchAlphaRange = "(0, pi/4)";      // as the messages p
 
 inline bool in_search_alpha_range(double alpha) { return alpha > 0 && alpha < kSearchAlphaMax; }
 
+// The block's p a search reads it at: the spectrum's own p range's bounds.
+// A block outside it (H below 0.02 mm or above 150 km at small alpha) is no
+// wall; beyond 1000 rad/s assess failed deep inside the record kernel.
+constexpr double kSearchPMin = 0.01, kSearchPMax = 1000;
+constexpr const char* kSearchPRange = "(0.01, 1000) rad/s";
+inline bool in_search_p_range(double p) { return p > kSearchPMin && p < kSearchPMax; }
+
 }  // namespace rocking::studies

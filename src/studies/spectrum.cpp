@@ -57,16 +57,7 @@ std::string SpectrumOptions::describe_grid() const {
     return text;
 }
 
-std::string SpectrumOptions::describe_model() const {
-    const records::CollapseOptions& m = model;
-    std::string text = m.equation == dynamics::Equation::linearised ? "linearised eq. 3" : "full eq. 1";
-    text += ", restitution ";
-    if (m.housner_restitution) text += "Housner 1 - 1.5 sin^2 alpha";
-    else text += short_number(m.restitution);
-    text += ", criterion " + dynamics::criterion_name(m.criterion) + ", solver " + dynamics::solver_name(m.solver.kind);
-    if (m.solver.kind != dynamics::SolverKind::exact) text += " (" + dynamics::tolerance_text(m.solver) + ")";
-    return text + ", free rocking after the input followed";
-}
+std::string SpectrumOptions::describe_model() const { return model.describe_model() + ", free rocking after the input followed"; }
 
 std::string SpectrumOptions::describe_guarantee() const {
     return "w = " + short_number(width) + " in ln p: every island and gap wider than w in ln p found, except where "
@@ -78,8 +69,10 @@ std::string SpectrumOptions::describe_guarantee() const {
 std::string SpectrumOptions::describe_refinement() const {
     std::string text = "boundaries bisected to " + short_number(rel_tol) + " relative";
     if (!confirm) return text + "; not checked";
-    return text + "; each checked by " + dynamics::solver_name(check_solver.kind) + " (" +
-           dynamics::tolerance_text(check_solver) + ") unless the input times 1 +- " + short_number(probe) +
+    const std::string by = model.friction > 0 ? std::string("the sliding-rocking run at rtol 1e-12 (the same engine, tighter)")
+                                              : dynamics::solver_name(check_solver.kind) + " (" +
+                                                    dynamics::tolerance_text(check_solver) + ")";
+    return text + "; each checked by " + by + " unless the input times 1 +- " + short_number(probe) +
            " flips an outcome at either end of its bracket (ill-conditioned: flagged, not checked)";
 }
 
@@ -131,6 +124,7 @@ void confirm(Boundary& b, const GroundInput& input, const GroundInput& up, const
              const SpectrumOptions& o, Spectrum& s) {
     records::CollapseOptions check = o.model;
     check.solver = o.check_solver;
+    check.sliding_rtol = records::CollapseOptions::kSlidingCheckRtol;
     const BracketChecks checks{[&](double p) { return records::collapses_at(up, alpha, p, o.model); },
                                [&](double p) { return records::collapses_at(down, alpha, p, o.model); },
                                [&](double p) { return records::collapses_at(input, alpha, p, check); }};
@@ -173,7 +167,8 @@ bool record_kernel_runs(const GroundInput& input, double alpha, const SpectrumOp
     dynamics::SimulationOptions sim;
     sim.solver = o.model.solver;
     sim.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
-    return record && o.model.criterion == dynamics::Criterion::overturning &&
+    // The margins come from the rocking-only record kernel: a block that slides has none.
+    return record && o.model.criterion == dynamics::Criterion::overturning && !(o.model.friction > 0) &&
            dynamics::record_kernel_applies(records::model_of(alpha, o.p_min, o.model), *record, sim);
 }
 

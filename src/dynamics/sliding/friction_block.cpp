@@ -79,12 +79,15 @@ Start start_flat(const FrictionBlock& block, double A, double v) {
         if (trailing_normal(block) >= 0) return {Regime::slide, 0, s};
         return {Regime::slide_rock, s, s};
     }
-    const double tan_alpha = block.b() / block.h();
-    if (std::fabs(A) <= block.mu * g && std::fabs(A) <= tan_alpha * g) return {Regime::rest, 0, 0};
+    // At rest while it neither turns (theta'' towards d, which is |A| > g tan(alpha)
+    // as the forces round it: tan(alpha) against b/h differed by an ulp at the
+    // threshold and left no regime consistent) nor slides (|A| > mu g).
     const int d = sign(A);
     const Contact rock = stick_rocking(block, 0, 0, d, A);
-    if (rock.theta_dd * d > 0 && rock.n >= 0 && std::fabs(rock.f) <= block.mu * rock.n) return {Regime::rock, d, 0};
-    if (std::fabs(A) > block.mu * g && trailing_normal(block) >= 0) return {Regime::slide, 0, d};
+    const bool turns = rock.theta_dd * d > 0, slides = std::fabs(A) > block.mu * g;
+    if (!turns && !slides) return {Regime::rest, 0, 0};
+    if (turns && rock.n >= 0 && std::fabs(rock.f) <= block.mu * rock.n) return {Regime::rock, d, 0};
+    if (slides && trailing_normal(block) >= 0) return {Regime::slide, 0, d};
     const Contact both = slip_rocking(block, 0, 0, d, d, A);
     if (both.theta_dd * d > 0 && both.pivot_dd * d > 0 && both.n >= 0) return {Regime::slide_rock, d, d};
     throw std::domain_error("a block at rest under A = " + std::to_string(A) +

@@ -197,17 +197,25 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
     };
 
     for (long count = 0;; ++count) {
-        if (count > o.max_events) throw std::runtime_error("sliding: more than max_events regime changes");
+        if (count > o.max_events) {
+            char text[200];
+            std::snprintf(text, sizeof text, "sliding: more than %ld regime changes by t = %.9g s (in %s): the events "
+                          "do not end", o.max_events, t, regime_name(phase.regime));
+            throw std::runtime_error(text);
+        }
         if (!input_over && t >= t_fin) at_tfin(x);
         if (input_over && (t >= t_limit || !may_still_fall(x))) break;
         if (phase.regime == Regime::rest) {
             if (input_over) break;
-            // Where |A| first exceeds g min(mu, tan alpha): the block leaves rest.
-            const double go = uplift_time(input, t, t_fin, rest_threshold, [&](double s) { return input.accel(s); });
+            // Where |A| first exceeds g min(mu, tan alpha), moved on by ulps until
+            // the forces there leave rest (start_flat's own test, as it rounds).
+            const double go = move_until(input.first_above(t, t_fin, rest_threshold), t_fin, [&](double s) {
+                return start_flat(block, g * input.accel(s), 0).regime != Regime::rest;
+            });
             out.time_in[0] += std::min(go, t_fin) - t;
             t = std::min(go, t_fin);
             if (t >= t_fin) continue;
-            set_phase(start_flat(block, g * input.accel(t), 0));
+            set_phase(start_flat(block, g * input.accel(t), 0));  // rest again: move_until ran out of tries
             continue;
         }
         // One segment of the regime, to the input's end or the run's limit.
@@ -315,9 +323,13 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                     out.slipping_impacts += hit.slipped;
                     x[0] = 0;
                     if (std::fabs(hit.omega) < o.rest_velocity * alpha * p) {
-                        // Lies flat: what moves on is G's velocity along the ground.
+                        // Lies flat: what moves on is G's velocity along the ground,
+                        // unless below the same rest rule in velocity (alpha p R): a
+                        // residue of 1e-13 m/s set the block slide-rocking, stopping
+                        // and striking again without end (Zeno, at p = 1 on Norcia).
                         x[1] = 0;
                         x[3] = (xg + hit.p_t) / R;
+                        if (std::fabs(x[3]) < o.rest_velocity * alpha * p) x[3] = 0;
                         phase = Phase{Regime::rest, 0, 0};
                         const Start st = start_flat(block, A, x[3] * R);
                         set_phase(st);
