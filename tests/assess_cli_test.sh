@@ -22,6 +22,10 @@ trap 'rm -rf "$tmp"' EXIT
 printf '0\n0\n0\n0\n' >"$tmp/zero.txt"
 check "assess: a record that never moves names its file" "$tmp/zero.txt: " "$rocking" assess "$tmp/zero.txt" --unit g --dt 0.01 --thickness 0.6 --height 4
 status "assess: a record that never moves" 1 "$rocking" assess "$tmp/zero.txt" --unit g --dt 0.01 --thickness 0.6 --height 4
+# Bytes no text holds: a NUL stopped the message at "z.bin:1: '"; now each shows as \xNN.
+head -c 2000 /dev/zero >"$tmp/z.bin"
+check "assess: a file of zero bytes is named and shown" "z.bin:1: '\\x00\\x00" "$rocking" assess "$tmp/z.bin" --unit g --dt 0.01 --thickness 0.6 --height 4
+check "assess: ... and its length said" "... (2000 bytes)' is not a number" "$rocking" assess "$tmp/z.bin" --unit g --dt 0.01 --thickness 0.6 --height 4
 printf '1e300\n-1e300\n0\n0\n' >"$tmp/huge.txt"
 check "assess: a p no search reads names the option" "--p: the block's p, 1e-200 rad/s, is outside the searches' (0.01, 1000) rad/s" \
     "$rocking" assess "$tmp/huge.txt" --unit g --dt 0.01 --alpha 0.1 --p 1e-200
@@ -40,6 +44,14 @@ if [[ ! -f "$a" || ! -f "$b" ]]; then echo "SKIP: shared records folder absent (
 
 check "assess: the check is named" "eq. 27 check FAILS (the record's q is at or above eq. 27's: ratio 1.0026, margin -0.3 %)" \
     "$rocking" assess "$a" --thickness 0.6 --height 4
+# Where eq. 27's own closed form fails at the record's x (as rocking q --case 2 --pulses 6 says).
+k="$records/peer/RSN1158_KOCAELI_DZC180.AT2"
+if [[ -f "$k" ]]; then
+    check "assess: eq. 27 past its validity is said" "warning: at x = 1.1528 eq. 27's own input (case 2, 6 pulses) takes theta past alpha" \
+        "$rocking" assess "$k" --thickness 0.6 --height 4
+    check "rocking q agrees" "theta passes alpha before t_fin: yes" "$rocking" q --case 2 --pulses 6 --x 1.1528
+fi
+check_not "assess: eq. 27 within its validity says nothing" "eq. 27's own input" "$rocking" assess "$a" --thickness 0.6 --height 4
 status "assess: a bad width" 2 "$rocking" assess "$a" --thickness 0.6 --height 4 --width 0.5
 check "assess: the block is required" "give the block as --thickness B --height H" "$rocking" assess "$a"
 check "assess: a record twice is refused" "the same record as" "$rocking" assess "$a" "$a" --thickness 0.6 --height 4

@@ -58,7 +58,10 @@ TEST(NumberText, WhatIsNotReadIsNotANumber) {
     EXPECT_EQ(message_of("abc"), "'abc' is not a number");
     EXPECT_EQ(message_of("1e"), "'1e' is not a number");
     EXPECT_EQ(message_of(""), "'' is empty, not a number");
-    EXPECT_EQ(message_of(" \t"), "' \t' is empty, not a number");
+    // A byte that is not printable ASCII shows as \xNN (a tab, a NUL, a CR).
+    EXPECT_EQ(message_of(" \t"), "' \\x09' is empty, not a number");
+    EXPECT_EQ(message_of(std::string("1\0" "2", 3)), "'1\\x002' is not a number");
+    EXPECT_EQ(message_of(std::string(50, 'a')), "'" + std::string(40, 'a') + "... (50 bytes)' is not a number");
     EXPECT_EQ(message_of("1,5"), "'1,5' is not a number (decimal commas are not read)");
     EXPECT_EQ(message_of("0x10"), "'0x10' is not a number (hexadecimal is not read)");
     EXPECT_EQ(message_of("-0X1p3"), "'-0X1p3' is not a number (hexadecimal is not read)");

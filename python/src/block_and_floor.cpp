@@ -3,6 +3,7 @@
 // of the ground's (records/floor_motion.hpp).
 #include "common.hpp"
 #include "records/floor_motion.hpp"
+#include "records/synthetic.hpp"
 
 namespace rocking::python {
 
@@ -40,7 +41,11 @@ RecordPtr with_floor(const RecordPtr& ground, const std::optional<Text>& floor) 
                "participation Gamma phi, the damping ratio)");
     }
     try {
-        return std::make_shared<const records::Record>(records::floor_record(*ground, m));
+        auto floor_motion = std::make_shared<const records::Record>(records::floor_record(*ground, m));
+        // As record_synth: the sampling's warning reaches the caller.
+        for (const std::string& w : records::warnings_of(*floor_motion))
+            if (PyErr_WarnEx(PyExc_RuntimeWarning, ("floor: " + w).c_str(), 1) != 0) throw py::error_already_set();
+        return floor_motion;
     } catch (const std::invalid_argument& e) {
         refuse("floor " + *text_given + " on " + label_of(*ground) + ": " + e.what());
     }

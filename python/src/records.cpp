@@ -424,6 +424,8 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         d["to5"] = r.motion.to5;
         d["x"] = r.x;
         d["q_eq27"] = r.q_eq27;
+        d["eq27_passes_alpha_before_t_fin"] = r.eq27_passes_alpha;
+        d["eq27_impact_before_t_fin"] = r.eq27_strikes;
         d["q_record"] = r.q_record;
         d["ratio"] = r.ratio;
         d["margin"] = r.margin;
@@ -435,6 +437,8 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         d["first_robust_collapse"] = first(r.ida.first_robust_collapse, r.scale_first_robust, r.first_robust_to);
         d["change_below"] = nearest_side(r.mark.below, r.mark.height_below);
         d["change_above"] = nearest_side(r.mark.above, r.mark.height_above);
+        d["change_below_far"] = nearest_side(r.mark.below_far, studies::far_height(r.mark, r.mark.below_far));
+        d["change_above_far"] = nearest_side(r.mark.above_far, studies::far_height(r.mark, r.mark.above_far));
         d["in_spectrum_set"] = r.mark.in_set;
         d["guaranteed"] = std::isfinite(r.ida.unguaranteed_from) ? "below q = " + significant(r.ida.unguaranteed_from, 17)
                                                                  : std::string("over the whole search");

@@ -225,6 +225,8 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
         d["in_set"] = m.in_set;
         d["change_below"] = nearest_side(m.below, m.height_below);
         d["change_above"] = nearest_side(m.above, m.height_above);
+        d["change_below_far"] = nearest_side(m.below_far, studies::far_height(m, m.below_far));
+        d["change_above_far"] = nearest_side(m.above_far, studies::far_height(m, m.above_far));
         d["survivors_below"] = nearest_side(m.survivors_below, m.height_survivors_below);
         d["survivors_above"] = nearest_side(m.survivors_above, m.height_survivors_above);
         d["text"] = studies::describe_mark(m);

@@ -46,17 +46,20 @@ std::string percent(double v) {
 
 // With the interval that starts there: a first overturning on an island
 // 1e-6 wide in q, printed to four digits, did not overturn in simulate --q.
-std::string scale_text(const studies::IdaPoint& at, double scale, double q_record, double to) {
+// The interval is the search's, to w: gaps narrower than w may lie inside.
+std::string scale_text(const studies::IdaPoint& at, double scale, double q_record, double to, bool open, double w) {
     if (!at.collapsed)
         return "no scale up to " + four(at.q / q_record) + " times the record (q = " + four(at.q) + ", the search's end)";
-    char text[200];
-    std::snprintf(text, sizeof text, "%s times the record (q = %.10g; it overturns up to q = %.10g, "
-                  "%.2g in ln q)", four(scale).c_str(), at.q, to, std::log(to / at.q));
+    char text[300];
+    if (open)
+        std::snprintf(text, sizeof text, "%s times the record (q = %.10g; it overturns on to the search's end, q = %.6g, "
+                      "gaps narrower than w = %g aside)", four(scale).c_str(), at.q, to, w);
+    else
+        std::snprintf(text, sizeof text, "%s times the record (q = %.10g; it overturns up to q = %.10g, %.2g in ln q, "
+                      "gaps narrower than w = %g aside)", four(scale).c_str(), at.q, to, std::log(to / at.q), w);
     return text;
 }
 
-// floor: the --floor note ("" for the ground's motion), said where the
-// verdict is, since the record's path names the ground's.
 void print_text(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
                 const studies::Assessment& s, const studies::AssessOptions& o, const std::string& floor) {
     std::printf("assess: %s\n  model: %s\n", describe_block(given).c_str(), o.describe().c_str());
@@ -64,8 +67,9 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
     // The answer over several records before each record's evidence.
     if (files.size() > 1) {
         if (s.fitted)
-            std::printf("fragility over the %zu records (first overturnings): lognormal median q = %s, beta = %s "
-                        "(from %zu records: fragility --bootstrap gives its uncertainty)\n",
+            std::printf("fragility over the %zu records (first overturnings, each record's IDA to q = max(20, twice "
+                        "its own q)): lognormal median q = %s, beta = %s (from %zu records: fragility --bootstrap gives "
+                        "its uncertainty)\n",
                         files.size(), four(s.fit.median).c_str(), four(s.fit.beta).c_str(), files.size());
         else
             std::printf("fragility over the %zu records: no fit (%s)\n", files.size(), s.no_fit.c_str());
@@ -75,6 +79,11 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
         std::printf("%s%s: eq. 27 check %s (the %s q is %s eq. 27's: ratio %s, margin %s)\n", files[k].c_str(),
                     floor.empty() ? "" : " at the floor", r.passes ? "PASSES" : "FAILS", floor.empty() ? "record's" : "floor's",
                     r.passes ? "below" : "at or above", four(r.ratio).c_str(), percent(r.margin).c_str());
+        if (r.eq27_passes_alpha || r.eq27_strikes)
+            std::printf("  warning: at x = %s eq. 27's own input (case 2, 6 pulses) %s before t_fin, so its closed form "
+                        "does not hold there (rocking q --case 2 --pulses 6 --x %s says where)\n", four(r.x).c_str(),
+                        r.eq27_passes_alpha ? "takes theta past alpha" : "brings the block down to the ground",
+                        four(r.x).c_str());
         std::printf("  input: %s\n", names[k].c_str());
         std::printf("  %s: PGA = %s g, to_5 = pi PGV/PGA = %s s; x = p to_5 = %s; q from eq. 27 = %s; the "
                     "input's q = PGA/(alpha g) = %s\n", floor.empty() ? "record" : "floor motion",
@@ -87,8 +96,10 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
                         r.overturns ? "OVERTURNS (in the free rocking after it)" : "does not overturn",
                         four(r.peak_theta_over_alpha).c_str());
         std::printf("  the record scaled: the block first overturns at %s\n    and first robustly collapses at %s\n",
-                    scale_text(r.ida.first_overturning, r.scale_first_overturning, r.q_record, r.first_overturning_to).c_str(),
-                    scale_text(r.ida.first_robust_collapse, r.scale_first_robust, r.q_record, r.first_robust_to).c_str());
+                    scale_text(r.ida.first_overturning, r.scale_first_overturning, r.q_record, r.first_overturning_to,
+                               r.first_overturning_open, o.width).c_str(),
+                    scale_text(r.ida.first_robust_collapse, r.scale_first_robust, r.q_record, r.first_robust_to,
+                               r.first_robust_open, o.width).c_str());
         // Said where it bears on the numbers above: the record's own q or its first overturning beyond it.
         const double bound = r.ida.unguaranteed_from;
         if (std::isfinite(bound) && (r.q_record >= bound || r.ida.first_overturning.q >= bound))
@@ -122,6 +133,8 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
            << ", \"x\": " << json_number(r.x) << ", \"q_eq27\": " << json_number(r.q_eq27)
            << ", \"q_record\": " << json_number(r.q_record) << ", \"ratio\": " << json_number(r.ratio)
            << ", \"margin\": " << json_number(r.margin) << ", \"passes\": " << (r.passes ? "true" : "false")
+           << ", \"eq27_passes_alpha_before_t_fin\": " << (r.eq27_passes_alpha ? "true" : "false")
+           << ", \"eq27_impact_before_t_fin\": " << (r.eq27_strikes ? "true" : "false")
            << ", \"overturns\": " << (r.overturns ? "true" : "false")
            << ", \"fell_during_input\": " << (r.fell_during_input ? "true" : "false")
            << ", \"peak_theta_over_alpha\": " << json_number(r.peak_theta_over_alpha)
@@ -129,6 +142,8 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
            << ", \"first_robust_collapse\": " << first_json(r.ida.first_robust_collapse, r.scale_first_robust, r.first_robust_to)
            << ", \"change_below\": " << nearest_json(r.mark.below, r.mark.height_below)
            << ", \"change_above\": " << nearest_json(r.mark.above, r.mark.height_above)
+           << ", \"change_below_far\": " << nearest_json(r.mark.below_far, studies::far_height(r.mark, r.mark.below_far))
+           << ", \"change_above_far\": " << nearest_json(r.mark.above_far, studies::far_height(r.mark, r.mark.above_far))
            << ", \"in_spectrum_set\": " << (r.mark.in_set ? "true" : "false")
            << ", \"guaranteed\": " << (std::isfinite(r.ida.unguaranteed_from)
                                             ? json_string("below q = " + significant(r.ida.unguaranteed_from, 17))

@@ -382,9 +382,9 @@ lines are skipped; an empty cell takes the default of the command that runs that
   p, height, half_height   one of them: the block's p (rad/s), full height or half-height (m)
                     (simulate, ida)
   scaling           q=Q (PGA = Q alpha g) or pga=G (g); default: as recorded (not ida)
-  model, solver, rtol, atol, restitution, criterion   as the commands' options; a simulate row's
-                    defaults are restitution 1 and final-rotation (simulate --paper's setting), the
-                    other kinds' housner and overturning
+  model, solver, rtol, atol, restitution, criterion   as the commands' options; every kind's
+                    defaults are housner and overturning, as the commands' (simulate --paper's
+                    setting: restitution 1, final-rotation)
   q_max, points, p_min, p_max, method, width, robust_width   as rocking fragility's options (ida)
                     and rocking spectrum's (spectrum)
   --jobs N          threads, 1 to 4096 (default: the cores this process may use; under mpirun one a

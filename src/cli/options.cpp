@@ -11,6 +11,8 @@
 #include "batch/pool.hpp"
 #include "cli/options.hpp"
 
+#include "records/synthetic.hpp"
+
 #include "records/floor_motion.hpp"
 #include "harness/output_paths.hpp"
 #include "studies/overturning_set.hpp"
@@ -508,7 +510,12 @@ records::Record load_record(const std::string& path, const Args& a, const std::s
                          "floor's participation Gamma phi, the damping ratio)");
     }
     try {
-        return records::floor_record(ground, m);
+        records::Record floor = records::floor_record(ground, m);
+        // record floor prints these; every other command read the floor without them.
+        for (const std::string& w : records::warnings_of(floor))
+            std::fprintf(stderr, "rocking: warning: %s: --floor %s: %s\n", path.c_str(), a.values.at("--floor").c_str(),
+                         w.c_str());
+        return floor;
     } catch (const std::overflow_error& e) {
         throw std::runtime_error(path + ": --floor " + a.values.at("--floor") + ": " + e.what());
     } catch (const std::invalid_argument& e) {

@@ -282,6 +282,8 @@ void print_json(const std::string& path, const records::Record& r, const Spectru
            << ", \"overturns\": " << (m.overturns ? "true" : "false") << ", \"in_set\": " << (m.in_set ? "true" : "false")
            << ", \"change_below\": " << nearest_json(m.below, m.height_below)
            << ", \"change_above\": " << nearest_json(m.above, m.height_above)
+           << ", \"change_below_far\": " << nearest_json(m.below_far, studies::far_height(m, m.below_far))
+           << ", \"change_above_far\": " << nearest_json(m.above_far, studies::far_height(m, m.above_far))
            << ", \"survivors_below\": " << nearest_json(m.survivors_below, m.height_survivors_below)
            << ", \"survivors_above\": " << nearest_json(m.survivors_above, m.height_survivors_above) << ", \"text\": " << json_string(describe_mark(m))
            << "}";

@@ -1,5 +1,6 @@
 #include "numerics/number_text.hpp"
 
+#include <algorithm>
 #include <cfloat>
 #include <charconv>
 #include <cmath>
@@ -96,8 +97,31 @@ NumberRead read_number(std::string_view text) {
 std::string largest_double_text() { return to_17(DBL_MAX); }
 std::string smallest_normal_text() { return to_17(DBL_MIN); }
 
+namespace {
+
+// The text as a message can show it: printable ASCII kept, any other byte as
+// \xNN, at most 40 of them.  A record of zero bytes printed "z.bin:1: '" and
+// stopped at the first NUL; random bytes put carriage returns in the message.
+std::string shown(std::string_view text) {
+    std::string out;
+    const std::size_t n = std::min<std::size_t>(text.size(), 40);
+    for (std::size_t k = 0; k < n; ++k) {
+        const unsigned char c = static_cast<unsigned char>(text[k]);
+        if (c >= 0x20 && c < 0x7f) out += static_cast<char>(c);
+        else {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02X", c);
+            out += hex;
+        }
+    }
+    if (text.size() > n) out += "... (" + std::to_string(text.size()) + " bytes)";
+    return out;
+}
+
+}  // namespace
+
 std::string number_problem(std::string_view text, NumberProblem problem) {
-    const std::string quoted = "'" + std::string(text) + "'";
+    const std::string quoted = "'" + shown(text) + "'";
     switch (problem) {
         case NumberProblem::none: return quoted + " is a number";
         case NumberProblem::not_finite: return quoted + " is not a finite number";

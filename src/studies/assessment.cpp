@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "qfactor/closed_forms.hpp"
+#include "pulse/pulse_train.hpp"
 #include "qfactor/superposition.hpp"
 #include "records/collapse.hpp"
 
@@ -66,6 +67,9 @@ RecordAssessment assess_record(const dynamics::SampledInput& input, const record
     if (refused.blame != Refusal::Blame::none) throw std::invalid_argument(refused.why);
     a.x = block.p * m.to5;
     a.q_eq27 = q2_n6(a.x);
+    const Excursion e = collapse_excursion(repeated_case(2, 6), a.x);
+    a.eq27_passes_alpha = e.onset && e.passes_alpha();
+    a.eq27_strikes = !e.stays_positive();
     a.q_record = m.pga / (block.alpha * dynamics::kGravity);
     a.ratio = a.q_record / a.q_eq27;
     a.margin = 1 - a.ratio;
@@ -87,8 +91,10 @@ RecordAssessment assess_record(const dynamics::SampledInput& input, const record
     a.scale_first_overturning = a.ida.first_overturning.q / a.q_record;
     a.scale_first_robust = a.ida.first_robust_collapse.q / a.q_record;
     for (const IdaInterval& in : a.ida.intervals) {
-        if (a.ida.first_overturning.collapsed && in.from == a.ida.first_overturning.q) a.first_overturning_to = in.to;
-        if (a.ida.first_robust_collapse.collapsed && in.from == a.ida.first_robust_collapse.q) a.first_robust_to = in.to;
+        if (a.ida.first_overturning.collapsed && in.from == a.ida.first_overturning.q)
+            a.first_overturning_to = in.to, a.first_overturning_open = !in.has_upper;
+        if (a.ida.first_robust_collapse.collapsed && in.from == a.ida.first_robust_collapse.q)
+            a.first_robust_to = in.to, a.first_robust_open = !in.has_upper;
     }
 
     const SpectrumOptions sp = o.spectrum_options(block.p);

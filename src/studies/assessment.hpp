@@ -48,6 +48,11 @@ struct RecordAssessment {
     records::PeakMotion motion;
     double x = 0, q_eq27 = 0, q_record = 0, ratio = 0, margin = 0;
     bool passes = false;  // q_record < q_eq27
+    // Where eq. 27's own closed form stops holding at this x (its train, case
+    // 2 with 6 pulses, at its collapse q: qfactor/superposition.hpp): theta
+    // passes alpha before t_fin (from x = 0.8 on), or the block strikes the
+    // ground before it.  rocking q prints the same warnings.
+    bool eq27_passes_alpha = false, eq27_strikes = false;
     // The run on the record as recorded.
     double peak_theta_over_alpha = 0;  // max |theta|/alpha during the input (the fall angle's where it fell)
     bool overturns = false;
@@ -60,6 +65,7 @@ struct RecordAssessment {
     // overturning is often an island 1e-6 wide, which a q rounded to four
     // digits misses.  {0, 0} where not found.
     double first_overturning_to = 0, first_robust_to = 0;
+    bool first_overturning_open = false, first_robust_open = false;  // the interval runs to the search's end
     // The block on the record's spectrum at its alpha, and that spectrum (its options: spectrum_options).
     SpectrumMark mark;
     Spectrum spectrum;

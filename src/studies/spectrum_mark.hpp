@@ -26,6 +26,12 @@ struct SpectrumMark {
     // nearest surviving blocks lie just beyond them).  Found false where
     // there is none on that side (the spectrum's range ends first).
     SpectrumFirst below, above;
+    // Outside the set: the far ends of those nearest overturning intervals
+    // (the overturning blocks on that side span below.p back to below_far.p,
+    // above.p on to above_far.p), found where they are boundaries: an island
+    // 1e-3 wide in ln p, whose near end printed to four digits rounded off it.
+    SpectrumFirst below_far, above_far;
+    bool refined = false;  // the spectrum's method: refine (its set holds to w) or grid
     // The heights (m) of the blocks of this alpha at below.p and above.p
     // (H = 2 R cos alpha, R = 3 g/(4 p^2)); 0 where not found.
     double height_below = 0, height_above = 0;
@@ -44,6 +50,9 @@ struct SpectrumMark {
 // Why the block cannot be marked on a spectrum of these options ("" where
 // it can): its p outside [p_min, p_max], where the set says nothing of it.
 std::string why_not_markable(const BlockShape& block, const SpectrumOptions& o);
+
+// The height at a far end of the mark's (0 where not found).
+double far_height(const SpectrumMark& m, const SpectrumFirst& far);
 
 // H = 2 R cos(alpha), R = 3 g / (4 p^2): the height of the block of slenderness alpha whose pulsation is p (eqs. 2, 4).
 double height_at_p(double alpha, double p);
