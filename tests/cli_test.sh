@@ -229,7 +229,7 @@ if [ -d "$records" ]; then
     # used to stop at 1e6 impacts ("impact cascade did not end", exit 1).
     check "a hairline rocking to the end" "impacts: 1062" "$rocking" simulate \
         --record "$records/esm/IT.NRC..HGE.D.20161026.171036.C.ACC.ASC" --alpha 0.3 --p 0.7 --paper
-    check "collapse below uplift says so" "the record never lifts the block at all (PGA 0.359399 g <= alpha = 0.5)" \
+    check "collapse below uplift says so" "the record never lifts the block at all (PGA 0.359399 g <= the uplift threshold alpha g = 0.5 g)" \
         "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.5
     check "collapse json" '"found": true' "$rocking" collapse "$records/esm/IT.NRC..HGE.D.20160824.013632.C.ACC.ASC" --alpha 0.15 --json
     # Nothing found: no p and no safe p, rather than "p": 0.

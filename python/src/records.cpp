@@ -453,6 +453,9 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
     add_block_members(out, given);
     out["model"] = o.describe();
     out["width"] = o.width;
+    // As rocking assess --json: the floor's model where the records are a floor's motion.
+    out["floor"] = floor ? py::object(py::str(records::describe_as_input(records::parse_floor_model(*string_argument(floor, "floor")))))
+                         : py::object(py::none());
     out["check"] = "eq. 27: the record's q below q2_n6(p to_5)";
     out["records"] = rows;
     py::dict fragility = result();

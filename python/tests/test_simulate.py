@@ -99,7 +99,7 @@ def test_errors_are_the_command_line_s():
         rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, solver="dopri5", rtol=1e-20)
     with pytest.raises(ValueError, match="give dt >= "):
         rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, dt=1e-9)
-    with pytest.raises(ValueError, match="^block: alpha must be in"):
+    with pytest.raises(ValueError, match=r"^alpha: the slenderness must be in \(0, pi/4\) rad \(got 1\)"):
         rq.simulate(alpha=1.0, p=2, case=2, x=0.5, rd=0.9)
     # An input the library refuses: its message, as the command prints it (exit 1).
     message, code = cli_error("simulate", "--case", 2, "--x", 0.5, "--rd", 0.9, "--alpha", 0.15, "--p", 2,

@@ -93,7 +93,7 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
             std::printf("  the model on this record: OVERTURNS (falls during the input)\n");
         else
             std::printf("  the model on this record: %s (peak |theta|/alpha during the input %s)\n",
-                        r.overturns ? "OVERTURNS (in the free rocking after it)" : "does not overturn",
+                        r.overturns ? "OVERTURNS (in the free rocking after the input)" : "does not overturn",
                         four(r.peak_theta_over_alpha).c_str());
         std::printf("  the record scaled: the block first overturns at %s\n    and first robustly collapses at %s\n",
                     scale_text(r.ida.first_overturning, r.scale_first_overturning, r.q_record, r.first_overturning_to,
@@ -120,10 +120,11 @@ std::string first_json(const studies::IdaPoint& at, double scale, double to) {
 }
 
 void print_json(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
-                const studies::Assessment& s, const studies::AssessOptions& o) {
+                const studies::Assessment& s, const studies::AssessOptions& o, const std::string& floor) {
     std::ostringstream js;
     js << "{\"alpha\": " << json_number(given.alpha) << ", \"p\": " << json_number(given.block.p) << ", "
        << block_json(given) << ", \"model\": " << json_string(o.describe()) << ", \"width\": " << json_number(o.width)
+       << ", \"floor\": " << (floor.empty() ? std::string("null") : json_string(floor))
        << ", \"check\": \"eq. 27: the record's q below q2_n6(p to_5)\", \"records\": [";
     for (std::size_t k = 0; k < files.size(); ++k) {
         const studies::RecordAssessment& r = s.records[k];
@@ -223,8 +224,9 @@ int cmd_assess(int argc, char** argv) {
             studies::scaled_response(*views[0], alpha, given.block.p, o.model, 1, o.ida_q_max(r.q_record), 300);
         write_assess_png(a.values.at("--png"), records[0], r, response, o.spectrum_options(given.block.p));
     }
-    if (a.json) print_json(files, names, given, s, o);
+    if (a.json) print_json(files, names, given, s, o, floor_input_note(a));
     else print_text(files, names, given, s, o, floor_input_note(a));
+    if (!a.json && a.values.count("--png")) std::printf("plot: %s (the check above, the spectrum below)\n", a.values.at("--png").c_str());
     return 0;
 }
 

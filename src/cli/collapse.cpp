@@ -89,7 +89,7 @@ int cmd_collapse(int argc, char** argv) {
             const double pga_g = r.pga() / kGravity, thr = m.uplift_threshold();
             if (pga_g <= thr)
                 std::printf("no collapse for p up to %g rad/s: the record never lifts the block at all (PGA %.6g g <= "
-                            "%s = %.6g)\n",
+                            "the uplift threshold %s g = %.6g g)\n",
                             o.p_max, pga_g, o.equation == Equation::full ? "tan alpha" : "alpha", thr);
             else std::printf("no collapse for p up to %g rad/s\n", o.p_max);
         }

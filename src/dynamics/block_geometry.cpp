@@ -71,6 +71,11 @@ GivenBlock given_block(const BlockSpec& s, const ArgumentName& name) {
     if (s.p.has_value() + s.half_height.has_value() + s.height.has_value() != 1)
         throw std::invalid_argument(name("alpha") + " A goes with exactly one of " + name("p") + ", " +
                                     name("half_height") + " and " + name("height"));
+    // Named by its option here: Block's own "block: alpha must be ..." named none.
+    if (!(std::isfinite(*s.alpha) && *s.alpha > 0 && *s.alpha < M_PI / 4))
+        throw std::invalid_argument(name("alpha") + ": the slenderness must be in (0, pi/4) rad (got " + g6(*s.alpha) + ")");
+    if (s.p && !(std::isfinite(*s.p) && *s.p > 0))
+        throw std::invalid_argument(name("p") + ": must be > 0 rad/s (got " + g6(*s.p) + ")");
     GivenBlock g;
     g.alpha = *s.alpha;
     if (s.p) {
