@@ -18,7 +18,9 @@
 # from the values over its 1/K of the cycle by at most the variation there),
 # in S(h/4) and, through the difference, in S(h/2).  The floor is 1e-7 (of
 # alpha, m or s): a hundred times the engine's own error at --rtol 1e-11.
-# Overturned and the impacts must be the engine's in every run at every dt.
+# Overturned and the impacts must be the engine's in every run at every dt
+# (the engine counts impacts over its whole run and Siconos to t_fin: every
+# case here ends at t_fin or falls before it, where both count the same).
 # Each case ends with a decoy: the engine with an input 1 % off or a friction
 # 4-5 % off must be rejected by the same rule, or the rule cannot fail.
 #
