@@ -28,6 +28,10 @@ PACKAGES += python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pyte
 # pdftotext and pdffonts, with which ctest report_text reads the report as a reader's search does.
 PACKAGES += poppler-utils
 
+# Siconos (nonsmooth mechanics) for /usr/bin/python3: tools/siconos_block.py, the second method
+# against which ctest sliding_siconos checks the sliding-rocking engine (issue 41).
+PACKAGES += python3-siconos
+
 $(BUILD)/Makefile: CMakeLists.txt | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
 
