@@ -411,7 +411,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         d["found"] = at.collapsed;
         d["q"] = at.q;
         d["scale"] = scale;
-        d["interval_to"] = at.collapsed ? py::object(py::float_(to)) : py::object(py::none());
+        if (at.collapsed) d["interval_to"] = to;  // as --json: only where found
         return d;
     };
     py::list rows;
@@ -454,8 +454,8 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
     out["model"] = o.describe();
     out["width"] = o.width;
     // As rocking assess --json: the floor's model where the records are a floor's motion.
-    out["floor"] = floor ? py::object(py::str(records::describe_as_input(records::parse_floor_model(*string_argument(floor, "floor")))))
-                         : py::object(py::none());
+    out["input"] = floor ? records::describe_as_input(records::parse_floor_model(*string_argument(floor, "floor")))
+                         : std::string("each record as recorded: the ground's motion");
     out["check"] = "eq. 27: the record's q below q2_n6(p to_5)";
     out["records"] = rows;
     py::dict fragility = result();

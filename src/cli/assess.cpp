@@ -116,7 +116,7 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
 
 std::string first_json(const studies::IdaPoint& at, double scale, double to) {
     return "{\"found\": " + std::string(at.collapsed ? "true" : "false") + ", \"q\": " + json_number(at.q) +
-           ", \"scale\": " + json_number(scale) + ", \"interval_to\": " + (at.collapsed ? json_number(to) : "null") + "}";
+           ", \"scale\": " + json_number(scale) + (at.collapsed ? ", \"interval_to\": " + json_number(to) : std::string()) + "}";
 }
 
 void print_json(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
@@ -124,7 +124,7 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
     std::ostringstream js;
     js << "{\"alpha\": " << json_number(given.alpha) << ", \"p\": " << json_number(given.block.p) << ", "
        << block_json(given) << ", \"model\": " << json_string(o.describe()) << ", \"width\": " << json_number(o.width)
-       << ", \"floor\": " << (floor.empty() ? std::string("null") : json_string(floor))
+       << ", \"input\": " << json_string(floor.empty() ? std::string("each record as recorded: the ground's motion") : floor)
        << ", \"check\": \"eq. 27: the record's q below q2_n6(p to_5)\", \"records\": [";
     for (std::size_t k = 0; k < files.size(); ++k) {
         const studies::RecordAssessment& r = s.records[k];
