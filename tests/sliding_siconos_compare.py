@@ -34,7 +34,7 @@ def engine(rocking, args):
 
 
 def siconos(tool, args, e, dt, phases):
-    cmd = ["/usr/bin/python3", tool, *shlex.split(args), "--alpha", repr(e["alpha"]), "--R", repr(e["R"]),
+    cmd = ["/usr/bin/python3", tool, *shlex.split(args), "--alpha", repr(e["alpha"]), "--R", repr(e["R_from_p"]),
            "--dt", repr(dt), "--phases", str(phases)]
     done = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     if done.returncode != 0:

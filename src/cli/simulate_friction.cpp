@@ -48,7 +48,7 @@ int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::Gr
         auto b = [](bool v) { return v ? "true" : "false"; };
         std::cout << "{\"model\": " << json_string(model_text(mu)) << ", \"friction\": " << json_number(mu)
                   << ", \"alpha\": " << json_number(alpha) << ", \"p\": " << json_number(p)
-                  << ", \"R\": " << json_number(block.R) << ", " << block_json(given)
+                  << ", \"R_from_p\": " << json_number(block.R) << ", " << block_json(given)
                   << ", \"input\": " << json_string(input.describe()) << ", \"solver\": " << json_string(o.describe())
                   << ", \"rtol\": " << json_number(o.rtol) << ", \"atol_rad\": " << json_number(o.atol_alpha * alpha)
                   << ", \"criterion\": " << json_string(criterion_name(criterion)) << ", \"collapse\": " << b(collapse)

@@ -166,6 +166,7 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
     bool input_over = false;
     double t_limit = t_fin;  // raised to t_fin + 200/p while the block may still fall
     const double rest_threshold = std::min(block.mu, block.b() / block.h());
+    const double rest_rate = std::max(o.rest_velocity, 10 * o.atol_alpha) * alpha * p;
 
     auto balance = [&](const State& at, const Phase& ph) {
         const double residual = energy(block, ph, at) - (e0 + at[4] - at[5] - out.impact_loss / (g * R));
@@ -322,14 +323,16 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                     ++out.impacts;
                     out.slipping_impacts += hit.slipped;
                     x[0] = 0;
-                    if (std::fabs(hit.omega) < o.rest_velocity * alpha * p) {
+                    // As the rocking-only ODE runs (rest_threshold): below rest_velocity or
+                    // the solver's own accuracy, 10 atol, a rebound is noise.
+                    if (std::fabs(hit.omega) < rest_rate) {
                         // Lies flat: what moves on is G's velocity along the ground,
                         // unless below the same rest rule in velocity (alpha p R): a
                         // residue of 1e-13 m/s set the block slide-rocking, stopping
                         // and striking again without end (Zeno, at p = 1 on Norcia).
                         x[1] = 0;
                         x[3] = (xg + hit.p_t) / R;
-                        if (std::fabs(x[3]) < o.rest_velocity * alpha * p) x[3] = 0;
+                        if (std::fabs(x[3]) < rest_rate) x[3] = 0;
                         phase = Phase{Regime::rest, 0, 0};
                         const Start st = start_flat(block, A, x[3] * R);
                         set_phase(st);

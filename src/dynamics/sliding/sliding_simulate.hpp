@@ -29,8 +29,8 @@ struct SlidingOptions {
     double max_step_p = 0.1;   // the longest step, times p: events inside one are few
     bool free_rocking = true;  // follow the block after the input until it rests, falls or 200/p s pass
     double overturn_angle = M_PI / 2;
-    double rest_velocity = 1e-9;  // |theta'| below rest_velocity alpha p after an impact: the block lies flat,
-                                  // and its slip rate below rest_velocity alpha p R is 0
+    double rest_velocity = 1e-9;  // |theta'| below max(rest_velocity, 10 atol) alpha p after an impact: the
+                                  // block lies flat, and its slip rate below the same times R is 0
     long max_events = 1000000;    // a guard: beyond it, std::runtime_error (a second of events)
     std::string describe() const;
 };
