@@ -69,42 +69,45 @@ std::string response_panel(const Figure& fig, const studies::RecordAssessment& a
                                                                  " runs; shaded: the IDA's overturning intervals)")) << "\n"
        << "set x2label " << gp_text(typographic_quotes("the record's scale factor (q / the record's q = " + g4(a.q_record) + ")")) << "\n"
        << "set ylabel 'max |θ|/α during the input'\n";
-    int objects = 0, arrows = 0, labels = 0;
+    int objects = 0, arrows = 0;
     for (const studies::IdaInterval& in : a.ida.intervals)
         gp << "set object " << ++objects << " rect from " << gp_number(std::max(in.from, q_lo)) << ", graph 0 to "
            << gp_number(std::min(in.to, q_hi)) << ", graph 1 fc rgb '#e06060' fs transparent solid 0.3 noborder behind\n";
     gp << "set arrow " << ++arrows << " from graph 0, first 1 to graph 1, first 1 nohead dt 3 lc rgb 'gray40'\n";
     gp << "set arrow " << ++arrows << " from graph 0, first " << gp_number(y.top) << " to graph 1, first "
        << gp_number(y.top) << " nohead lc rgb 'gray60'\n";
-    // The check's two q's and the model's two scale factors, each labelled
-    // on its line; labels step up the panel, since the record's q and eq.
-    // 27's may lie a fraction of a percent apart.
-    std::vector<Line> lines = {{a.q_record, "the record: q = " + g4(a.q_record), "lw 2 lc rgb 'black'"},
+    // The check's two q's and the model's two, each a line named in the
+    // panel's own key (q and the scale factor alike): labels on the lines
+    // crossed each other where the record's q and eq. 27's lie 0.3 % apart.
+    std::vector<Line> lines = {{a.q_record, "the record: q = " + g4(a.q_record) + " (x1)", "lw 2 lc rgb '#1f5fbf'"},
                                {a.q_eq27, "eq. 27: q = " + g4(a.q_eq27), "lw 2 dt 2 lc rgb '#d07000'"}};
     if (a.ida.first_overturning.collapsed)
-        lines.push_back({a.ida.first_overturning.q, "first overturning: x" + g4(a.scale_first_overturning),
+        lines.push_back({a.ida.first_overturning.q, "first overturning: q = " + g4(a.ida.first_overturning.q) + " (x" +
+                                                        g4(a.scale_first_overturning) + ")",
                          "lw 2 lc rgb '#b00000'"});
     if (a.ida.first_robust_collapse.collapsed)
-        lines.push_back({a.ida.first_robust_collapse.q, "first robust collapse: x" + g4(a.scale_first_robust),
+        lines.push_back({a.ida.first_robust_collapse.q, "first robust collapse: q = " + g4(a.ida.first_robust_collapse.q) +
+                                                            " (x" + g4(a.scale_first_robust) + ")",
                          "lw 2 dt 3 lc rgb '#600000'"});
-    int drawn = 0;
-    for (const Line& l : lines) {
-        if (!(l.q >= q_lo && l.q <= q_hi)) continue;  // eq. 27's q can lie off the IDA's range
-        gp << "set arrow " << ++arrows << " from " << gp_number(l.q) << ", graph 0 to " << gp_number(l.q)
-           << ", graph 1 nohead " << l.style << " front\n";
-        gp << "set label " << ++labels << " " << gp_text(l.label) << " at " << gp_number(l.q) << ", graph "
-           << g4(0.08 + 0.12 * drawn++) << " left offset 0.4,0 front font ',10' boxed\n";
+    std::string keyed;
+    for (Line& l : lines) {
+        if (l.q >= q_lo && l.q <= q_hi)
+            gp << "set arrow " << ++arrows << " from " << gp_number(l.q) << ", graph 0 to " << gp_number(l.q)
+               << ", graph 1 nohead " << l.style << " back\n";  // under the opaque key
+        else l.label += " (off the axis)";  // eq. 27's q can lie off the IDA's range
+        keyed += ", NaN with lines " + l.style + " title " + gp_text(l.label);
     }
     char margin[40];
     std::snprintf(margin, sizeof margin, std::fabs(100 * a.margin) < 1e5 ? "%+.1f %%" : "%+.3g %%", 100 * a.margin);
     const std::string verdict = std::string("eq. 27 check ") + (a.passes ? "PASSES" : "FAILS") + " (margin " + margin +
                                 "); the model: the record " + (a.overturns ? "overturns" : "does not overturn") +
                                 " the block";
-    gp << "set style textbox opaque noborder\nset title " << gp_text(verdict) << " offset 0,0.2\n"
+    gp << "set title " << gp_text(verdict) << " offset 0,0.2\n"
+       << "set key top left opaque box lc rgb 'gray80' font ',9' samplen 2 spacing 1\n"
        << "plot $response using 1:($3 != 0 ? 1/0 : ($2 > " << gp_number(y.lo) << " ? $2 : " << gp_number(y.lo)
        << ")) with lines lw 2 lc rgb 'black' notitle, $response using 1:($3 != 0 ? " << gp_number(2 * y.top)
-       << " : 1/0) with points pt 7 ps 0.5 lc rgb '#c00000' notitle\n";
-    // The spectrum's panels set their own tics; the top axis here is the scale's.
+       << " : 1/0) with points pt 7 ps 0.5 lc rgb '#c00000' notitle" << keyed << "\n";
+    // The spectrum's panels set their own tics and key; the top axis here is the scale's.
     gp << "unset x2tics\nunset label\nunset arrow\nunset object\nunset title\n";
     return gp.str();
 }
