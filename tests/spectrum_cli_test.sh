@@ -69,7 +69,7 @@ expect "text intervals"        0 $'alpha = 0.2: overturns for p (rad/s) in (H: t
 expect "text states the limit" 0 "islands narrower than half a step (x1.01164) may be missed" "${run[@]}" --alpha 0.1
 expect "text names Table 1"    0 "Table 1's search (p from 0.3 by x1.01, the first collapse): p = 2.022946 rad/s" "${run[@]}" --alpha 0.1
 expect "text: confirmed"       0 "from: confirmed; to: confirmed" "${run[@]}" --alpha 0.1
-expect "no lift said"          0 "alpha = 0.5: the record never lifts the block (PGA 0.2764 g <= alpha)" "${run[@]}" --alpha 0.5 --points 10
+expect "no lift said"          0 "alpha = 0.5: the record never lifts the block (PGA 0.2764 g <= the uplift threshold alpha g)" "${run[@]}" --alpha 0.5 --points 10
 out=$("${run[@]}" --alpha 0.1,0.2,0.5 --points 30 2>&1)
 if [[ "$out" == *nan* || "$out" == *inf* ]]; then echo "FAIL: nan or inf in the text: $out"; fail=1; else echo "ok: no nan or inf in the text"; fi
 # The threads change the time, never a byte (one alpha a job, in the given order).

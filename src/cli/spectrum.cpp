@@ -173,12 +173,12 @@ void print_text(const std::string& path, const records::Record& r, const Spectru
     for (const Study& s : studies) {
         const Spectrum& sp = s.spectrum;
         if (!sp.lifts)
-            std::printf("alpha = %g: the record never lifts the block (PGA %.4f g <= alpha): no p overturns it\n",
+            std::printf("alpha = %.7g: the record never lifts the block (PGA %.4f g <= the uplift threshold alpha g): no p overturns it\n",
                         sp.alpha, r.pga() / dynamics::kGravity);
         else if (sp.intervals.empty())
-            std::printf("alpha = %g: no overturning for p from %g to %g rad/s on the grid\n", sp.alpha, o.p_min, o.p_max);
+            std::printf("alpha = %.7g: no overturning for p from %g to %g rad/s on the grid\n", sp.alpha, o.p_min, o.p_max);
         else {
-            std::printf("alpha = %g: overturns for p (rad/s) in (H: the heights of the blocks of this alpha at its ends)\n", sp.alpha);
+            std::printf("alpha = %.7g: overturns for p (rad/s) in (H: the heights of the blocks of this alpha at its ends)\n", sp.alpha);
             for (std::size_t i = 0; i < sp.intervals.size(); ++i) {
                 if (sp.refined && i == kIntervalsShown) {
                     std::printf("  ... %zu more intervals (--json or --output lists every one)\n", sp.intervals.size() - i);
