@@ -87,6 +87,21 @@ py::dict nearest_side(const studies::SpectrumFirst& f, double height) {
     return d;
 }
 
+void friction_into(const py::object& value, const py::object& restitution, records::CollapseOptions& model) {
+    if (value.is_none()) return;
+    double mu;
+    try {
+        mu = number(Real{value}, "friction");
+    } catch (const py::type_error&) {
+        throw py::type_error("friction: expected a number in (0, 1e6], got " + std::string(py::str(py::type::of(value).attr("__name__"))));
+    }
+    if (!(mu > 0 && mu <= 1e6)) refuse("friction: the friction coefficient must be in (0, 1e6] (got " + significant(mu, 17) + ")");
+    if (!restitution.is_none() && !py::isinstance<py::str>(restitution))
+        refuse("restitution: does not apply with friction (the sliding-rocking model's impacts follow from impulse and "
+               "momentum)");
+    model.friction = mu;
+}
+
 void restitution_into(const py::object& value, records::CollapseOptions& model) {
     const double e = restitution_argument(value);
     model.housner_restitution = std::isnan(e);

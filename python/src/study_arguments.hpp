@@ -49,5 +49,9 @@ py::dict nearest_side(const studies::SpectrumFirst& f, double height);
 
 // restitution=E|"housner" into a study's model, as the command line's --restitution.
 void restitution_into(const py::object& value, records::CollapseOptions& model);
+// friction=MU (None: no sliding) into a study's model, as --friction: in
+// (0, 1e6], refused beside a numeric restitution (the sliding-rocking
+// model's impacts follow from impulse and momentum).
+void friction_into(const py::object& value, const py::object& restitution, records::CollapseOptions& model);
 
 }  // namespace rocking::python

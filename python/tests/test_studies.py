@@ -228,3 +228,23 @@ def test_study_arguments_are_checked():
         rq.fragility([r], alpha=0.1, p=2, jobs=0)
     with pytest.raises(TypeError, match="^records: expected a list of records"):
         rq.fragility(r, alpha=0.1, p=2)
+
+
+def test_friction_puts_the_studies_on_the_sliding_model(tmp_path):
+    # friction=MU as --friction MU (issue 41): the same intervals, fit and
+    # first overturning as the command line's, and its refusals.
+    r = rq.record_synth(stochastic=3, dt=0.01, duration=15)
+    path = tmp_path / "s.txt"
+    np.savetxt(path, np.asarray(r.accel), fmt="%.17g")  # one column, m/s^2, read back bit for bit
+    s = rq.spectrum(r, alpha=0.1, points=30, p_min=1, p_max=10, friction=0.4)
+    c = cli("spectrum", path, "--unit", "m/s2", "--dt", r.dt, "--alpha", 0.1, "--points", 30, "--p-min", 1,
+            "--p-max", 10, "--friction", 0.4)
+    assert "Coulomb friction mu = 0.4" in s["model"] and s["model"] == c["model"]
+    assert [(i["from"], i["to"]) for i in s["spectra"][0]["intervals"]] == \
+        [(i["from"], i["to"]) for i in c["spectra"][0]["intervals"]]
+    a = rq.assess(r, alpha=0.1, p=6.5, friction=0.4, width=0.01)
+    assert a["records"][0]["first_overturning"]["found"] and "mu = 0.4" in a["model"]
+    with pytest.raises(ValueError, match="^restitution: does not apply with friction"):
+        rq.spectrum(r, alpha=0.1, friction=0.4, restitution=0.9)
+    with pytest.raises(ValueError, match=r"^friction: the friction coefficient must be in \(0, 1e6\] \(got 0\)"):
+        rq.fragility([r], alpha=0.1, p=2, friction=0)
