@@ -138,7 +138,8 @@ std::string panel(const Figure& fig, const BlockFragility& f, const studies::Fra
     std::vector<std::string> plots;
     if (f.fitted && f.bootstrapped)
         plots.push_back(curve + " using 1:3:4 with filledcurves fc rgb '#4060c0' fs transparent solid 0.2 noborder title " +
-                        gp_text(g4(100 * f.interval.level) + " % bootstrap band (caption)"));
+                        gp_text(g4(100 * f.interval.level) + " % bootstrap band, " +
+                                (refined(o) ? "first overturning" : "this fit")));
     if (f.fitted)
         plots.push_back(curve + " using 1:2 with lines lw 2 lc rgb '#2040a0' title " +
                         gp_text(fit_name(o) + ": " + fit_words(f.fit.median, f.fit.beta)));
@@ -149,7 +150,9 @@ std::string panel(const Figure& fig, const BlockFragility& f, const studies::Fra
         plots.push_back(curve + " using 1:6 with lines lw 2 dt 3 lc rgb '#008000' title " +
                         gp_text("stripes: " + fit_words(f.stripes.fit.median, f.stripes.fit.beta)));
     if (f.three_ways && !stripes.empty())
-        plots.push_back("$stripes" + id + " using 1:2 with points pt 5 ps 0.35 lc rgb '#70a070' title " + gp_text("stripes' mean share"));
+        // Grey, not the stripe fit's green: a newcomer read the two as one series.
+        plots.push_back("$stripes" + id + " using 1:2 with points pt 5 ps 0.35 lc rgb '#808080' title " +
+                        gp_text("stripes' mean share"));
     if (!empirical.empty())
         plots.push_back("$empirical" + id + " using 1:2 with points pt 7 ps 0.8 lc rgb 'black' title " +
                         gp_text("empirical (" + std::to_string(empirical.size()) + " overturned)"));
