@@ -232,10 +232,7 @@ int cmd_simulate(int argc, char** argv) {
                         input->peak(), model.equation == Equation::full ? "tan alpha" : "alpha", model.uplift_threshold());
         std::printf("  impacts: %d; overturns (free rocking included): %s%s\n", r.impacts, r.overturned ? "yes" : "no",
                     when.c_str());
-        std::printf("  final-rotation: %s; peak-rotation: %s; overturning: %s\n",
-                    r.collapse(Criterion::final_rotation, alpha) ? "collapse" : "safe",
-                    r.collapse(Criterion::peak_rotation, alpha) ? "collapse" : "safe",
-                    r.collapse(Criterion::overturning, alpha) ? "collapse" : "safe");
+        print_criteria(r, alpha);
     }
     return 0;
 }

@@ -28,6 +28,14 @@ std::string model_text(double mu) {
 
 }  // namespace
 
+void print_criteria(const dynamics::SimulationResult& r, double alpha) {
+    using dynamics::Criterion;
+    std::printf("  final-rotation: %s; peak-rotation: %s; overturning: %s\n",
+                r.collapse(Criterion::final_rotation, alpha) ? "collapse" : "safe",
+                r.collapse(Criterion::peak_rotation, alpha) ? "collapse" : "safe",
+                r.collapse(Criterion::overturning, alpha) ? "collapse" : "safe");
+}
+
 int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::GroundInput& input,
                       dynamics::Criterion criterion, double mu) {
     using namespace dynamics;
@@ -91,10 +99,7 @@ int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::Gr
                 r.friction_loss, r.impact_loss, r.balance_error);
     std::printf("  overturns (free rocking included): %s%s\n", r.overturned ? "yes" : "no",
                 r.overturned ? (" (at t = " + significant(r.t_overturn, 10) + " s)").c_str() : "");
-    std::printf("  final-rotation: %s; peak-rotation: %s; overturning: %s\n",
-                r.collapse(Criterion::final_rotation, alpha) ? "collapse" : "safe",
-                r.collapse(Criterion::peak_rotation, alpha) ? "collapse" : "safe",
-                r.collapse(Criterion::overturning, alpha) ? "collapse" : "safe");
+    print_criteria(r.as_rocking(), alpha);
     return 0;
 }
 

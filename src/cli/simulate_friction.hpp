@@ -8,6 +8,9 @@
 
 namespace rocking::cli {
 
+// The line that gives a run's outcome under each of the three criteria.
+void print_criteria(const dynamics::SimulationResult& r, double alpha);
+
 // Runs the block on the input with friction mu and prints the result (text
 // or --json); the tolerances from --rtol and --atol.
 int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::GroundInput& input,

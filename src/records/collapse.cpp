@@ -62,19 +62,7 @@ SimulationResult sliding_run(const GroundInput& input, double alpha, double p, c
     sliding::SlidingOptions o;
     o.rtol = o.atol_alpha = options.sliding_rtol;
     o.free_rocking = free_rocking;
-    const sliding::SlidingResult r = sliding::simulate_sliding(block, input, o);
-    SimulationResult out;
-    out.t_fin = r.t_fin;
-    out.theta_at_tfin = r.theta_at_tfin;
-    out.max_abs_theta_input = r.max_abs_theta_input;
-    out.uplifted = r.uplifted;
-    out.overturned = r.overturned;
-    out.overturned_during_input = r.overturned_during_input;
-    out.t_overturn = r.t_overturn;
-    out.impacts = r.impacts;
-    out.steps = r.steps;
-    out.rhs_evaluations = r.rhs_evaluations;
-    return out;
+    return sliding::simulate_sliding(block, input, o).as_rocking();
 }
 
 SimulationResult run_block(const GroundInput& input, double alpha, double p, const CollapseOptions& options,

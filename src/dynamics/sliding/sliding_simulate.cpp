@@ -137,14 +137,19 @@ std::string SlidingOptions::describe() const {
     return text;
 }
 
-bool SlidingResult::collapse(Criterion c, double alpha) const {
-    if (overturned_during_input) return true;
-    switch (c) {
-        case Criterion::final_rotation: return std::fabs(theta_at_tfin) >= alpha;
-        case Criterion::peak_rotation: return max_abs_theta_input >= alpha;
-        case Criterion::overturning: return overturned;
-    }
-    return false;
+SimulationResult SlidingResult::as_rocking() const {
+    SimulationResult out;
+    out.t_fin = t_fin;
+    out.theta_at_tfin = theta_at_tfin;
+    out.max_abs_theta_input = max_abs_theta_input;
+    out.uplifted = uplifted;
+    out.overturned = overturned;
+    out.overturned_during_input = overturned_during_input;
+    out.t_overturn = t_overturn;
+    out.impacts = impacts;
+    out.steps = steps;
+    out.rhs_evaluations = rhs_evaluations;
+    return out;
 }
 
 SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& input, const SlidingOptions& o) {

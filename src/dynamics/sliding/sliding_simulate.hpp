@@ -55,7 +55,9 @@ struct SlidingResult {
     double input_work = 0, friction_loss = 0, impact_loss = 0, final_energy = 0;
     double balance_error = 0;
     long steps = 0, rhs_evaluations = 0;
-    bool collapse(Criterion c, double alpha) const;
+    // In a rocking run's terms (what the searches and the criteria read).
+    SimulationResult as_rocking() const;
+    bool collapse(Criterion c, double alpha) const { return as_rocking().collapse(c, alpha); }
 };
 
 // Throws std::invalid_argument for a bad block or tolerances outside
