@@ -83,6 +83,33 @@ assert falls("--alpha", "0.1", "--p", "6.5", "--q", repr(ida["q"])), ida
 print("ok: %d spectrum boundaries and the IDA's first collapse (q %s) seen by simulate --friction" % (seen, ida["q"]))
 PY
 then :; else echo "FAIL: the studies with --friction"; fail=1; fi
+# Batch rows take a friction column: the same runs as the commands'.
+cat >"$tmp/m.csv" <<CSV
+kind,record,unit,alpha,p,friction,rtol
+simulate,s.txt,m/s2,0.1,6.5,0.4,
+collapse,s.txt,m/s2,0.1,,0.4,1e-10
+simulate,s.txt,m/s2,0.1,6.5,0,
+CSV
+printf 'kind,record,unit,alpha,p,friction,restitution\nsimulate,s.txt,m/s2,0.1,6.5,0.4,0.9\n' >"$tmp/m2.csv"
+"$rocking" batch "$tmp/m.csv" --output "$tmp/out.csv" >/dev/null 2>&1
+"$rocking" batch "$tmp/m2.csv" --output "$tmp/out2.csv" >/dev/null 2>&1
+"$rocking" simulate --record "$tmp/s.txt" --unit m/s2 --alpha 0.1 --p 6.5 --friction 0.4 --json >"$tmp/sim.json"
+"$rocking" collapse "$tmp/s.txt" --unit m/s2 --alpha 0.1 --friction 0.4 --rtol 1e-10 --json >"$tmp/col.json"
+if $py - "$tmp/out.csv" "$tmp/sim.json" "$tmp/col.json" <<'PY'
+import csv, json, sys
+rows = {int(r["line"]): r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#"))}
+sim, col = json.load(open(sys.argv[2])), json.load(open(sys.argv[3]))
+r = rows[2]
+assert r["status"] == "ok" and r["model_used"].startswith("sliding-rocking mu 0.4"), r
+assert float(r["max_theta"]) == sim["max_theta_input_over_alpha"] and int(r["impacts"]) == sim["impacts"], (r, sim)
+assert (r["collapse"] == "yes") == sim["collapse"], (r, sim)
+c = rows[3]
+assert c["status"] == "ok" and float(c["p_collapse"]) == col["p"] and float(c["p_safe"]) == col["p_safe"], (c, col)
+print("ok: batch friction rows are simulate's and collapse's runs")
+PY
+then :; else echo "FAIL: batch friction rows"; fail=1; fi
+check "a batch row's friction range" "friction: the friction coefficient must be in (0, 1e6] (got 0)" cat "$tmp/out.csv"
+check "a batch row refuses restitution with friction" "restitution: does not apply with friction" cat "$tmp/out2.csv"
 check "a study's check is named for friction" "the sliding-rocking run at rtol 1e-12" cat "$tmp/fr.json"
 check "a study refuses restitution with friction" "--restitution does not apply with --friction" \
     "$rocking" spectrum "$tmp/s.txt" --unit m/s2 --alpha 0.2 --friction 0.4 --restitution 0.9

@@ -385,6 +385,7 @@ lines are skipped; an empty cell takes the default of the command that runs that
   model, solver, rtol, atol, restitution, criterion   as the commands' options; every kind's
                     defaults are housner and overturning, as the commands' (simulate --paper's
                     setting: restitution 1, final-rotation)
+  friction          as --friction: the sliding-rocking model, without model, solver and restitution
   q_max, points, p_min, p_max, method, width, robust_width   as rocking fragility's options (ida)
                     and rocking spectrum's (spectrum)
   --jobs N          threads, 1 to 4096 (default: the cores this process may use; under mpirun one a

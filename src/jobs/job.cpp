@@ -28,7 +28,7 @@ const std::vector<std::string>& manifest_columns() {
     static const std::vector<std::string> names = {
         "id",   "kind",        "record",      "unit",   "record_dt", "alpha",     "p",      "height",
         "half_height", "scaling", "model", "solver", "rtol",      "atol",      "restitution", "criterion",
-        "q_max", "points",     "p_min",       "p_max",  "method",    "width",     "robust_width"};
+        "q_max", "points",     "p_min",       "p_max",  "method",    "width",     "robust_width", "friction"};
     return names;
 }
 
@@ -225,6 +225,18 @@ void model_from(const Columns& c, const std::vector<std::string>& row, Job& job)
         if (!(job.restitution >= 0 && job.restitution <= 1))
             bad("restitution", "must be in [0, 1] or housner (got " + e + ")");
     }
+    // As --friction (issue 41): the sliding-rocking model, which keeps its own
+    // equations, impact law and solver.
+    const std::string& mu = c.cell(row, "friction");
+    if (!mu.empty()) {
+        job.friction = number("friction", mu);
+        if (!(job.friction > 0 && job.friction <= 1e6))
+            bad("friction", "the friction coefficient must be in (0, 1e6] (got " + mu + ")");
+        for (const char* other : {"model", "solver", "restitution"})
+            if (!c.cell(row, other).empty())
+                bad(other, "does not apply with friction (the sliding-rocking model has its full equations, impact law "
+                           "and event-driven solver)");
+    }
     const std::string& criterion = c.cell(row, "criterion");
     job.criterion = dynamics::Criterion::overturning;
     if (!criterion.empty()) {
@@ -268,7 +280,7 @@ Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::
     job.kind = kind_from(c.cell(row, "kind"));
     for (const std::string& name : c.names()) {
         static const std::set<std::string> common = {"id",  "kind", "record", "unit", "record_dt", "alpha", "model",
-                                                     "solver", "rtol", "atol", "restitution", "criterion"};
+                                                     "solver", "rtol", "atol", "restitution", "criterion", "friction"};
         if (!c.cell(row, name).empty() && !common.count(name) && !own_columns(job.kind).count(name))
             bad(name, "does not apply to " + std::string(job.kind == Kind::ida ? "an " : "a ") + kind_name(job.kind) + " job (" + why_not(job.kind, name) + ")");
     }

@@ -66,6 +66,7 @@ struct Job {
     bool housner = false;                  // restitution 1 - 1.5 sin^2 alpha
     double restitution = 1;                // otherwise
     dynamics::Criterion criterion = dynamics::Criterion::final_rotation;
+    double friction = 0;                   // > 0: the sliding-rocking model (issue 41), rtol from the rtol column
     double q_max = 20;                     // ida
     int points = 0;                        // ida (q) and spectrum (p): the grid's points
     double p_min = 0.3, p_max = 30;        // spectrum, rad/s

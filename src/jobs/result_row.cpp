@@ -1,5 +1,7 @@
 #include "jobs/result_row.hpp"
 
+#include "records/collapse.hpp"
+
 #include "batch/manifest.hpp"
 #include "harness/table.hpp"
 
@@ -75,9 +77,18 @@ std::string result_row(int line, const std::vector<std::string>& echo, const Job
     std::vector<std::string> cells;
     cells.push_back(error.empty() ? "ok" : "error");
     if (job) {
-        cells.push_back(job->equation == dynamics::Equation::linearised ? "linearised" : "full");
-        cells.push_back(job->solver_text());
-        cells.push_back(harness::format_number(job->restitution_factor()));
+        // A friction row's model, solver and impacts are the sliding-rocking model's own.
+        if (job->friction > 0) {
+            cells.push_back("sliding-rocking mu " + harness::format_number(job->friction));
+            cells.push_back("event-driven dopri5 rtol " +
+                            harness::format_number(job->solver.rtol != dynamics::SolverOptions{}.rtol ? job->solver.rtol
+                                                                                                     : records::CollapseOptions{}.sliding_rtol));
+            cells.push_back("impulse and momentum");
+        } else {
+            cells.push_back(job->equation == dynamics::Equation::linearised ? "linearised" : "full");
+            cells.push_back(job->solver_text());
+            cells.push_back(harness::format_number(job->restitution_factor()));
+        }
         cells.push_back(dynamics::criterion_name(job->criterion));
         cells.push_back(job->block ? harness::format_number(job->block->p) : "");
     } else

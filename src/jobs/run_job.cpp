@@ -33,17 +33,23 @@ records::CollapseOptions search_model(const Job& job) {
     o.housner_restitution = job.housner;
     o.restitution = job.restitution;
     o.criterion = job.criterion;
+    o.friction = job.friction;
+    if (job.friction > 0 && job.solver.rtol != dynamics::SolverOptions{}.rtol) o.sliding_rtol = job.solver.rtol;
     return o;
 }
 
 Figures simulate(const Job& job, const SampledInput& input) {
-    dynamics::Model model;
-    model.equation = job.equation;
-    model.block = *job.block;
-    model.restitution = job.restitution_factor();
-    dynamics::SimulationOptions options;
-    options.solver = job.solver;
-    const dynamics::SimulationResult r = dynamics::simulate(model, input, options);
+    // A friction row runs as the searches run it (records::simulate_block), in a rocking run's terms.
+    const dynamics::SimulationResult r = [&] {
+        if (job.friction > 0) return records::simulate_block(input, job.alpha, job.block->p, search_model(job));
+        dynamics::Model model;
+        model.equation = job.equation;
+        model.block = *job.block;
+        model.restitution = job.restitution_factor();
+        dynamics::SimulationOptions options;
+        options.solver = job.solver;
+        return dynamics::simulate(model, input, options);
+    }();
     Figures f;
     f.collapse = r.collapse(job.criterion, job.alpha);
     f.max_theta = r.max_abs_theta_input / job.alpha;
