@@ -6,6 +6,9 @@
 
 #include "common.hpp"
 #include "dynamics/ground_input.hpp"
+#include "dynamics/sliding/sliding_simulate.hpp"
+#include "records/collapse.hpp"
+#include "study_arguments.hpp"
 #include "qfactor/superposition.hpp"
 
 namespace rocking::python {
@@ -46,6 +49,59 @@ std::unique_ptr<GroundInput> record_input(const records::Record& r, const std::o
     return std::make_unique<SampledInput>(std::move(g), r.dt, name + ")");
 }
 
+// simulate(friction=MU), as rocking simulate --friction --json (src/cli/simulate_friction.cpp).
+py::dict sliding_result(const dynamics::GivenBlock& given, const GroundInput& input, Criterion criterion,
+                        const records::CollapseOptions& m) {
+    const double alpha = given.alpha, p = given.block.p;
+    const sliding::FrictionBlock block{alpha, 3 * kGravity / (4 * p * p), m.friction};
+    sliding::SlidingOptions o;
+    o.rtol = o.atol_alpha = m.sliding_rtol;
+    sliding::SlidingResult r;
+    {
+        py::gil_scoped_release unlocked;
+        r = sliding::simulate_sliding(block, input, o);
+    }
+    py::dict out = result();
+    records::CollapseOptions stated = m;
+    stated.criterion = criterion;
+    out["model"] = stated.describe_model();
+    out["friction"] = m.friction;
+    add_block_members(out, given);
+    out["alpha"] = alpha;
+    out["p"] = p;
+    out["R_from_p"] = block.R;
+    out["input"] = text(input.describe());
+    out["solver"] = o.describe();
+    out["criterion"] = dynamics::criterion_name(criterion);
+    out["collapse"] = r.collapse(criterion, alpha);
+    out["t_fin"] = r.t_fin;
+    out["theta_tfin_over_alpha"] = r.overturned_during_input ? py::object(py::none()) : py::object(py::float_(r.theta_at_tfin / alpha));
+    out["max_theta_input_over_alpha"] = r.max_abs_theta_input / alpha;
+    out["overturned"] = r.overturned;
+    out["overturned_during_input"] = r.overturned_during_input;
+    out["t_overturn"] = std::isnan(r.t_overturn) ? py::object(py::none()) : py::object(py::float_(r.t_overturn));
+    out["impacts"] = r.impacts;
+    out["slipping_impacts"] = r.slipping_impacts;
+    out["slip_tfin_m"] = r.slip_at_tfin;
+    out["max_slip_m"] = r.max_abs_slip;
+    out["final_slip_m"] = r.final_slip;
+    out["rtol"] = o.rtol;
+    out["atol_rad"] = o.atol_alpha * alpha;
+    py::dict time_in, energy;
+    for (const char* name : {"rest", "slide", "rock", "slide_rock"}) time_in[name] = r.time_in[time_in.size()];
+    out["time_in"] = time_in;
+    energy["input_work"] = r.input_work;
+    energy["friction_loss"] = r.friction_loss;
+    energy["impact_loss"] = r.impact_loss;
+    energy["balance_error_over_gR"] = r.balance_error;
+    out["energy"] = energy;
+    for (Criterion c : {Criterion::final_rotation, Criterion::peak_rotation, Criterion::overturning})
+        out[py::str("collapse_" + std::string(c == Criterion::final_rotation ? "final_rotation"
+                                                : c == Criterion::peak_rotation ? "peak_rotation" : "overturning"))] =
+            r.collapse(c, alpha);
+    return out;
+}
+
 py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional<Real>& p_given,
                      const std::optional<Real>& half_height_given, const std::optional<Real>& height_given,
                      const std::optional<Real>& thickness_given, const std::optional<Whole>& which_case,
@@ -57,7 +113,7 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
                      const std::optional<Real>& rtol_given, const std::optional<Real>& atol_given,
                      const std::optional<Text>& criterion_given, const py::object& restitution_given,
                      const Flag& paper_given, const std::optional<Real>& dt_given, const Real& free_time_given,
-                     const std::optional<Text>& floor_given, const py::kwargs& extra) {
+                     const std::optional<Text>& floor_given, const py::object& friction_given, const py::kwargs& extra) {
     no_other_keywords(extra, "simulate", "simulate");
     // Each argument converted, or refused naming it, in the signature's order.
     const dynamics::GivenBlock given = block_argument(thickness_given, height_given, half_height_given, alpha_given, p_given);
@@ -173,6 +229,17 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
         if (has) culprits += std::string(", ") + name;
     if (kept) culprits += ", record " + label_of(*kept);
 
+    if (!friction_given.is_none()) {
+        if (model_name != "linearised" || solver || !restitution_given.is_none() || paper || atol)
+            refuse("friction: model, solver, restitution, paper and atol do not apply with it (the sliding-rocking "
+                   "model has its full equations, impact law and event-driven solver, at one tolerance, rtol)");
+        records::CollapseOptions sliding;
+        friction_into(friction_given, restitution_given, sliding);
+        if (rtol) sliding.sliding_rtol = *rtol;
+        if (kept) input = record_input(*kept, scaled_to);
+        refuse_unresolvable_run(model.block.p, input->t_end(), culprits);
+        return sliding_result(given, *input, criterion, sliding);
+    }
     SimulationResult r;
     std::string too_many_rows;
     {
@@ -247,7 +314,7 @@ void init_dynamics(py::module_& m) {
           "to"_a = py::none(), "x"_a = py::none(), "pga"_a = py::none(), "q"_a = py::none(), "rd"_a = py::none(),
           "one_sine"_a = false, "ap"_a = py::none(), "wp"_a = py::none(), "record"_a = py::none(),
           "model"_a = "linearised", "solver"_a = py::none(), "rtol"_a = py::none(), "atol"_a = py::none(),
-          "criterion"_a = py::none(), "restitution"_a = py::none(), "paper"_a = false, "dt"_a = 0.01, "free_time"_a = 0.0, "floor"_a = py::none(),
+          "criterion"_a = py::none(), "restitution"_a = py::none(), "paper"_a = false, "dt"_a = 0.01, "free_time"_a = 0.0, "floor"_a = py::none(), "friction"_a = py::none(),
           R"(`rocking simulate --json`: one block under a pulse train, a one-sine pulse or a record.
 
 Geometry: thickness and height (m, full dimensions: alpha = atan(B/H), eqs. 2, 4), or alpha with
@@ -262,7 +329,9 @@ rtol, atol (rad); criterion "final-rotation" | "peak-rotation" | "overturning"; 
 factor or "housner".  dt: theta(t) every dt seconds as t, theta, omega (rad, rad/s) and
 theta_over_alpha, omega_over_alpha_p (as --output; None: no record of theta(t), as simulate
 without --output: the record kernel then runs, whose last digits may differ), free_time: seconds
-of free rocking after t_fin to keep.  Releases the GIL.)");
+of free rocking after t_fin to keep.  friction=MU: the sliding-rocking model (docs/sliding.md), as
+rocking simulate --friction MU --json: the slip, the time in each regime and the energy balance;
+no theta(t), and without model, solver, restitution, paper and atol.  Releases the GIL.)");
     m.def(
         "block",
         [](const std::optional<Real>& alpha, const std::optional<Real>& p, const std::optional<Real>& half_height,

@@ -108,3 +108,18 @@ def test_errors_are_the_command_line_s():
     with pytest.raises(ValueError) as e:
         rq.simulate(alpha=0.15, p=2, case=2, x=0.5, rd=0.9, model="full", solver="exact")
     assert str(e.value) == message
+
+
+def test_friction_is_simulate_friction_json():
+    # simulate(friction=MU) as rocking simulate --friction MU --json (issue 41): every field
+    # the same, and its refusals.
+    args = dict(train=[(1, 1), (-1, 1)], to=0.3, pga=0.3, alpha=0.2, height=3)
+    s = rq.simulate(friction=0.6, **args)
+    c = cli("simulate", "--train", "1:1,-1:1", "--to", 0.3, "--pga", 0.3, "--alpha", 0.2, "--height", 3,
+            "--friction", 0.6)
+    assert set(s) == set(c) and all(s[k] == c[k] for k in c), [k for k in c if s.get(k) != c[k]]
+    assert "Coulomb friction mu = 0.6" in s["model"] and s["energy"]["balance_error_over_gR"] < 1e-8
+    with pytest.raises(ValueError, match="^friction: model, solver, restitution, paper and atol do not apply"):
+        rq.simulate(friction=0.6, restitution=0.9, **args)
+    with pytest.raises(ValueError, match=r"^friction: the friction coefficient must be in \(0, 1e6\]"):
+        rq.simulate(friction=-1, **args)

@@ -155,6 +155,9 @@ int cmd_simulate(int argc, char** argv) {
                 throw UsageError(std::string(f) + " does not apply with --friction: the sliding-rocking model has its "
                                  "full equations, its impact law and its event-driven solver");
         if (paper) throw UsageError("--paper does not apply with --friction (the paper's block does not slide)");
+        if (has("--atol"))
+            throw UsageError("--atol does not apply with --friction: its runs take one tolerance, --rtol, on every state "
+                             "variable (in units of alpha)");
         refuse_unresolvable_run(model.block.p, input->t_end(), a, {"--record-dt", "--to", "--x", "--p", "--height"},
                                 has("--record") ? a.values.at("--record") : "the input");
         return simulate_friction(a, given, *input, criterion, friction_option(a));

@@ -20,10 +20,14 @@ namespace {
 
 using dynamics::sliding::Regime;
 
-std::string model_text(double mu) {
-    return "full equations on a base with Coulomb friction mu = " + significant(mu, 6) +
-           ": rest, slide, rock and slide-rock (Shenton and Jones 1991), impacts without rebound, the new corner "
-           "stuck (Housner's restitution) or slipping (friction impulse mu p_n)";
+// The searches' words for the model (records::CollapseOptions), so that a
+// run and a study on it read alike.
+std::string model_text(double mu, dynamics::Criterion criterion, double rtol) {
+    records::CollapseOptions m;
+    m.friction = mu;
+    m.criterion = criterion;
+    m.sliding_rtol = rtol;
+    return m.describe_model();
 }
 
 }  // namespace
@@ -54,7 +58,7 @@ int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::Gr
     auto regime_time = [&](Regime k) { return r.time_in[static_cast<int>(k)]; };
     if (a.json) {
         auto b = [](bool v) { return v ? "true" : "false"; };
-        std::cout << "{\"model\": " << json_string(model_text(mu)) << ", \"friction\": " << json_number(mu)
+        std::cout << "{\"model\": " << json_string(model_text(mu, criterion, o.rtol)) << ", \"friction\": " << json_number(mu)
                   << ", \"alpha\": " << json_number(alpha) << ", \"p\": " << json_number(p)
                   << ", \"R_from_p\": " << json_number(block.R) << ", " << block_json(given)
                   << ", \"input\": " << json_string(input.describe()) << ", \"solver\": " << json_string(o.describe())
@@ -81,7 +85,7 @@ int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::Gr
         return 0;
     }
     std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
-    std::printf("  model:  %s\n  block:  %s; R = 3 g/(4 p^2) = %s m\n  input:  %s\n  solver: %s\n", model_text(mu).c_str(),
+    std::printf("  model:  %s\n  block:  %s; R = 3 g/(4 p^2) = %s m\n  input:  %s\n  solver: %s\n", model_text(mu, criterion, o.rtol).c_str(),
                 describe_block(given).c_str(), significant(block.R, 6).c_str(), input.describe().c_str(),
                 o.describe().c_str());
     if (r.overturned_during_input)
