@@ -372,6 +372,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
     no_other_keywords(extra, "assess", "assess");
     const dynamics::GivenBlock given = block_argument(thickness, height, half_height, alpha_given, p_given);
     const double alpha = given.alpha;
+    const std::string size_name = height ? "height" : half_height ? "half_height" : "p";  // what set the block's p
     studies::AssessOptions o;
     restitution_into(restitution, o.model);
     friction_into(friction, restitution, o.model);
@@ -380,7 +381,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
     if (!studies::in_search_alpha_range(alpha))
         refuse("the block's alpha, " + significant(alpha, 6) + " rad, is outside the searches' " + studies::kSearchAlphaRange);
     if (!studies::in_search_p_range(given.block.p))
-        refuse(std::string(height ? "height" : half_height ? "half_height" : "p") + ": the block's p, " +
+        refuse(size_name + ": the block's p, " +
                significant(given.block.p, 6) + " rad/s, is outside the searches' " + studies::kSearchPRange);
     // One record (a Record or a path) or a list of them.
     std::vector<RecordPtr> held;
@@ -395,7 +396,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         inputs.push_back(std::make_unique<dynamics::SampledInput>(r->in_g(dynamics::kGravity), r->dt, r->name));
         const studies::Refusal refused = studies::refusal_of(*inputs.back(), motions.back(), studies::BlockShape{alpha, given.block.p});
         if (refused.blame == studies::Refusal::Blame::block)
-            refuse(std::string(height ? "height" : half_height ? "half_height" : "p") + ": " + refused.why);
+            refuse(size_name + ": " + refused.why);
         if (refused.blame == studies::Refusal::Blame::record) throw std::invalid_argument(label_of(*r) + ": " + refused.why);
         refuse_unresolvable_run(o.spectrum_options(given.block.p).p_max, inputs.back()->t_end(), "record " + label_of(*r));
         views.push_back(inputs.back().get());

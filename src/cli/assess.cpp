@@ -171,6 +171,8 @@ int cmd_assess(int argc, char** argv) {
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(argc, argv, first, allowed);
     const GivenBlock given = block_option(a);
+    // The option that set the block's p, for the refusals of a p no search reads.
+    const std::string size_flag = a.values.count("--height") ? "--height" : a.values.count("--half-height") ? "--half-height" : "--p";
     // The plot is the check on one record: its response scaled and its spectrum.
     if (a.values.count("--png") && files.size() != 1)
         throw UsageError("--png draws the check on one record: give one FILE (fragility --png draws several)");
@@ -188,7 +190,7 @@ int cmd_assess(int argc, char** argv) {
         throw UsageError("the block's alpha, " + significant(alpha, 6) + " rad, is outside the searches' " +
                          studies::kSearchAlphaRange);
     if (!studies::in_search_p_range(given.block.p))
-        throw UsageError(std::string(a.values.count("--height") ? "--height" : a.values.count("--half-height") ? "--half-height" : "--p") +
+        throw UsageError(size_flag +
                          ": the block's p, " + significant(given.block.p, 6) + " rad/s, is outside the searches' " +
                          studies::kSearchPRange);
     std::vector<records::Record> records;
@@ -202,7 +204,7 @@ int cmd_assess(int argc, char** argv) {
         inputs.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(dynamics::kGravity), r.dt, r.name));
         const studies::Refusal refused = studies::refusal_of(*inputs.back(), motions.back(), studies::BlockShape{alpha, given.block.p});
         if (refused.blame == studies::Refusal::Blame::block)
-            throw UsageError(std::string(a.values.count("--height") ? "--height" : a.values.count("--half-height") ? "--half-height" : "--p") +
+            throw UsageError(size_flag +
                              ": " + refused.why);
         if (refused.blame == studies::Refusal::Blame::record) throw std::runtime_error(path + ": " + refused.why);
         refuse_unresolvable_run(o.spectrum_options(given.block.p).p_max, inputs.back()->t_end(), a, {"--dt"}, path);
