@@ -6,7 +6,7 @@ JOBS    ?= 2
 # OpenMPI for rocking batch under mpirun: the build works without it, on threads only).
 PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath libopenmpi-dev openmpi-bin
 
-.PHONY: all deps build reproduce test bless bench bench-records bench-spectrum bench-fragility bench-overturning-set bench-batch report clean
+.PHONY: all deps build reproduce test bless bench bench-records bench-spectrum bench-fragility bench-overturning-set bench-batch bench-sliding report clean
 
 all: build
 
@@ -78,6 +78,12 @@ bench-fragility: build
 bench-overturning-set: build
 	cmake --build $(BUILD) --target bench_overturning_set -j $(JOBS)
 	$(BUILD)/bench_overturning_set --out $(OUT)/bench
+
+# The sliding-rocking run's cost against the rocking-only full model (a benchmark, not a
+# test; issue 41): out/bench/sliding.txt and sliding_records.csv.
+bench-sliding: build
+	cmake --build $(BUILD) --target bench_sliding -j $(JOBS)
+	$(BUILD)/bench_sliding --out $(OUT)/bench
 
 # rocking batch's scale (a benchmark, not a test): jobs/s on 1 and 2 threads and 1-3 MPI ranks, the
 # coordination's cost, a model of 10^9 simulations: out/bench/batch.{txt,csv} (BATCH_BENCH_JOBS=N, default 10^6).
