@@ -55,14 +55,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    std::vector<std::string> files;
-    for (const char* sub : {"esm", "peer"}) {
-        const fs::path dir = fs::path(records) / sub;
-        if (!fs::is_directory(dir)) continue;
-        for (const auto& e : fs::directory_iterator(dir))
-            if (e.is_regular_file()) files.push_back(e.path().string());
-    }
-    std::sort(files.begin(), files.end());
+    const std::vector<std::string> files = scenes::record_files(records);
     if (files.empty()) {
         std::fprintf(stderr, "bench_sliding: no records under %s/esm or /peer (the shared records folder, or --records DIR)\n",
                      records.c_str());

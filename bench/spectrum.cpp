@@ -131,14 +131,7 @@ int main(int argc, char** argv) {
     }
 
     // Every record of the folder: the target's run, and its boundaries.
-    std::vector<std::string> files;
-    for (const char* sub : {"esm", "peer"}) {
-        const fs::path dir = fs::path(records) / sub;
-        if (!fs::is_directory(dir)) continue;
-        for (const auto& e : fs::directory_iterator(dir))
-            if (e.is_regular_file()) files.push_back(e.path().string());
-    }
-    std::sort(files.begin(), files.end());
+    const std::vector<std::string> files = scenes::record_files(records);
     std::ofstream csv(out + "/spectrum_records.csv");
     csv << "# bench_spectrum: 5 alpha x 200 p, boundaries refined to 1e-6, no checks; one thread, fastest of 9;\n"
         << "# seconds: both grids (the default); seconds_main_grid: the issue's 200 p alone, no offset grid\n"

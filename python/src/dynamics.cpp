@@ -1,5 +1,6 @@
 // One block under a pulse train, a one-sine pulse or a record (rocking
 // simulate), and the block's geometry (eqs. 2, 4): src/dynamics.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -95,10 +96,11 @@ py::dict sliding_result(const dynamics::GivenBlock& given, const GroundInput& in
     energy["impact_loss"] = r.impact_loss;
     energy["balance_error_over_gR"] = r.balance_error;
     out["energy"] = energy;
-    for (Criterion c : {Criterion::final_rotation, Criterion::peak_rotation, Criterion::overturning})
-        out[py::str("collapse_" + std::string(c == Criterion::final_rotation ? "final_rotation"
-                                                : c == Criterion::peak_rotation ? "peak_rotation" : "overturning"))] =
-            r.collapse(c, alpha);
+    for (Criterion c : {Criterion::final_rotation, Criterion::peak_rotation, Criterion::overturning}) {
+        std::string key = "collapse_" + dynamics::criterion_name(c);  // collapse_final_rotation, as --json
+        std::replace(key.begin(), key.end(), '-', '_');
+        out[py::str(key)] = r.collapse(c, alpha);
+    }
     return out;
 }
 

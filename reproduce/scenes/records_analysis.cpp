@@ -96,14 +96,7 @@ RecordRow analyse(const std::string& root, const std::string& path, bool referen
 
 }  // namespace
 
-const std::vector<RecordRow>& shared_records(bool reference) {
-    static std::map<bool, std::vector<RecordRow>> cache;
-    static std::mutex mutex;
-    std::lock_guard<std::mutex> lock(mutex);
-    auto found = cache.find(reference);
-    if (found != cache.end()) return found->second;
-    std::vector<RecordRow>& rows = cache[reference];
-    const std::string root = records_dir();
+std::vector<std::string> record_files(const std::string& root) {
     std::vector<std::string> files;
     for (const char* sub : {"esm", "peer"}) {
         const fs::path dir = fs::path(root) / sub;
@@ -112,6 +105,18 @@ const std::vector<RecordRow>& shared_records(bool reference) {
             if (e.is_regular_file()) files.push_back(e.path().string());
     }
     std::sort(files.begin(), files.end());
+    return files;
+}
+
+const std::vector<RecordRow>& shared_records(bool reference) {
+    static std::map<bool, std::vector<RecordRow>> cache;
+    static std::mutex mutex;
+    std::lock_guard<std::mutex> lock(mutex);
+    auto found = cache.find(reference);
+    if (found != cache.end()) return found->second;
+    std::vector<RecordRow>& rows = cache[reference];
+    const std::string root = records_dir();
+    const std::vector<std::string> files = record_files(root);
     // One job a record on the batch engine, taken on demand (a record's cost
     // varies with how long blocks rock on it), delivered in the files' order.
     // The first failing record (in that order) is the error, as in one thread.

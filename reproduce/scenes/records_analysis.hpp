@@ -33,6 +33,9 @@ std::string g_text(double v);
 
 // The records folder: $ROCKING_RECORDS, else <source>/../shared/records.
 std::string records_dir();
+// The files of root's esm/ and peer/ (the records the scenes read), sorted by
+// path; empty where neither folder exists.
+std::vector<std::string> record_files(const std::string& root);
 // Every readable record in it, analysed (cached); empty when the folder is absent.
 const std::vector<RecordRow>& shared_records(bool reference);
 // The options of Table 1's collapse search (stated in every output).
