@@ -12,6 +12,9 @@ namespace rocking::dynamics {
 bool record_kernel_applies(const Model& model, const GroundInput& input, const SimulationOptions& options) {
     if (options.solver.kind != SolverKind::exact || !options.solver.record_kernel) return false;
     if (model.equation != Equation::linearised || options.record_dt > 0.0) return false;
+    // An imperfect block runs the general path: the kernel's bounds and
+    // increments are written for one alpha and p.
+    if (!model.symmetric()) return false;
     const auto* sampled = dynamic_cast<const SampledInput*>(&input);
     // Longer pieces are split by ExactStepper (max_step_p); the kernel keeps
     // to pieces it takes whole, as the general path does.

@@ -28,8 +28,8 @@
 namespace rocking::dynamics {
 
 // True when simulate() hands the run to the record kernel: exact solver with
-// options.solver.record_kernel on, linearised equation, a SampledInput whose
-// p dt <= 0.5, and no theta(t) record asked for (record_dt <= 0).
+// options.solver.record_kernel on, linearised equation, a symmetric block, a
+// SampledInput whose p dt <= 0.5, and no theta(t) record asked for (record_dt <= 0).
 bool record_kernel_applies(const Model& model, const GroundInput& input, const SimulationOptions& options);
 
 // The run itself (callers normally go through simulate()).

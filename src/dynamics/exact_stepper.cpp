@@ -56,14 +56,14 @@ public:
         t0_ = t1_;
         piece_ = input_.piece_at(t0_);
         if (!(piece_.t1 > t0_)) throw std::logic_error("exact solver: input piece ends at its start");
-        const double p = model_.block.p;
+        const double p = model_.p_on(sigma_);
         double h = std::min({t_stop_, piece_.t1}) - t0_;
         double h_max = options_.max_step_p / p;
         if (piece_.s != 0.0) h_max = std::min(h_max, options_.max_step_p / piece_.w);
         if (h > h_max) h = h_max;
         t1_ = (t0_ + h >= std::min(t_stop_, piece_.t1)) ? std::min(t_stop_, piece_.t1) : t0_ + h;
         // Coefficients of the closed form from the state at t0.
-        const double p2 = p * p, c = piece_.c0 - sigma_ * model_.block.alpha;
+        const double p2 = p * p, c = piece_.c0 - sigma_ * model_.alpha_on(sigma_);
         const double u0 = t0_ - piece_.t0;  // offset into the piece
         const double lin = c + piece_.c1 * u0;  // polynomial part at t0
         const double B = piece_.s != 0.0 ? -p2 * piece_.s / (p2 + piece_.w * piece_.w) : 0.0;
@@ -79,8 +79,9 @@ public:
         // (k+1) dt - k dt varies in its last bits: lengths within 8 ulps share
         // the cache, an error of 1e-15 relative, below the rounding of the step itself.
         const double hstep = t1_ - t0_;
-        if (std::fabs(hstep - cached_h_) > 8 * std::numeric_limits<double>::epsilon() * hstep) {
+        if (std::fabs(hstep - cached_h_) > 8 * std::numeric_limits<double>::epsilon() * hstep || p != cached_p_) {
             cached_h_ = hstep;
+            cached_p_ = p;
             cached_y_ = (p * hstep) * (p * hstep);
             closed_piece::series(cached_y_, cached_ch1_, cached_sh1_);
         }
@@ -96,7 +97,7 @@ public:
     // last before t_stop) is left as the step, with its closed form.
     void run_quiet_pieces() {
         const std::vector<double>& a = sampled_->samples();
-        const double dt = sampled_->dt(), p = model_.block.p, alpha = model_.block.alpha;
+        const double dt = sampled_->dt(), p = model_.p_on(sigma_), alpha = model_.alpha_on(sigma_);
         if (std::fabs((t1_ - t0_) - dt) > 8 * std::numeric_limits<double>::epsilon() * dt) return;
         // The increments of a whole piece (closed_piece::Closed::from_series).
         // k1 = cosh p dt - 1, sh = p sinh p dt, q_dt = (sinh p dt - p dt) / p.
@@ -159,7 +160,7 @@ public:
             omega = om0_;
             return;
         }
-        const double u = t - t0_, y = (model_.block.p * u) * (model_.block.p * u);
+        const double p = model_.p_on(sigma_), u = t - t0_, y = (p * u) * (p * u);
         double ch1, sh1;
         closed_piece::series(y, ch1, sh1);
         point_at(u, y, ch1, sh1, theta, omega);
@@ -170,7 +171,7 @@ private:
     // ch1 and sh1 as closed_piece::series): the increments of the header.
     void point_at(double u, double y, double ch1, double sh1, double& theta, double& omega) const {
         const closed_piece::Closed<double>::Point q =
-            closed_piece::Closed<double>{model_.block.p, th0_, om0_, C_, W_}.from_series(u, y, ch1, sh1);
+            closed_piece::Closed<double>{model_.p_on(sigma_), th0_, om0_, C_, W_}.from_series(u, y, ch1, sh1);
         theta = q.theta;
         omega = q.omega;
         if (B_ != 0.0) {
@@ -187,7 +188,7 @@ private:
     double theta_ = 0, omega_ = 0, t_stop_ = 0;
     int sigma_ = 1;
     double C_ = 0, W_ = 0, B_ = 0, ph_ = 0;  // the closed form's C, p D, B and phase at t0
-    double cached_h_ = -1, cached_y_ = 0, cached_ch1_ = 0.5, cached_sh1_ = 1.0 / 6;
+    double cached_h_ = -1, cached_p_ = 0, cached_y_ = 0, cached_ch1_ = 0.5, cached_sh1_ = 1.0 / 6;
     double th0_ = 0, om0_ = 0;
     const SampledInput* sampled_;
     bool batching_ = false;

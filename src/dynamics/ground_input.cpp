@@ -163,6 +163,47 @@ double GroundInput::first_above(double t, double t_end, double thr) const {
     return INFINITY;
 }
 
+double first_beyond(const GroundInput& input, double t, double t_end, double up, double down) {
+    auto beyond = [&](double a) { return a > up || -a > down; };
+    const double lower = std::min(up, down);
+    while (t < t_end) {
+        t = input.first_above(t, t_end, lower);  // nothing beyond either level before it
+        if (!(t < t_end)) return INFINITY;
+        const InputPiece piece = input.piece_at(t);
+        const double end = std::min(piece.t1, t_end);
+        const double a = piece.at(t);
+        if (beyond(a)) return t;
+        if (piece.s == 0.0) {
+            if ((a >= up && piece.c1 > 0.0) || (-a >= down && piece.c1 < 0.0)) return t;
+            double best = INFINITY;
+            if (piece.c1 != 0.0)
+                for (double target : {up, -down}) {
+                    const double tc = piece.t0 + (target - piece.c0) / piece.c1;
+                    if (tc > t && tc < end) best = std::min(best, tc);
+                }
+            if (best < end) return best;
+        } else {
+            const int n = 256;
+            double prev = t;
+            for (int k = 1; k <= n; ++k) {
+                const double tk = t + (end - t) * k / n;
+                const double ak = piece.at(tk);
+                if (beyond(ak)) {
+                    const double level = ak > 0 ? up : -down;
+                    auto f = [&](double s) { return piece.at(s) - level; };
+                    return numerics::root_of(f, prev, tk, f(prev), f(tk), 50);
+                }
+                prev = tk;
+            }
+        }
+        // This piece stays within the two levels: the next one, where
+        // first_above starts over (its quiet stretches skipped).
+        if (!(end > t)) return INFINITY;
+        t = end;
+    }
+    return INFINITY;
+}
+
 // The same walk on the raw samples: a piece whose two ends are below thr
 // cannot exceed it (a is linear in between), which skips a quiet stretch at
 // one comparison per sample.

@@ -80,6 +80,22 @@ double uplift_time(const GroundInput& input, double t, double t_end, double thr,
     return move_until(input.first_above(t, t_end, thr), t_end, [&](double s) { return std::fabs(at(s)) > thr; });
 }
 
+// The first time in [t, t_end) at which a/g > up or a/g < -down (up, down >
+// 0), or the crossing located in a piece (INFINITY when there is none): where
+// an imperfect block at rest can uplift, onto the corner +1 or -1.  Skips
+// with input.first_above(min(up, down)), then walks the pieces.
+double first_beyond(const GroundInput& input, double t, double t_end, double up, double down);
+
+// uplift_time for an imperfect block: a/g > up lifts it onto corner +1,
+// a/g < -down onto -1.
+template <class At>
+double uplift_time(const GroundInput& input, double t, double t_end, double up, double down, At at) {
+    return move_until(first_beyond(input, t, t_end, up, down), t_end, [&](double s) {
+        const double a = at(s);
+        return a > up || -a > down;
+    });
+}
+
 // A pulse train (amplitudes in PGA, durations in to) scaled to real units.
 class PulseInput : public GroundInput {
 public:

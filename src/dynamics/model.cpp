@@ -44,42 +44,68 @@ double housner_restitution(double alpha) {
 }
 
 double Model::uplift_threshold() const {
-    return equation == Equation::linearised ? block.alpha : std::tan(block.alpha);
+    const double alpha = alpha_min();
+    return equation == Equation::linearised ? alpha : std::tan(alpha);
 }
 
+double Model::uplift_threshold_on(int sigma) const {
+    const double alpha = alpha_on(sigma);
+    return equation == Equation::linearised ? alpha : std::tan(alpha);
+}
+
+// An imperfect block's corner rocks by the same equations with its own
+// alpha and p (the equations of docs/imperfect.md).
 double Model::acceleration(double theta, int sigma, double a_g) const {
-    const double p2 = block.p * block.p;
-    if (equation == Equation::linearised) return p2 * (a_g - sigma * block.alpha + theta);
-    const double u = sigma * block.alpha - theta;
+    const double p = p_on(sigma), alpha = alpha_on(sigma), p2 = p * p;
+    if (equation == Equation::linearised) return p2 * (a_g - sigma * alpha + theta);
+    const double u = sigma * alpha - theta;
     return p2 * (a_g * std::cos(u) - std::sin(u));
 }
 
 double Model::jerk(double theta, double omega, int sigma, double a_g, double a_rate) const {
-    const double p2 = block.p * block.p;
+    const double p = p_on(sigma), alpha = alpha_on(sigma), p2 = p * p;
     if (equation == Equation::linearised) return p2 * (omega + a_rate);
-    const double u = sigma * block.alpha - theta;
+    const double u = sigma * alpha - theta;
     return p2 * ((a_rate + omega) * std::cos(u) + a_g * omega * std::sin(u));
 }
 
 double Model::energy(double theta, double omega, int sigma) const {
-    const double p2 = block.p * block.p;
+    const double p = p_on(sigma), alpha = alpha_on(sigma), p2 = p * p;
     if (equation == Equation::linearised) {
-        const double d = theta - sigma * block.alpha;
+        const double d = theta - sigma * alpha;
         return 0.5 * omega * omega - 0.5 * p2 * d * d;
     }
-    return 0.5 * omega * omega + p2 * std::cos(sigma * block.alpha - theta);
+    return 0.5 * omega * omega + p2 * std::cos(sigma * alpha - theta);
 }
 
 double Model::barrier() const { return equation == Equation::linearised ? 0.0 : block.p * block.p; }
 
+double Model::barrier_on(int sigma) const {
+    const double p = p_on(sigma);
+    return equation == Equation::linearised ? 0.0 : p * p;
+}
+
 bool Model::may_overturn(double theta, double omega, int sigma) const {
-    return sigma * theta > block.alpha || energy(theta, omega, sigma) >= barrier();
+    if (sigma * theta > alpha_on(sigma) || energy(theta, omega, sigma) >= barrier_on(sigma)) return true;
+    if (symmetric()) return false;
+    // An imperfect block below its barrier comes back to theta = 0 and lands
+    // on the other corner, whose barrier may be lower: the rebound decides.
+    // Every later rebound is slower (each restitution <= 1, refused above).
+    const double p = p_on(sigma), alpha = alpha_on(sigma);
+    const double e = energy(theta, omega, sigma);
+    const double omega0_sq = equation == Equation::linearised ? 2 * e + p * p * alpha * alpha
+                                                              : 2 * (e - p * p * std::cos(alpha));
+    const double rebound = restitution_onto(-sigma) * std::sqrt(std::max(0.0, omega0_sq));
+    return energy(0.0, -sigma * rebound, -sigma) >= barrier_on(-sigma);
 }
 
 std::string Model::describe() const {
     std::ostringstream os;
     os << (equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1") << ", alpha = " << block.alpha
        << ", p = " << block.p << " rad/s, restitution " << restitution;
+    if (!symmetric())
+        os << "; imperfect, on theta < 0: alpha = " << minus.alpha << ", p = " << minus.p
+           << " rad/s, restitution onto it " << minus.restitution;
     return os.str();
 }
 

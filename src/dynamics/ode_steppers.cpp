@@ -63,9 +63,9 @@ struct RockingSystem {
         sigma = corner;
         t_stop = stop;
         const InputPiece piece = input->piece_from(t);
-        const double p2 = model->block.p * model->block.p, move = 1e-3 * model->block.alpha;
+        const double p = model->p_on(corner), p2 = p * p, move = 1e-3 * model->alpha_on(corner);
         const double a = std::fabs(piece.at(t)), rate = std::fabs(piece.rate(t));
-        double h = 1e-3 / model->block.p;
+        double h = 1e-3 / p;
         if (p2 * a * h * h > 2 * move) h = std::sqrt(2 * move / (p2 * a));
         if (p2 * rate * h * h * h > 6 * move) h = std::cbrt(6 * move / (p2 * rate));
         return std::min(std::max(h, 16 * std::numeric_limits<double>::epsilon() * std::fabs(t)), stop - t);
@@ -139,7 +139,7 @@ class Rkf78Stepper : public Stepper {
 public:
     Rkf78Stepper(const Model& model, const GroundInput& input, const SolverOptions& options)
         : options_(options),
-          controlled_(odeint::make_controlled(options.atol_alpha * model.block.alpha, options.rtol,
+          controlled_(odeint::make_controlled(options.atol_alpha * model.alpha_min(), options.rtol,
                                               odeint::runge_kutta_fehlberg78<State>())),
           sys_{&model, &input, &rhs_} {}
     void reset(double t, double theta, double omega, int sigma, double t_stop) override {
@@ -150,7 +150,7 @@ public:
     }
     bool advance() override {
         if (t1_ >= t_stop_) return false;
-        const double h_max = options_.max_step_p / sys_.model->block.p;
+        const double h_max = options_.max_step_p / sys_.model->p_max();
         x0_ = x_;
         t0_ = t1_;
         double t = t1_;
@@ -194,7 +194,7 @@ public:
         gsl_sys_ = {&GslStepper::rhs, nullptr, 2, &sys_};
         step_ = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
         probe_ = gsl_odeiv2_step_alloc(gsl_odeiv2_step_rk8pd, 2);
-        control_ = gsl_odeiv2_control_standard_new(options.atol_alpha * model.block.alpha, options.rtol, 1.0, 1.0);
+        control_ = gsl_odeiv2_control_standard_new(options.atol_alpha * model.alpha_min(), options.rtol, 1.0, 1.0);
         evolve_ = gsl_odeiv2_evolve_alloc(2);
     }
     ~GslStepper() override {
@@ -221,7 +221,7 @@ public:
     }
     bool advance() override {
         if (t1_ >= t_stop_) return false;
-        const double h_max = options_.max_step_p / sys_.model->block.p;
+        const double h_max = options_.max_step_p / sys_.model->p_max();
         y0_[0] = y_[0];
         y0_[1] = y_[1];
         t0_ = t1_;
@@ -267,7 +267,7 @@ private:
 std::unique_ptr<Stepper> make_exact_stepper(const Model&, const GroundInput&, const SolverOptions&);
 
 std::unique_ptr<Stepper> make_stepper(const Model& model, const GroundInput& input, const SolverOptions& options) {
-    const double atol = options.atol_alpha * model.block.alpha, h_max = options.max_step_p / model.block.p;
+    const double atol = options.atol_alpha * model.alpha_min(), h_max = options.max_step_p / model.p_max();
     if (options.kind != SolverKind::exact)
         for (double tol : {options.rtol, options.atol_alpha})
             if (!(tol >= kSmallestTolerance && tol < 1)) {
@@ -283,11 +283,11 @@ std::unique_ptr<Stepper> make_stepper(const Model& model, const GroundInput& inp
     // 1e150 g and never at 1e300 g.  Verified to 1e95 g (tests: to 1e80 g);
     // beyond p^2 PGA = 1e90 it is refused.  The other solvers hold to 1.7e306 g.
     if (options.kind == SolverKind::bulirsch_stoer &&
-        !(model.block.p * model.block.p * input.peak() <= 1e90)) {
+        !(model.p_max() * model.p_max() * input.peak() <= 1e90)) {
         char text[200];
         std::snprintf(text, sizeof text,
                       "bulirsch-stoer: p^2 PGA = %.3g (rad/s)^2 g is beyond its range, 1e90: use another solver",
-                      model.block.p * model.block.p * input.peak());
+                      model.p_max() * model.p_max() * input.peak());
         throw std::invalid_argument(text);
     }
     switch (options.kind) {

@@ -55,7 +55,7 @@ bool stop_after_input(const Model& model, const SimulationOptions& options, RunS
     if (!options.free_rocking || s.resting) return true;
     if (!model.may_overturn(static_cast<double>(s.theta), static_cast<double>(s.omega), s.sigma))
         return s.t >= s.t_limit;
-    s.t_limit = std::max(s.t_limit, t_fin + Real(kFreeRockingTimesP) / Real(model.block.p));
+    s.t_limit = std::max(s.t_limit, t_fin + Real(kFreeRockingTimesP) / Real(model.p_min()));
     return s.t >= s.t_limit;
 }
 
@@ -78,9 +78,12 @@ void end_of_input(RunState<Real>& s, SimulationResult& result, Real t_fin, NoteT
 template <class Real, class At, class RestUntil>
 bool lift_from_rest(RunState<Real>& s, SimulationResult& result, const Model& model, const GroundInput& input, At at,
                     Real t_fin, RestUntil rest_until) {
-    const Real tu = s.t < t_fin ? Real(uplift_time(input, static_cast<double>(s.t), static_cast<double>(t_fin),
-                                                   model.uplift_threshold(), at))
-                                : Real(INFINITY);
+    const Real tu = s.t >= t_fin ? Real(INFINITY)
+                    : model.symmetric()
+                        ? Real(uplift_time(input, static_cast<double>(s.t), static_cast<double>(t_fin),
+                                           model.uplift_threshold(), at))
+                        : Real(uplift_time(input, static_cast<double>(s.t), static_cast<double>(t_fin),
+                                           model.uplift_threshold_on(1), model.uplift_threshold_on(-1), at));
     if (tu >= t_fin) {
         rest_until(std::max(t_fin, s.t_limit));
         if (!s.recorded) {
@@ -138,9 +141,9 @@ void apply_impact(RunState<Real>& s, SimulationResult& result, const Model& mode
                   bool micro, Real rest) {
     s.t = t_impact;
     s.theta = 0.0;
-    s.omega = Real(model.restitution) * om_i;
     s.sigma = -s.sigma;
-    if (micro || std::fabs(s.omega) < rest * Real(model.block.alpha) * Real(model.block.p)) {
+    s.omega = Real(model.restitution_onto(s.sigma)) * om_i;
+    if (micro || std::fabs(s.omega) < rest * Real(model.alpha_on(s.sigma)) * Real(model.p_on(s.sigma))) {
         s.omega = 0.0;
         s.resting = true;
         ++result.rests;
@@ -153,7 +156,7 @@ void apply_impact(RunState<Real>& s, SimulationResult& result, const Model& mode
 template <class Real>
 __attribute__((always_inline)) inline void impact(RunState<Real>& s, SimulationResult& result, const Model& model,
                                                   const SimulationOptions& options, Real t_impact, Real om_i, Real rest) {
-    const bool micro = record_impact(result, t_impact, options, Real(model.block.p));
+    const bool micro = record_impact(result, t_impact, options, Real(model.p_max()));
     apply_impact(s, result, model, t_impact, om_i, micro, rest);
 }
 

@@ -28,11 +28,14 @@ Criterion parse_criterion(const std::string& name) {
     throw std::invalid_argument("unknown criterion '" + name + "' (final-rotation, peak-rotation, overturning)");
 }
 
-bool SimulationResult::collapse(Criterion c, double alpha) const {
+bool SimulationResult::collapse(Criterion c, double alpha, double alpha_minus) const {
     if (overturned_during_input) return true;
+    const bool imperfect = alpha_minus > 0;
     switch (c) {
-        case Criterion::final_rotation: return std::fabs(theta_at_tfin) >= alpha;
-        case Criterion::peak_rotation: return max_abs_theta_input >= alpha;
+        case Criterion::final_rotation:
+            return imperfect ? theta_at_tfin >= alpha || -theta_at_tfin >= alpha_minus : std::fabs(theta_at_tfin) >= alpha;
+        case Criterion::peak_rotation:
+            return imperfect ? peak_plus_input >= alpha || peak_minus_input >= alpha_minus : max_abs_theta_input >= alpha;
         case Criterion::overturning: return overturned;
     }
     return false;
@@ -55,7 +58,7 @@ double locate(F f, double a, double b) {
 }  // namespace
 
 double latest_run_time(const Model& model, const GroundInput& input, const SimulationOptions& options) {
-    const double free = options.free_rocking ? kFreeRockingTimesP / model.block.p : 0.0;
+    const double free = options.free_rocking ? kFreeRockingTimesP / model.p_min() : 0.0;
     return input.t_end() + std::max(options.free_record_time, free);
 }
 
@@ -101,10 +104,9 @@ public:
         : model_(model),
           input_(input),
           options_(options),
-          alpha_(model.block.alpha),
-          p_(model.block.p),
+          p_(model.p_max()),
           t_fin_(input.t_end()),
-          noise_(1e-12 * model.block.alpha),
+          noise_(1e-12 * model.alpha_min()),
           breaks_(input.discontinuities()),
           result_(rules::new_result(options, input.t_end())),
           stepper_(make_stepper(model, input, options.solver)),
@@ -146,8 +148,14 @@ private:
         sample_until(until, [](double, double& th, double& om) { th = om = 0.0; });
     }
     void note_theta(double when, double value) {
-        if (when <= t_fin_) result_.max_abs_theta_input = std::max(result_.max_abs_theta_input, std::fabs(value));
+        if (!(when <= t_fin_)) return;
+        result_.max_abs_theta_input = std::max(result_.max_abs_theta_input, std::fabs(value));
+        if (model_.symmetric()) return;
+        if (value > 0) result_.peak_plus_input = std::max(result_.peak_plus_input, value);
+        else result_.peak_minus_input = std::max(result_.peak_minus_input, -value);
     }
+    // The corner's slenderness (an imperfect block's differ).
+    double alpha_() const { return model_.alpha_on(sigma_); }
     double theta_at(double s) {
         double th, om;
         stepper_->state_at(s, th, om);
@@ -288,7 +296,7 @@ private:
         // below the fall and on the side of alpha it started.
         const double sa = sigma_ * part.tha, sb = sigma_ * part.thb;
         const bool quiet = keeps_sign() && ea * eb > 0.0 && sa >= 0.0 && sb > noise_ && sb < options_.overturn_angle &&
-                           !(std::isnan(result_.t_first_alpha) && sa < alpha_ && sb >= alpha_);
+                           !(std::isnan(result_.t_first_alpha) && sa < alpha_() && sb >= alpha_());
         if (keeps_sign() && (ea < 0) != (eb < 0) && ea != 0.0 && eb != 0.0) cut_at_inflection(part, piece, from_rest);
         return quiet;
     }
@@ -389,10 +397,11 @@ private:
     // The first time |theta| = alpha, when it lies in [ta, t_cut]: theta at
     // t_cut, or at the extremum before it, at or above alpha.
     void first_alpha(double ta, double tha, double t_cut, double t_ext, double th_ext) {
-        if (!std::isnan(result_.t_first_alpha) || !(sigma_ * tha < alpha_)) return;
-        auto from_alpha = [&](double s) { return sigma_ * theta_at(s) - alpha_; };
-        if (sigma_ * theta_at(t_cut) >= alpha_) result_.t_first_alpha = locate(from_alpha, ta, t_cut);
-        else if (!std::isnan(t_ext) && t_ext < t_cut && sigma_ * th_ext >= alpha_)
+        const double alpha = alpha_();
+        if (!std::isnan(result_.t_first_alpha) || !(sigma_ * tha < alpha)) return;
+        auto from_alpha = [&](double s) { return sigma_ * theta_at(s) - alpha; };
+        if (sigma_ * theta_at(t_cut) >= alpha) result_.t_first_alpha = locate(from_alpha, ta, t_cut);
+        else if (!std::isnan(t_ext) && t_ext < t_cut && sigma_ * th_ext >= alpha)
             result_.t_first_alpha = locate(from_alpha, ta, t_ext);
     }
 
@@ -430,7 +439,7 @@ private:
     const Model& model_;
     const GroundInput& input_;
     const SimulationOptions& options_;
-    const double alpha_, p_, t_fin_, noise_;
+    const double p_, t_fin_, noise_;
     std::vector<double> breaks_;  // the input's discontinuities and t_fin, in order
     SimulationResult result_;
     std::unique_ptr<Stepper> stepper_;
@@ -450,7 +459,7 @@ private:
 
 SimulationResult simulate(const Model& model, const GroundInput& input, const SimulationOptions& options) {
     if (const auto* sine = dynamic_cast<const OneSinePulse*>(&input)) {
-        const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
+        const double slowest = OneSinePulse::slowest_wp_over_p * model.p_max();
         if (!(sine->wp() >= slowest)) {
             char text[240];
             std::snprintf(text, sizeof text,

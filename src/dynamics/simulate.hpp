@@ -88,7 +88,11 @@ struct SimulationResult {
     double t_fin = 0;
     double theta_at_tfin = 0, omega_at_tfin = 0;  // 0 when the block fell before t_fin (overturned_during_input)
     double max_abs_theta_input = 0;  // largest |theta| on [0, t_fin]
-    double t_first_alpha = NAN;      // first time |theta| = alpha (any phase)
+    // An imperfect block's (Model::minus set; 0 for a symmetric one, whose
+    // record kernel keeps the largest |theta| alone): the largest theta and
+    // -theta on [0, t_fin].
+    double peak_plus_input = 0, peak_minus_input = 0;
+    double t_first_alpha = NAN;      // first time |theta| = alpha (any phase); imperfect: its side's alpha
     bool uplifted = false;
     bool overturned = false;         // at any time, the free rocking included
     bool overturned_during_input = false;
@@ -100,7 +104,10 @@ struct SimulationResult {
     long rhs_evaluations = 0, steps = 0;
     std::vector<Sample> samples;
 
-    bool collapse(Criterion c, double alpha) const;
+    // Under criterion c for a block of slenderness alpha; an imperfect one
+    // passes its corner theta < 0's as alpha_minus (> 0): theta is then
+    // measured against the slenderness of its own side.
+    bool collapse(Criterion c, double alpha, double alpha_minus = 0) const;
 };
 
 // Throws std::invalid_argument for an exact solver on the full equation, and
