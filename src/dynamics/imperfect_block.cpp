@@ -1,0 +1,104 @@
+#include "dynamics/imperfect_block.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace rocking::dynamics {
+
+namespace {
+
+void refuse(bool bad, const std::string& why) {
+    if (bad) throw std::invalid_argument("imperfect block: " + why);
+}
+
+struct Vec {
+    double x, y;
+};
+
+}  // namespace
+
+ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imp) {
+    refuse(!(std::isfinite(b) && std::isfinite(h) && b > 0 && h > 0), "half-width and half-height must be > 0");
+    refuse(!(std::isfinite(imp.lean) && std::fabs(imp.lean) < M_PI / 4), "the lean must be within (-pi/4, pi/4) rad");
+    refuse(!(std::isfinite(imp.out_of_plumb) && std::fabs(imp.out_of_plumb) < M_PI / 4),
+           "the out-of-plumb angle must be within (-pi/4, pi/4) rad");
+    refuse(!(std::isfinite(imp.fc) && imp.fc >= 0), "the compressive strength must be >= 0 (0: rigid corners)");
+    refuse(!(std::isfinite(imp.density) && imp.density > 0), "the density must be > 0");
+    ImperfectGeometry g;
+    g.b = b;
+    g.h = h;
+    if (imp.fc > 0) {
+        g.sigma0 = 2 * imp.density * kGravity * h;
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "the block's weight crushes its base: sigma0 = 2 rho g h = %.4g Pa is not below 0.85 fc = %.4g Pa",
+                      g.sigma0, 0.85 * imp.fc);
+        refuse(!(g.sigma0 < 0.85 * imp.fc), text);
+        g.setback = b * g.sigma0 / (0.85 * imp.fc);
+    }
+    const double e = h * std::tan(imp.out_of_plumb), bp = b - g.setback;
+    g.k2 = (b * b + e * e + h * h) / 3.0;
+    // From pivot sigma (at x = sigma bp on the bed) to the centre of gravity
+    // (e, h), turned by the lean: the centre moves toward theta > 0.
+    const double c = std::cos(imp.lean), s = std::sin(imp.lean);
+    auto r_of = [&](int sigma) {
+        const double x = e - sigma * bp, y = h;
+        return Vec{x * c + y * s, -x * s + y * c};
+    };
+    const Vec rp = r_of(1), rm = r_of(-1);
+    const double dot = rp.x * rm.x + rp.y * rm.y;
+    auto corner = [&](const Vec& r, int sigma) {
+        CornerGeometry k;
+        k.alpha = std::atan2(-sigma * r.x, r.y);
+        k.R = std::hypot(r.x, r.y);
+        k.p = std::sqrt(kGravity * k.R / (g.k2 + k.R * k.R));
+        k.restitution_onto = (g.k2 + dot) / (g.k2 + k.R * k.R);
+        return k;
+    };
+    g.plus = corner(rp, 1);
+    g.minus = corner(rm, -1);
+    for (const CornerGeometry* k : {&g.plus, &g.minus}) {
+        const char* side = k == &g.plus ? "theta > 0" : "theta < 0";
+        char text[240];
+        std::snprintf(text, sizeof text,
+                      "on its corner %s alpha = %.6g rad: %s", side, k->alpha,
+                      k->alpha <= 0 ? "the centre of gravity is beyond the pivot, the block cannot stand"
+                                    : "beyond pi/4, not a slender block (the engine's range is (0, pi/4))");
+        refuse(!(k->alpha > 0 && k->alpha < M_PI / 4), text);
+    }
+    return g;
+}
+
+Model imperfect_model(Equation equation, const Block& base, const Imperfection& imp, double restitution) {
+    const double R = base.R > 0 ? base.R : 3.0 * kGravity / (4.0 * base.p * base.p);
+    const ImperfectGeometry g = imperfect_geometry(R * std::sin(base.alpha), R * std::cos(base.alpha), imp);
+    Model m;
+    m.equation = equation;
+    m.block = {g.plus.alpha, g.plus.p, g.plus.R};
+    m.restitution = std::isnan(restitution) ? g.plus.restitution_onto : restitution;
+    if (imp.lean != 0 || imp.out_of_plumb != 0)
+        m.minus = {g.minus.alpha, g.minus.p, std::isnan(restitution) ? g.minus.restitution_onto : restitution};
+    return m;
+}
+
+std::string describe_imperfection(const Imperfection& imp, const ImperfectGeometry& g) {
+    char text[600];
+    int n = std::snprintf(text, sizeof text, "imperfect block:");
+    if (imp.lean != 0) n += std::snprintf(text + n, sizeof text - n, " lean %.6g rad (bed inclined),", imp.lean);
+    if (imp.out_of_plumb != 0)
+        n += std::snprintf(text + n, sizeof text - n, " out of plumb %.6g rad (centre of gravity %.4g m off the base's centre),",
+                           imp.out_of_plumb, g.h * std::tan(imp.out_of_plumb));
+    if (imp.fc != 0)
+        n += std::snprintf(text + n, sizeof text - n,
+                           " fc %.4g MPa, density %.5g kg/m3: sigma0 %.4g kPa, pivot set back %.4g mm (NTC 2018 eq. 7.8.2 "
+                           "stress block, 0.85 fc),",
+                           imp.fc / 1e6, imp.density, g.sigma0 / 1e3, g.setback * 1e3);
+    std::snprintf(text + n, sizeof text - n,
+                  " corner theta > 0: alpha %.6g, p %.6g rad/s, e onto it %.6g; corner theta < 0: alpha %.6g, p %.6g rad/s, "
+                  "e onto it %.6g",
+                  g.plus.alpha, g.plus.p, g.plus.restitution_onto, g.minus.alpha, g.minus.p, g.minus.restitution_onto);
+    return text;
+}
+
+}  // namespace rocking::dynamics

@@ -1,0 +1,75 @@
+// Imperfect blocks (issue 41, docs/imperfect.md): a block whose two corners
+// differ, and corners set back by the masonry's finite strength.
+//
+// The block: a rectangle of half-width b and half-height h (uniform mass),
+// or the parallelogram of a wall built out of plumb, on rigid ground.  Three
+// imperfections, which combine:
+//   lean ψ:          the block stands on a bed inclined by ψ toward theta > 0
+//                    (both corners touching): alpha on each side alpha -+ ψ,
+//                    the same R, p and Housner restitution on both;
+//   out of plumb φ:  a wall built leaning by φ toward theta > 0 on a
+//                    horizontal bed: its centre of gravity shifted by
+//                    h tan φ from the base's centre; alpha, R, p and the
+//                    restitution differ on the two sides;
+//   setback u:       the pivot set back from each edge by half the width of
+//                    the compressed zone, the rectangular stress block of NTC
+//                    2018 eq. 7.8.2 (0.85 f_c over x = N / (0.85 f_c t)):
+//                    u = x / 2 = b sigma0 / (0.85 f_c), sigma0 = W / (2 b t)
+//                    = 2 rho g h the mean stress of the block's own weight.
+// Each corner sigma is then the vector r_sigma from its pivot to the centre
+// of gravity, and (docs/imperfect.md, by angular momentum about each pivot):
+//   alpha_sigma = the angle of r_sigma from the vertical, R_sigma = |r_sigma|,
+//   p_sigma^2 = g R_sigma / (k^2 + R_sigma^2),  k^2 = (b^2 + e^2 + h^2) / 3,
+//   e onto sigma = (k^2 + r_+ . r_-) / (k^2 + R_sigma^2),
+// where k is the radius of gyration about the centre of gravity and e = h
+// tan φ.  The perfect rectangle gives back eqs. 2 and 4 (p^2 = 3 g / 4R) and
+// Housner's 1 - 1.5 sin^2 alpha.
+#pragma once
+
+#include <string>
+
+#include "dynamics/model.hpp"
+
+namespace rocking::dynamics {
+
+// The masonry's density when none is given, kg/m^3 (18 kN/m^3, a solid
+// brick or stone masonry's weight in NTC 2018's Circolare, Table C8.5.I).
+constexpr double kDefaultMasonryDensity = 1800.0;
+
+struct Imperfection {
+    double lean = 0;          // rad, toward theta > 0
+    double out_of_plumb = 0;  // rad, toward theta > 0
+    double fc = 0;            // masonry compressive strength, Pa (0: rigid corners, no setback)
+    double density = kDefaultMasonryDensity;  // kg/m^3, for the setback's axial stress
+    bool any() const { return lean != 0 || out_of_plumb != 0 || fc != 0; }
+};
+
+struct CornerGeometry {
+    double alpha, R, p;       // rad, m, rad/s
+    double restitution_onto;  // of an impact that lands on this corner
+};
+
+struct ImperfectGeometry {
+    double b = 0, h = 0;             // the block's half-width and half-height, m
+    double sigma0 = 0, setback = 0;  // Pa, m (0 without fc)
+    double k2 = 0;                   // radius of gyration squared about the centre of gravity, m^2
+    CornerGeometry plus{}, minus{};
+};
+
+// The corners of a block of half-width b and half-height h with the
+// imperfections; std::invalid_argument (naming the cause) when the block
+// cannot stand (its centre of gravity beyond a pivot), a corner's alpha
+// leaves (0, pi/4), or the weight crushes the base (sigma0 >= 0.85 fc).
+ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imperfection);
+
+// The model of `base` (a symmetric block: its alpha and R, or its p, which
+// gives R = 3 g / (4 p^2) and the half-dimensions R sin alpha, R cos alpha)
+// with the imperfections.  restitution: a factor for both corners, or NaN
+// for each corner's own from the geometry above.  Symmetric imperfections
+// (a setback alone) give a symmetric model (minus unset).
+Model imperfect_model(Equation equation, const Block& base, const Imperfection& imperfection, double restitution);
+
+// One line: the imperfections and the corners they give.
+std::string describe_imperfection(const Imperfection& imperfection, const ImperfectGeometry& g);
+
+}  // namespace rocking::dynamics
