@@ -13,6 +13,7 @@
 #include "cli/distinct_inputs.hpp"
 #include "cli/geometry.hpp"
 #include "cli/help.hpp"
+#include "cli/imperfection.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
@@ -168,6 +169,7 @@ int cmd_assess(int argc, char** argv) {
     const std::vector<std::string> files = file_arguments(argc, argv, first, usage_line("assess"));
     if (files.size() > 1000) throw UsageError("at most 1000 files");
     std::vector<std::string> allowed = {"--unit", "--dt", "--width", "--floor", "--restitution", "--friction", "--png"};
+    allowed.insert(allowed.end(), imperfection_flags().begin(), imperfection_flags().end());
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
     const Args a = parse(argc, argv, first, allowed);
     const GivenBlock given = block_option(a);
@@ -182,6 +184,7 @@ int cmd_assess(int argc, char** argv) {
     studies::AssessOptions o;
     restitution_into(a, o.model);
     friction_into(a, o.model);
+    imperfection_into(a, o.model);
     if (a.values.count("--width")) {
         o.width = number("--width", a.values.at("--width"));
         if (!(o.width >= 1e-7 && o.width <= 0.1)) throw UsageError("--width: must be in [1e-7, 0.1] (got " + a.values.at("--width") + ")");

@@ -11,6 +11,7 @@
 
 #include "cli/geometry.hpp"
 #include "cli/help.hpp"
+#include "cli/imperfection.hpp"
 #include "cli/options.hpp"
 #include "records/collapse.hpp"
 #include "harness/table.hpp"
@@ -24,7 +25,7 @@ int cmd_collapse(int argc, char** argv) {
         file_argument(argc, argv, 2, usage_line("collapse"));
     const Args a = parse(argc, argv, 3,
                          {"--alpha", "--thickness", "--height", "--half-height", "--model", "--solver", "--criterion",
-                          "--restitution", "--rtol", "--atol", "--unit", "--dt", "--floor", "--friction"});
+                          "--restitution", "--rtol", "--atol", "--unit", "--dt", "--floor", "--friction", "--lean", "--out-of-plumb", "--fc", "--density"});
     // The search is over p: of a block given as built only its alpha counts,
     // and its own p is printed beside the search's.
     std::optional<GivenBlock> given;
@@ -51,6 +52,7 @@ int cmd_collapse(int argc, char** argv) {
     tolerance_options(a.values, alpha, o.solver);
     restitution_into(a, o);
     friction_into(a, o);
+    imperfection_into(a, o);
     if (o.friction > 0 && (a.values.count("--model") || a.values.count("--solver")))
         throw UsageError("--model and --solver do not apply with --friction: the sliding-rocking model has its full "
                          "equations and its event-driven solver");

@@ -24,6 +24,7 @@
 #include "cli/cluster_front.hpp"
 #include "cli/distinct_inputs.hpp"
 #include "cli/help.hpp"
+#include "cli/imperfection.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "harness/table.hpp"
@@ -102,6 +103,7 @@ studies::Eq27Options options_from(const Args& a) {
     o.ida.robust_width = m.robust_width;
     restitution_into(a, o.ida.model);
     friction_into(a, o.ida.model);
+    imperfection_into(a, o.ida.model);
     o.ida.input_note = floor_input_note(a);
     // As rocking fragility's: no bootstrap unless asked, and then from a stated seed.
     const Bootstrap b = bootstrap_options(a);
@@ -127,7 +129,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     int first = 0;
     c.files = file_arguments(count, args.data(), first, usage_line("eq27"));
     c.args = parse(count, args.data(), first, {"--alpha", "--p-min", "--p-max", "--p-points", "--q-max", "--bootstrap",
-                                               "--seed", "--unit", "--dt", "--floor", "--restitution", "--friction", "--jobs", "--output",
+                                               "--seed", "--unit", "--dt", "--floor", "--restitution", "--friction", "--lean", "--out-of-plumb", "--fc", "--density", "--jobs", "--output",
                                                "--method", "--width", "--robust-width", "--png"});
     c.study = options_from(c.args);
     c.blocks = c.study.grid.blocks();

@@ -22,6 +22,7 @@
 #include "cli/geometry.hpp"
 #include "cli/help.hpp"
 #include "cli/nrml_output.hpp"
+#include "cli/imperfection.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
@@ -66,6 +67,7 @@ studies::FragilityStudyOptions options_from(const Args& a) {
     o.threads = jobs_option(a);
     restitution_into(a, o.ida.model);
     friction_into(a, o.ida.model);
+    imperfection_into(a, o.ida.model);
     o.ida.input_note = floor_input_note(a);
     // NRML's intensity is the site's PGA, which a hazard model gives for the ground:
     // a fit in a floor's PGA would be read as the ground's.
@@ -410,7 +412,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     const int count = static_cast<int>(args.size());
     int first = 0;
     c.files = file_arguments(count, args.data(), first, usage_line("fragility"));
-    c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit", "--floor", "--restitution", "--friction",
+    c.args = parse(count, args.data(), first, {"--alpha", "--p", "--block", "--q-max", "--points", "--bootstrap", "--seed", "--unit", "--floor", "--restitution", "--friction", "--lean", "--out-of-plumb", "--fc", "--density",
                                                "--dt", "--jobs", "--output", "--rows", "--method", "--width",
                                                "--robust-width", "--png", "--fits", "--nrml"});
     const Args& a = c.args;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/geometry.hpp"
+#include "cli/imperfection.hpp"
 #include "cli/options.hpp"
 #include "cli/simulate_friction.hpp"
 #include "dynamics/ground_input.hpp"
@@ -52,6 +53,7 @@ int cmd_simulate(int argc, char** argv) {
                                         "--wp", "--model", "--solver", "--rtol", "--atol", "--criterion", "--restitution",
                                         "--output", "--dt", "--record", "--unit", "--record-dt", "--floor", "--friction"};
     allowed.insert(allowed.end(), geometry_flags().begin(), geometry_flags().end());
+    allowed.insert(allowed.end(), imperfection_flags().begin(), imperfection_flags().end());
     const Args a = parse(static_cast<int>(args.size()), args.data(), 2, allowed);
     auto has = [&](const char* f) { return a.values.count(f) > 0; };
     auto num = [&](const char* f) { return number(f, a.values.at(f)); };
@@ -72,6 +74,14 @@ int cmd_simulate(int argc, char** argv) {
         const double e = restitution_option(a.values.at("--restitution"));
         model.restitution = std::isnan(e) ? housner_restitution(alpha) : e;
     }
+    // An imperfect block: each corner's own restitution unless one is given.
+    const Imperfection imp = imperfection_option(a);
+    if (imp.any())
+        model = imperfect_model_option(a, model.equation, given,
+                                       paper || has("--restitution") ? model.restitution : double(NAN));
+    // The criteria measure theta against the block's corners: an imperfect
+    // block's own alphas, else the alpha given.
+    const double alpha_plus = imp.any() ? model.block.alpha : alpha, alpha_minus = model.symmetric() ? 0.0 : model.minus.alpha;
     SimulationOptions options;
     try {
         options.solver.kind = has("--solver") ? parse_solver(a.values.at("--solver"))
@@ -114,7 +124,7 @@ int cmd_simulate(int argc, char** argv) {
         if (!has("--ap") || !has("--wp")) throw UsageError("--one-sine needs --ap and --wp");
         // The pulse's bounds (why: ground_input.hpp), said in the options' terms.
         const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
-        const double strongest = OneSinePulse::strongest_ap_over_threshold * model.uplift_threshold();
+        const double strongest = OneSinePulse::strongest_ap_over_threshold * model.uplift_threshold_on(1);
         if (num("--wp") > 0 && num("--wp") < slowest)
             throw UsageError("--wp: must be at least 1e-6 p = " + significant(slowest, 6) + " rad/s (got " +
                              a.values.at("--wp") + "): slower pulses lift the block by less than the rounding of the input");
@@ -122,7 +132,7 @@ int cmd_simulate(int argc, char** argv) {
             throw UsageError("--ap: must be at most 1e9 times the uplift threshold, " + significant(strongest, 6) +
                              " g (got " + a.values.at("--ap") + "): above it the fall time drifts from the closed form");
         try {
-            input = std::make_unique<OneSinePulse>(num("--ap"), num("--wp"), model.uplift_threshold());
+            input = std::make_unique<OneSinePulse>(num("--ap"), num("--wp"), model.uplift_threshold_on(1));
         } catch (const std::invalid_argument& e) {
             throw UsageError(e.what());
         }
@@ -132,16 +142,18 @@ int cmd_simulate(int argc, char** argv) {
         if (has("--to") == has("--x")) throw UsageError("give exactly one of --to and --x");
         const char* to_flag = has("--to") ? "--to" : "--x";
         if (!(num(to_flag) > 0)) throw UsageError(std::string(to_flag) + ": must be > 0");
-        const double to = has("--to") ? num("--to") : num("--x") / model.block.p;
+        const double to = has("--to") ? num("--to") : num("--x") / given.block.p;
         // x / p leaving the double range read "must be > 0" for a positive x.
         if (!(to > 0) || !std::isfinite(to))
-            throw UsageError(std::string("--x: x / p = ") + a.values.at("--x") + " / " + harness::format_number(model.block.p) +
+            throw UsageError(std::string("--x: x / p = ") + a.values.at("--x") + " / " + harness::format_number(given.block.p) +
                              " s is outside the range of double");
         const int amplitude = has("--pga") + has("--q") + has("--rd");
         if (amplitude != 1) throw UsageError("give exactly one of --pga, --q and --rd");
         const char* amplitude_flag = has("--rd") ? "--rd" : has("--q") ? "--q" : "--pga";
         if (!(num(amplitude_flag) > 0)) throw UsageError(std::string(amplitude_flag) + ": must be > 0");
-        const double pga = has("--rd") ? num("--rd") * q_factor(train, model.block.p * to).q * alpha : pga_or_q();
+        // An imperfect block rocks on its corner theta > 0 under the train
+        // (its first pulse is positive): that corner's q, p and alpha.
+        const double pga = has("--rd") ? num("--rd") * q_factor(train, model.block.p * to).q * alpha_plus : pga_or_q();
         // A positive amplitude whose PGA overflows or underflows read "must be > 0".
         if (!(pga > 0) || !std::isfinite(pga))
             throw UsageError(std::string(amplitude_flag) + ": the PGA it gives, " + harness::format_number(pga) +
@@ -187,7 +199,8 @@ int cmd_simulate(int argc, char** argv) {
             table.row().add(s.t).add(s.theta / alpha).add(s.omega / (alpha * model.block.p));
         write_output(table, a.values.at("--output"));
     }
-    const bool collapse = r.collapse(criterion, alpha);
+    auto collapsed = [&](Criterion c) { return r.collapse(c, alpha_plus, alpha_minus); };
+    const bool collapse = collapsed(criterion);
     // The block starts at rest and rocks only once |a| > the threshold (eq. 3: alpha g; eq. 1: g tan alpha).
     const bool lifts = input->peak() > model.uplift_threshold();
     if (a.json) {
@@ -207,9 +220,15 @@ int cmd_simulate(int argc, char** argv) {
                   << ", \"impacts\": " << r.impacts << ", \"overturned\": " << b(r.overturned)
                   << ", \"overturned_during_input\": " << b(r.overturned_during_input)
                   << ", \"t_overturn\": " << (std::isnan(r.t_overturn) ? "null" : json_number(r.t_overturn))
-                  << ", \"collapse_final_rotation\": " << b(r.collapse(Criterion::final_rotation, alpha))
-                  << ", \"collapse_peak_rotation\": " << b(r.collapse(Criterion::peak_rotation, alpha))
-                  << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
+                  << ", \"collapse_final_rotation\": " << b(collapsed(Criterion::final_rotation))
+                  << ", \"collapse_peak_rotation\": " << b(collapsed(Criterion::peak_rotation))
+                  << ", \"collapse_overturning\": " << b(collapsed(Criterion::overturning));
+        if (imp.any())
+            std::cout << ", " << imperfection_json(imp, given.block)
+                      << ", \"peak_plus_over_alpha_plus\": " << json_number(r.peak_plus_input / model.block.alpha)
+                      << ", \"peak_minus_over_alpha_minus\": "
+                      << json_number(r.peak_minus_input / model.alpha_on(-1));
+        std::cout << "}\n";
     } else {
         std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
         std::printf("  model:  %s%s\n  block:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(),
@@ -217,6 +236,12 @@ int cmd_simulate(int argc, char** argv) {
                     : model.restitution == housner_restitution(alpha) ? " (Housner's 1 - 1.5 sin^2 alpha)" : "",
                     describe_block(given).c_str(),
                     input->describe().c_str(), solver_name(options.solver.kind).c_str(), tolerance.c_str());
+        if (imp.any()) {
+            std::printf("  %s\n", describe_imperfection(imp, geometry_of(imp, given.block)).c_str());
+            std::printf("  largest theta/alpha_+ = %.10g, -theta/alpha_- = %.10g during the input (each side by its "
+                        "own alpha; below, theta is in units of the alpha given)\n",
+                        r.peak_plus_input / model.block.alpha, r.peak_minus_input / model.alpha_on(-1));
+        }
         // A block that fell during the input has no theta(t_fin) to print: it lies on the ground.
         if (r.overturned_during_input)
             std::printf("  fell at t = %.10g s, before t_fin = %g s: |theta| reached the fall angle, %.10g alpha\n",
@@ -230,12 +255,17 @@ int cmd_simulate(int argc, char** argv) {
                                      : " (at t = " + harness::format_number(r.t_overturn) + " s)";
         // Without this line a zero theta reads like a result of the dynamics;
         // it is the input that stays at or below the uplift threshold.
-        if (!lifts)
+        if (!lifts && model.symmetric())
             std::printf("  the input never lifts the block: its peak, %.6g g, is at or below the uplift threshold %s = %.6g g\n",
                         input->peak(), model.equation == Equation::full ? "tan alpha" : "alpha", model.uplift_threshold());
+        else if (!r.uplifted)
+            std::printf("  the input never lifts the block: it stays within the uplift thresholds %s, %.6g g toward "
+                        "theta > 0 and %.6g g toward theta < 0\n",
+                        model.equation == Equation::full ? "tan alpha" : "alpha", model.uplift_threshold_on(1),
+                        model.uplift_threshold_on(-1));
         std::printf("  impacts: %d; overturns (free rocking included): %s%s\n", r.impacts, r.overturned ? "yes" : "no",
                     when.c_str());
-        print_criteria(r, alpha);
+        print_criteria(r, alpha_plus, alpha_minus);
     }
     return 0;
 }

@@ -32,12 +32,12 @@ std::string model_text(double mu, dynamics::Criterion criterion, double rtol) {
 
 }  // namespace
 
-void print_criteria(const dynamics::SimulationResult& r, double alpha) {
+void print_criteria(const dynamics::SimulationResult& r, double alpha, double alpha_minus) {
     using dynamics::Criterion;
     std::printf("  final-rotation: %s; peak-rotation: %s; overturning: %s\n",
-                r.collapse(Criterion::final_rotation, alpha) ? "collapse" : "safe",
-                r.collapse(Criterion::peak_rotation, alpha) ? "collapse" : "safe",
-                r.collapse(Criterion::overturning, alpha) ? "collapse" : "safe");
+                r.collapse(Criterion::final_rotation, alpha, alpha_minus) ? "collapse" : "safe",
+                r.collapse(Criterion::peak_rotation, alpha, alpha_minus) ? "collapse" : "safe",
+                r.collapse(Criterion::overturning, alpha, alpha_minus) ? "collapse" : "safe");
 }
 
 int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::GroundInput& input,

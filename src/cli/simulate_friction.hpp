@@ -9,7 +9,8 @@
 namespace rocking::cli {
 
 // The line that gives a run's outcome under each of the three criteria.
-void print_criteria(const dynamics::SimulationResult& r, double alpha);
+// alpha_minus > 0: an imperfect block's corner theta < 0 (SimulationResult::collapse).
+void print_criteria(const dynamics::SimulationResult& r, double alpha, double alpha_minus = 0);
 
 // Runs the block on the input with friction mu and prints the result (text
 // or --json); the tolerances from --rtol and --atol.

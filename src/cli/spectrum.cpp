@@ -21,6 +21,7 @@
 #include "cli/distinct_inputs.hpp"
 #include "cli/geometry.hpp"
 #include "cli/help.hpp"
+#include "cli/imperfection.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
@@ -78,6 +79,7 @@ SpectrumOptions grid_from(const Args& a) {
     o.robust_width = m.robust_width;
     restitution_into(a, o.model);
     friction_into(a, o.model);
+    imperfection_into(a, o.model);
     return o;
 }
 
@@ -347,7 +349,7 @@ Command command_from(int argc, char** argv, bool mpi) {
     std::vector<char*> args = without_engine_switches(argc, argv, c.engine.resume, c.engine.quiet);
     const int count = static_cast<int>(args.size());
     c.path = file_argument(count, args.data(), 2, usage_line("spectrum"));
-    c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--floor", "--restitution", "--friction", "--jobs",
+    c.args = parse(count, args.data(), 3, {"--alpha", "--p-min", "--p-max", "--points", "--unit", "--dt", "--floor", "--restitution", "--friction", "--lean", "--out-of-plumb", "--fc", "--density", "--jobs",
                                            "--output", "--png", "--rows", "--method", "--width", "--robust-width",
                                            "--mark"});
     const Args& a = c.args;

@@ -10,6 +10,25 @@ namespace rocking::records {
 
 using namespace dynamics;
 
+namespace {
+
+// "; imperfect block: lean 0.02 rad, ..." or nothing for a perfect block.
+std::string imperfection_words(const Imperfection& imp, bool housner) {
+    if (!imp.any()) return "";
+    char text[320];
+    int n = std::snprintf(text, sizeof text, "; imperfect block (docs/imperfect.md):");
+    if (imp.lean != 0) n += std::snprintf(text + n, sizeof text - n, " lean %g rad,", imp.lean);
+    if (imp.out_of_plumb != 0) n += std::snprintf(text + n, sizeof text - n, " out of plumb %g rad,", imp.out_of_plumb);
+    if (imp.fc != 0)
+        n += std::snprintf(text + n, sizeof text - n, " pivots set back by fc %g MPa at density %g kg/m3,", imp.fc / 1e6,
+                           imp.density);
+    std::snprintf(text + n, sizeof text - n, "%s",
+                  housner ? " each corner's restitution from the geometry" : " the restitution given on both corners");
+    return text;
+}
+
+}  // namespace
+
 std::string CollapseOptions::describe_model() const {
     char number[40];
     if (friction > 0) {
@@ -26,7 +45,7 @@ std::string CollapseOptions::describe_model() const {
     text += housner_restitution ? std::string("Housner 1 - 1.5 sin^2 alpha") : std::string(number);
     text += ", criterion " + criterion_name(criterion) + ", solver " + solver_name(solver.kind);
     if (solver.kind != SolverKind::exact) text += " (" + tolerance_text(solver) + ")";
-    return text;
+    return text + imperfection_words(imperfection, housner_restitution);
 }
 
 std::string CollapseOptions::describe() const {
@@ -38,13 +57,17 @@ std::string CollapseOptions::describe() const {
         if (housner_restitution) os << "Housner 1 - 1.5 sin^2 alpha";
         else os << restitution;
         os << ", criterion " << criterion_name(criterion) << ", solver " << solver_name(solver.kind)
-           << (solver.kind == SolverKind::exact ? std::string("") : " " + tolerance_text(solver));
+           << (solver.kind == SolverKind::exact ? std::string("") : " " + tolerance_text(solver))
+           << imperfection_words(imperfection, housner_restitution);
     }
     os << ", p scanned from " << p_min << " by x" << growth << ", refined to " << rel_tol;
     return os.str();
 }
 
 Model model_of(double alpha, double p, const CollapseOptions& options) {
+    if (options.imperfection.any())
+        return imperfect_model(options.equation, Block::from_p(p, alpha), options.imperfection,
+                               options.housner_restitution ? NAN : options.restitution);
     Model model;
     model.equation = options.equation;
     model.restitution = options.housner_restitution ? housner_restitution(alpha) : options.restitution;
@@ -67,7 +90,12 @@ SimulationResult sliding_run(const GroundInput& input, double alpha, double p, c
 
 SimulationResult run_block(const GroundInput& input, double alpha, double p, const CollapseOptions& options,
                            bool free_rocking) {
-    if (options.friction > 0) return sliding_run(input, alpha, p, options, free_rocking);
+    if (options.friction > 0) {
+        if (options.imperfection.any())
+            throw std::invalid_argument("friction and an imperfect block together: the sliding-rocking model's block is "
+                                        "a perfect rectangle");
+        return sliding_run(input, alpha, p, options, free_rocking);
+    }
     const Model model = model_of(alpha, p, options);
     SimulationOptions sim;
     sim.solver = options.solver;
@@ -77,9 +105,15 @@ SimulationResult run_block(const GroundInput& input, double alpha, double p, con
 
 }  // namespace
 
+bool run_collapses(const SimulationResult& r, Criterion c, double alpha, double p, const CollapseOptions& options) {
+    if (!options.imperfection.any()) return r.collapse(c, alpha);
+    const Model m = model_of(alpha, p, options);
+    return r.collapse(c, m.block.alpha, m.symmetric() ? 0.0 : m.minus.alpha);
+}
+
 bool collapses_at(const GroundInput& input, double alpha, double p, const CollapseOptions& options) {
-    return run_block(input, alpha, p, options, options.criterion == Criterion::overturning)
-        .collapse(options.criterion, alpha);
+    return run_collapses(run_block(input, alpha, p, options, options.criterion == Criterion::overturning),
+                         options.criterion, alpha, p, options);
 }
 
 SimulationResult simulate_block(const GroundInput& input, double alpha, double p, const CollapseOptions& options) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "dynamics/ground_input.hpp"
+#include "dynamics/imperfect_block.hpp"
 #include "dynamics/simulate.hpp"
 
 namespace rocking::records {
@@ -29,6 +30,11 @@ struct CollapseOptions {
     // A search's check of a boundary: the sliding engine 1000 times tighter
     // (it has no second method in C++ yet: tools/siconos_block.py is one).
     static constexpr double kSlidingCheckRtol = 1e-12;
+    // An imperfect block (issue 41, dynamics/imperfect_block.hpp): each
+    // block (alpha, p) of a search leans, stands out of plumb or pivots set
+    // back as this says; Housner's restitution is then each corner's own
+    // from the geometry.  Not with friction (the sliding block is perfect).
+    dynamics::Imperfection imperfection{};
     // The model in words: the equation, the restitution (or the friction
     // and its impact law), the criterion and the solver.
     std::string describe_model() const;
@@ -49,9 +55,15 @@ struct CollapseResult {
 
 // The model these options describe for the block (alpha, p): the equation,
 // the restitution (Housner's 1 - 1.5 sin^2 alpha of eq. 9, or the fixed
-// one) and the block of pulsation p.  One place, so that every search runs
-// the model its options print.
+// one) and the block of pulsation p, with its imperfections.  One place, so
+// that every search runs the model its options print.
 dynamics::Model model_of(double alpha, double p, const CollapseOptions& options);
+
+// Whether run r of the block (alpha, p) collapses under criterion c: theta
+// against the nominal alpha, or an imperfect block's against its own
+// corners' (model_of).
+bool run_collapses(const dynamics::SimulationResult& r, dynamics::Criterion c, double alpha, double p,
+                   const CollapseOptions& options);
 
 CollapseResult smallest_collapse_p(const dynamics::GroundInput& input, double alpha, const CollapseOptions& options);
 

@@ -77,7 +77,7 @@ RecordAssessment assess_record(const dynamics::SampledInput& input, const record
 
     const dynamics::SimulationResult run = records::simulate_block(input, block.alpha, block.p, o.model);
     a.peak_theta_over_alpha = run.max_abs_theta_input / block.alpha;
-    a.overturns = run.collapse(o.model.criterion, block.alpha);
+    a.overturns = records::run_collapses(run, o.model.criterion, block.alpha, block.p, o.model);
     a.fell_during_input = run.overturned_during_input;
 
     IdaOptions ida;

@@ -139,8 +139,10 @@ public:
         sim_.solver = o.model.solver;
         sim_.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
         record_ = dynamic_cast<const dynamics::SampledInput*>(&input);
-        // The margins come from the rocking-only record kernel: a block that slides has none.
+        // The margins come from the rocking-only record kernel: a block that
+        // slides has none, and an imperfect one's are not derived.
         if (record_ && o.model.criterion == dynamics::Criterion::overturning && !(o.model.friction > 0) &&
+            !o.model.imperfection.any() &&
             dynamics::record_kernel_applies(model_, *record_, sim_))
             rest_ = std::make_unique<dynamics::RestOfInput>(*record_, p);
     }

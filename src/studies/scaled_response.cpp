@@ -21,7 +21,7 @@ std::vector<ScaledRun> scaled_response(const dynamics::GroundInput& input, doubl
         const double q = k == 0 ? q_min : k == points - 1 ? q_max : q_min * std::exp(step * k);
         const dynamics::SimulationResult run =
             records::simulate_block(*scaled(input, q * alpha / input.peak()), alpha, p, model);
-        out.push_back({q, run.max_abs_theta_input / alpha, run.collapse(model.criterion, alpha)});
+        out.push_back({q, run.max_abs_theta_input / alpha, records::run_collapses(run, model.criterion, alpha, p, model)});
     }
     return out;
 }

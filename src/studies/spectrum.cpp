@@ -99,11 +99,12 @@ SpectrumPoint run_point(const GroundInput& input, double alpha, const GridPoint&
     pt.p = at.x;
     pt.grid = at.kind;
     pt.max_theta = r.max_abs_theta_input / alpha;
-    pt.final_rotation = r.collapse(dynamics::Criterion::final_rotation, alpha);
-    pt.peak_rotation = r.collapse(dynamics::Criterion::peak_rotation, alpha);
-    pt.overturning = r.collapse(dynamics::Criterion::overturning, alpha);
+    using dynamics::Criterion;
+    pt.final_rotation = records::run_collapses(r, Criterion::final_rotation, alpha, at.x, o.model);
+    pt.peak_rotation = records::run_collapses(r, Criterion::peak_rotation, alpha, at.x, o.model);
+    pt.overturning = records::run_collapses(r, Criterion::overturning, alpha, at.x, o.model);
     pt.t_overturn = r.overturned ? r.t_overturn : NAN;
-    pt.collapse = r.collapse(o.model.criterion, alpha);
+    pt.collapse = records::run_collapses(r, o.model.criterion, alpha, at.x, o.model);
     return pt;
 }
 
@@ -167,8 +168,10 @@ bool record_kernel_runs(const GroundInput& input, double alpha, const SpectrumOp
     dynamics::SimulationOptions sim;
     sim.solver = o.model.solver;
     sim.free_rocking = o.model.criterion == dynamics::Criterion::overturning;
-    // The margins come from the rocking-only record kernel: a block that slides has none.
+    // The margins come from the rocking-only record kernel: a block that
+    // slides has none, and an imperfect one's are not derived.
     return record && o.model.criterion == dynamics::Criterion::overturning && !(o.model.friction > 0) &&
+           !o.model.imperfection.any() &&
            dynamics::record_kernel_applies(records::model_of(alpha, o.p_min, o.model), *record, sim);
 }
 
