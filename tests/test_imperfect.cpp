@@ -15,6 +15,8 @@
 #include "dynamics/imperfect_block.hpp"
 #include "dynamics/model.hpp"
 #include "dynamics/simulate.hpp"
+#include "pulse/pulse_train.hpp"
+#include "qfactor/imperfect_q.hpp"
 
 using namespace rocking;
 using namespace rocking::dynamics;
@@ -425,4 +427,39 @@ TEST(ImperfectBlock, UpliftTimeOnARecordAgainstAScan) {
                 EXPECT_NEAR(again, t, 1e-12);
             }
     EXPECT_GT(found, 30);
+}
+
+// The closed-form collapse PGA toward each corner (qfactor/imperfect_q.hpp)
+// against the event-driven run of the imperfect block: theta(t_fin) passes
+// its side's alpha just above it and not just below (eq. 11 on that corner,
+// no impact: where the excursion stays positive).  Toward theta < 0 the
+// train is the mirror image: the mirrored block under the train as given
+// (MirrorImage shows the two are one run).
+TEST(ImperfectBlock, ClosedFormCollapseTowardEachCorner) {
+    const Model m = imperfect(Equation::linearised, 0.015, 0.025);
+    int checked = 0;
+    for (int which : {1, 2, 4})
+        for (double x : {0.5, 1.0, 2.0, 4.0}) {
+            const PulseTrain train = pulse_case(which);
+            const double to = x / m.block.p;
+            const ImperfectCollapse c =
+                imperfect_collapse(train, to, {m.block.alpha, m.block.p}, {m.minus.alpha, m.minus.p});
+            EXPECT_NEAR(c.toward_plus.x, x, 1e-15 * x);
+            for (int side : {1, -1}) {
+                const DirectionalCollapse& d = side > 0 ? c.toward_plus : c.toward_minus;
+                if (!d.excursion.stays_positive()) continue;
+                const Model run_model = side > 0 ? m : mirrored(m);
+                SimulationOptions o = with(SolverKind::exact);
+                o.free_rocking = false;
+                auto collapses = [&](double factor) {
+                    const SimulationResult r = simulate(run_model, PulseInput(train, d.pga_g * factor, to), o);
+                    return r.collapse(Criterion::final_rotation, run_model.block.alpha, run_model.minus.alpha);
+                };
+                EXPECT_TRUE(collapses(1 + 1e-9)) << which << " x " << x << " side " << side;
+                EXPECT_FALSE(collapses(1 - 1e-9)) << which << " x " << x << " side " << side;
+                ++checked;
+            }
+            EXPECT_EQ(c.pga_g(), std::min(c.toward_plus.pga_g, c.toward_minus.pga_g));
+        }
+    EXPECT_GT(checked, 15);
 }
