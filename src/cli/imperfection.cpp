@@ -1,5 +1,6 @@
 #include "cli/imperfection.hpp"
 
+#include <optional>
 #include <cmath>
 #include <stdexcept>
 
@@ -11,33 +12,20 @@ const std::vector<std::string>& imperfection_flags() {
 }
 
 dynamics::Imperfection imperfection_option(const Args& a) {
-    dynamics::Imperfection imp;
-    auto has = [&](const char* f) { return a.values.count(f) > 0; };
-    auto angle = [&](const char* f) {
-        const double v = number(f, a.values.at(f));
-        if (!(std::fabs(v) < M_PI / 4))
-            throw UsageError(std::string(f) + ": an angle in rad within (-pi/4, pi/4), toward theta > 0 (got " +
-                             a.values.at(f) + ")");
-        return v;
+    auto given = [&](const char* f) -> std::optional<double> {
+        if (!a.values.count(f)) return std::nullopt;
+        return number(f, a.values.at(f));
     };
-    if (has("--lean")) imp.lean = angle("--lean");
-    if (has("--out-of-plumb")) imp.out_of_plumb = angle("--out-of-plumb");
-    if (has("--density") && !has("--fc"))
-        throw UsageError("--density goes with --fc: it gives the axial stress that sets the pivots back");
-    if (has("--fc")) {
-        const double fc = number("--fc", a.values.at("--fc"));
-        if (!(fc > 0 && fc <= 1e3))
-            throw UsageError("--fc: the masonry's compressive strength in MPa, in (0, 1000] (got " + a.values.at("--fc") +
-                             ")");
-        imp.fc = fc * 1e6;
+    dynamics::ImperfectionSpec spec{given("--lean"), given("--out-of-plumb"), given("--fc"), given("--density")};
+    dynamics::Imperfection imp;
+    try {
+        imp = dynamics::imperfection_of(spec, [](const std::string& n) {
+            return n == "out_of_plumb" ? std::string("--out-of-plumb") : "--" + n;
+        });
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
     }
-    if (has("--density")) {
-        const double rho = number("--density", a.values.at("--density"));
-        if (!(rho > 0 && rho <= 1e5))
-            throw UsageError("--density: the masonry's density in kg/m3, in (0, 1e5] (got " + a.values.at("--density") + ")");
-        imp.density = rho;
-    }
-    if (imp.any() && has("--friction"))
+    if (imp.any() && a.values.count("--friction"))
         throw UsageError("--friction does not apply to an imperfect block (--lean, --out-of-plumb, --fc): the "
                          "sliding-rocking model's block is a perfect rectangle");
     return imp;

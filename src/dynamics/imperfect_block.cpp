@@ -18,6 +18,39 @@ struct Vec {
 
 }  // namespace
 
+Imperfection imperfection_of(const ImperfectionSpec& spec, const std::function<std::string(const std::string&)>& name) {
+    Imperfection imp;
+    auto angle = [&](const std::optional<double>& v, const char* what) {
+        if (!v) return 0.0;
+        if (!(std::fabs(*v) < M_PI / 4)) {
+            char text[160];
+            std::snprintf(text, sizeof text, "%s: an angle in rad within (-pi/4, pi/4), toward theta > 0 (got %.6g)",
+                          name(what).c_str(), *v);
+            throw std::invalid_argument(text);
+        }
+        return *v;
+    };
+    imp.lean = angle(spec.lean, "lean");
+    imp.out_of_plumb = angle(spec.out_of_plumb, "out_of_plumb");
+    if (spec.density && !spec.fc_mpa)
+        throw std::invalid_argument(name("density") + " goes with " + name("fc") +
+                                    ": it gives the axial stress that sets the pivots back");
+    char text[200];
+    if (spec.fc_mpa) {
+        std::snprintf(text, sizeof text, "%s: the masonry's compressive strength in MPa, in (0, 1000] (got %.17g)",
+                      name("fc").c_str(), *spec.fc_mpa);
+        if (!(*spec.fc_mpa > 0 && *spec.fc_mpa <= 1e3)) throw std::invalid_argument(text);
+        imp.fc = *spec.fc_mpa * 1e6;
+    }
+    if (spec.density) {
+        std::snprintf(text, sizeof text, "%s: the masonry's density in kg/m3, in (0, 1e5] (got %.17g)",
+                      name("density").c_str(), *spec.density);
+        if (!(*spec.density > 0 && *spec.density <= 1e5)) throw std::invalid_argument(text);
+        imp.density = *spec.density;
+    }
+    return imp;
+}
+
 ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imp) {
     refuse(!(std::isfinite(b) && std::isfinite(h) && b > 0 && h > 0), "half-width and half-height must be > 0");
     refuse(!(std::isfinite(imp.lean) && std::fabs(imp.lean) < M_PI / 4), "the lean must be within (-pi/4, pi/4) rad");
@@ -30,10 +63,11 @@ ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imp
     g.h = h;
     if (imp.fc > 0) {
         g.sigma0 = 2 * imp.density * kGravity * h;
-        char text[200];
+        char text[320];
         std::snprintf(text, sizeof text,
-                      "the block's weight crushes its base: sigma0 = 2 rho g h = %.4g Pa is not below 0.85 fc = %.4g Pa",
-                      g.sigma0, 0.85 * imp.fc);
+                      "the block's weight crushes its base: sigma0 = 2 rho g h = %.4g Pa is not below 0.85 fc = %.4g Pa "
+                      "(at this fc and density a block stands up to a height 2h of %.4g m)",
+                      g.sigma0, 0.85 * imp.fc, 0.85 * imp.fc / (imp.density * kGravity));
         refuse(!(g.sigma0 < 0.85 * imp.fc), text);
         g.setback = b * g.sigma0 / (0.85 * imp.fc);
     }

@@ -26,6 +26,8 @@
 // Housner's 1 - 1.5 sin^2 alpha.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 
 #include "dynamics/model.hpp"
@@ -43,6 +45,15 @@ struct Imperfection {
     double density = kDefaultMasonryDensity;  // kg/m^3, for the setback's axial stress
     bool any() const { return lean != 0 || out_of_plumb != 0 || fc != 0; }
 };
+
+// The imperfections as a front end takes them: angles (rad) within (-pi/4,
+// pi/4), fc in MPa in (0, 1000] or absent, density (kg/m^3) in (0, 1e5] and
+// only with fc.  std::invalid_argument naming the caller's argument
+// (name("lean") -> "--lean" or "lean") where one is wrong.
+struct ImperfectionSpec {
+    std::optional<double> lean, out_of_plumb, fc_mpa, density;
+};
+Imperfection imperfection_of(const ImperfectionSpec& spec, const std::function<std::string(const std::string&)>& name);
 
 struct CornerGeometry {
     double alpha, R, p;       // rad, m, rad/s
