@@ -147,6 +147,8 @@ SimulationResult SlidingResult::as_rocking() const {
     out.overturned_during_input = overturned_during_input;
     out.t_overturn = t_overturn;
     out.impacts = impacts;
+    out.impact_times = impact_times;
+    if (!impact_times.empty()) out.t_first_impact = impact_times.front(), out.t_last_impact = impact_times.back();
     out.steps = steps;
     out.rhs_evaluations = rhs_evaluations;
     return out;
@@ -326,6 +328,7 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                     const double xg = x[3] * R + d.dy * x[1], yg = -d.dx * x[1];
                     const Impact hit = corner_impact(block, phase.sigma, x[1], xg, yg);
                     ++out.impacts;
+                    if (out.impact_times.size() < o.max_impact_times) out.impact_times.push_back(t);
                     out.slipping_impacts += hit.slipped;
                     x[0] = 0;
                     // As the rocking-only ODE runs (rest_threshold): below rest_velocity or

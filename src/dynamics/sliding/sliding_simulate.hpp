@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ struct SlidingOptions {
     double rest_velocity = 1e-9;  // |theta'| below max(rest_velocity, 10 atol) alpha p after an impact: the
                                   // block lies flat, and its slip rate below the same times R is 0
     long max_events = 1000000;    // a guard: beyond it, std::runtime_error (a second of events)
+    std::size_t max_impact_times = 1000000;  // impact_times keeps the first ones (8 bytes each)
     std::string describe() const;
 };
 
@@ -46,6 +48,7 @@ struct SlidingResult {
     double t_overturn = NAN;
     bool uplifted = false, slid = false;  // rocked, slipped at some time
     int impacts = 0, slipping_impacts = 0;
+    std::vector<double> impact_times;  // in order, the first options.max_impact_times of them
     long regime_changes = 0;
     double time_in[4] = {0, 0, 0, 0};  // seconds in each Regime (rest, slide, rock, slide-rock)
     // The energy balance per unit mass (J/kg): the input's work W = int A x_G' dt,
