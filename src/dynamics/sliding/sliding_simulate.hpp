@@ -2,9 +2,10 @@
 // input: event-driven.  Inside a regime the state is integrated by
 // Dormand-Prince 5(4) with dense output (Boost.Odeint, its steps ending on
 // the input's kinks, as the ODE solvers of stepper.hpp on a record) to the
-// stated tolerances; the regime changes are events located on the dense
-// output by bisection to rounding: an impact (theta reaching 0), the fall
-// (|theta| reaching the overturn angle), a slip starting (|f| reaching mu n
+// stated tolerances; the regime changes are events found on the dense
+// output and located on true steps (docs/sliding.md, Accuracy): an impact
+// (theta reaching 0), the fall (|theta| reaching the overturn angle), a
+// slip starting (|f| reaching mu n
 // on a stuck corner) or stopping (the pivot's or the base's velocity
 // reaching 0), a block at rest set going (|A| above g min(mu, tan alpha)),
 // and free flight (n reaching 0: outside the model, an error).  Beside the
