@@ -211,6 +211,59 @@ TEST(Sliding, AsMuGrowsItIsTheRockingOnlyFullModel) {
         }
 }
 
+TEST(Sliding, ItsErrorFollowsItsTolerance) {
+    // A synthetic record (three sines under a half-sine envelope, sampled
+    // every 0.01 s, linear between: a kink at every sample, where the steps
+    // end) rocks a block of alpha 0.15 through 14 impacts without a rest.
+    // At mu = 1e6 the engine is the full rocking-only model with Housner's
+    // restitution, here simulate() under gsl-rk8pd at 1e-13 (rkf78 at 1e-13
+    // gives the same impact times to 2e-13/p).  At rtol = atol = 1e-10 and
+    // 1e-12 alpha every impact time is within 100 rtol/p of it, theta(t_fin)
+    // within 5 rtol alpha, and the larger error shrinks at least 10 times
+    // with the tolerance.  Measured: 16 and 29 rtol/p, 0.9 and 1.3 rtol
+    // alpha.  With events located on the dense output (order 4) instead of
+    // on true steps: 510 and 230 rtol/p, 36 and 18 rtol alpha.
+    const double dt = 0.01, T = 6;
+    std::vector<double> a;
+    for (int k = 0; k * dt <= T + 1e-9; ++k) {
+        const double t = k * dt;
+        a.push_back(0.12 * std::sin(M_PI * t / T) *
+                    (std::sin(2 * M_PI * 1.1 * t) + 0.6 * std::sin(2 * M_PI * 2.7 * t + 1) +
+                     0.4 * std::sin(2 * M_PI * 5.3 * t + 2)));
+    }
+    const SampledInput input(a, dt, "three sines, 0.12 g");
+    const FrictionBlock block{0.15, 1.0, 1e6};
+    Model model;
+    model.equation = Equation::full;
+    model.block = Block::from_p(block.p(), block.alpha);
+    model.restitution = housner_restitution(block.alpha);
+    SimulationOptions ro;
+    ro.solver.kind = SolverKind::gsl_rk8pd;
+    ro.solver.rtol = ro.solver.atol_alpha = 1e-13;
+    ro.overturn_angle = 1.0;
+    ro.free_rocking = false;
+    const SimulationResult truth = simulate(model, input, ro);
+    ASSERT_EQ(truth.impacts, 14);
+    ASSERT_EQ(truth.rests, 0);
+    std::vector<double> worst;
+    for (double rtol : {1e-10, 1e-12}) {
+        SlidingOptions so;
+        so.rtol = so.atol_alpha = rtol;
+        so.overturn_angle = 1.0;
+        so.free_rocking = false;
+        const SlidingResult s = simulate_sliding(block, input, so);
+        ASSERT_EQ(s.impacts, truth.impacts) << rtol;
+        ASSERT_EQ(s.impact_times.size(), truth.impact_times.size()) << rtol;
+        double e = 0;
+        for (std::size_t k = 0; k < s.impact_times.size(); ++k)
+            e = std::max(e, block.p() * std::fabs(s.impact_times[k] - truth.impact_times[k]));
+        EXPECT_LE(e, 100 * rtol) << rtol;
+        EXPECT_NEAR(s.theta_at_tfin, truth.theta_at_tfin, 5 * rtol * block.alpha) << rtol;
+        worst.push_back(e);
+    }
+    EXPECT_LE(worst[1], worst[0] / 10);
+}
+
 TEST(Sliding, TheEnergyBalancesAndTheMirrorImageMirrors) {
     // A decaying sine of 0.45 g on a block of alpha 0.2: at mu = 0.1 it only
     // slides; at 0.3 and 1 it rocks through two impacts and slide-rocks as it

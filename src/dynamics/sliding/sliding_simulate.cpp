@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "dynamics/stepper.hpp"
@@ -92,6 +93,12 @@ double energy(const FrictionBlock& block, const Phase& phase, const State& x) {
     return (0.5 * (xg * xg + yg * yg) + 0.5 * R * R / 3 * x[1] * x[1] + g * d.dy) / (g * R);
 }
 
+// An event's time and the state there.
+struct Located {
+    double t;
+    State x;
+};
+
 // The events of a regime, each triggered where its value turns negative.
 enum Event { impact, fall, slip_starts, slip_stops, flight, kEvents };
 
@@ -122,6 +129,77 @@ std::array<double, kEvents> events(const FrictionBlock& block, const Phase& phas
     return e;
 }
 
+// Dormand-Prince steps from the start (t0, x0) of the dense output's last
+// step to any s inside it.  The dense output is an interpolant of order 4,
+// its error of the size of the step's error estimate, while the step itself
+// is of order 5: located on the interpolant, an event's time was off by the
+// interpolant's error over the rate of the event's value (theta' at an
+// impact), which set the rest of the run: on IT.AQK HNN at alpha 0.1, q 1.5,
+// 70 to 100 times the error of the steps themselves (docs/sliding.md,
+// "Accuracy").
+// A step to s costs 6 evaluations, its end's derivative included.
+class TrueStep {
+public:
+    TrueStep(const System& sys, const State& x0, double t0) : sys_(sys), x0_(x0), t0_(t0) { sys_(x0_, d0_, t0_); }
+    // The state at s, its derivative there in dxdt.
+    State at(double s, State& dxdt) {
+        if (!(s > t0_)) {
+            dxdt = d0_;
+            return x0_;
+        }
+        State y;
+        dopri5_.do_step(sys_, x0_, d0_, t0_, y, dxdt, s - t0_);
+        return y;
+    }
+
+private:
+    const System& sys_;
+    State x0_, d0_;
+    double t0_;
+    odeint::runge_kutta_dopri5<State> dopri5_;
+};
+
+// Event k, found on the dense output at `guess` in the step [t0, t1], where
+// the true steps put it: Newton's method on their state, its slope along the
+// flow.  A correction within 1e-6 of the step h moves the state along its
+// derivative (the neglected delta^2 x''/2 is below 1e-12 h^2 x''), a larger
+// one takes another step.  Where the true trajectory
+// does not reach the event (a grazing one, seen on the interpolant alone),
+// its closest approach is kept.
+Located locate_event(const System& sys, TrueStep& step, double t0, double t1, double guess, int k,
+                     double overturn_angle) {
+    auto value = [&](double s, const State& at) {
+        return events(*sys.block, sys.phase, at, sys.ground.at(s), overturn_angle)[k];
+    };
+    const double near = 1e-6 * (t1 - t0);
+    double s = std::clamp(guess, t0, t1);
+    State dy, y = step.at(s, dy);
+    Located best{s, y};
+    double best_v = INFINITY;
+    for (int it = 0; it < 8; ++it) {
+        const double v = value(s, y);
+        if (!(std::fabs(v) < best_v)) break;  // no closer: a grazing event, or rounding
+        best = {s, y};
+        best_v = std::fabs(v);
+        if (v == 0) break;
+        // Backwards at the step's end: beyond it the input may have a kink.
+        const double e = s + near <= t1 ? near : -near;
+        State ahead;
+        for (std::size_t i = 0; i < y.size(); ++i) ahead[i] = y[i] + e * dy[i];
+        const double slope = (value(s + e, ahead) - v) / e;
+        if (!(std::isfinite(slope) && slope != 0)) break;
+        const double next = std::clamp(s - v / slope, t0, t1), delta = next - s;
+        if (std::fabs(delta) <= 4 * std::numeric_limits<double>::epsilon() * std::fabs(s)) break;
+        if (std::fabs(delta) <= near) {
+            for (std::size_t i = 0; i < y.size(); ++i) y[i] += delta * dy[i];
+        } else {
+            y = step.at(next, dy);
+        }
+        s = next;
+    }
+    return best;
+}
+
 void check_tolerance(const char* name, double v) {
     if (!(v >= kSmallestTolerance && v < 1))
         throw std::invalid_argument(std::string("sliding: ") + name + " must be in [2.2e-14, 1) (got " +
@@ -147,6 +225,8 @@ SimulationResult SlidingResult::as_rocking() const {
     out.overturned_during_input = overturned_during_input;
     out.t_overturn = t_overturn;
     out.impacts = impacts;
+    out.impact_times = impact_times;
+    if (!impact_times.empty()) out.t_first_impact = impact_times.front(), out.t_last_impact = impact_times.back();
     out.steps = steps;
     out.rhs_evaluations = rhs_evaluations;
     return out;
@@ -241,6 +321,14 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                 return y;
             };
             auto values = [&](double s) { return events(block, phase, state(s), sys.ground.at(s), o.overturn_angle); };
+            // Bisections on the dense output stop at 1e-7 of the step (22 halvings of
+            // a quarter, not 37 to rounding): what they find is read on true steps.
+            const double width = 1e-7 * (t1 - t0);
+            std::optional<TrueStep> from_t0;
+            auto true_step = [&]() -> TrueStep& {
+                if (!from_t0) from_t0.emplace(sys, dense.previous_state(), t0);
+                return *from_t0;
+            };
             // Four looks inside the step: an event that comes and goes between
             // the step's ends (theta back over 0 within it) is still seen.
             double lo = t0, found = INFINITY;
@@ -252,20 +340,26 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                     // The peak of |theta| inside: where theta' turns.
                     const State ya = state(lo), yb = state(hi);
                     if (ya[1] * yb[1] < 0 && lo < t_fin) {
+                        // To `width` (at most 1e-8/p): theta there is off the peak by theta''
+                        // width^2/2 < 1e-16 (1 + |A|/g) rad.  A peak above the largest so far
+                        // is read on a true step.
                         double a = lo, b = hi;
-                        for (int it = 0; it < 200 && b - a > 2 * std::numeric_limits<double>::epsilon() * std::fabs(b); ++it) {
+                        for (int it = 0; it < 200 && b - a > std::max(width, 2 * std::numeric_limits<double>::epsilon() * std::fabs(b)); ++it) {
                             const double m = 0.5 * (a + b);
                             (state(m)[1] * ya[1] > 0 ? a : b) = m;
                         }
-                        track(std::min(a, t_fin), state(a));
+                        State peak = state(a), unused;
+                        if (std::fabs(peak[0]) > out.max_abs_theta_input) peak = true_step().at(a, unused);
+                        track(std::min(a, t_fin), peak);
                     }
                     track(hi, yb);
                 }
                 for (int k = 0; k < kEvents; ++k) {
                     if (!(v[k] < 0)) continue;
-                    // Bisect for the first time its value turns negative.
+                    // Bisect for the first time its value turns negative, to `width`:
+                    // locate_event takes it from there.
                     double a = lo, b = hi;
-                    for (int it = 0; it < 200 && b - a > 2 * std::numeric_limits<double>::epsilon() * std::fabs(b); ++it) {
+                    for (int it = 0; it < 200 && b - a > std::max(width, 2 * std::numeric_limits<double>::epsilon() * std::fabs(b)); ++it) {
                         const double m = 0.5 * (a + b);
                         (values(m)[k] < 0 ? b : a) = m;
                     }
@@ -280,9 +374,11 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                 continue;
             }
             // The event: the state there, the time in the regime, the transition.
+            const Located event = locate_event(sys, true_step(), t0, t1, found, which, o.overturn_angle);
+            found = event.t;
             out.time_in[static_cast<int>(phase.regime)] += found - t;
             t = found;
-            x = state(found);
+            x = event.x;
             track(t, x);
             balance(x, phase);
             changed = true;
@@ -326,6 +422,7 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                     const double xg = x[3] * R + d.dy * x[1], yg = -d.dx * x[1];
                     const Impact hit = corner_impact(block, phase.sigma, x[1], xg, yg);
                     ++out.impacts;
+                    if (out.impact_times.size() < o.max_impact_times) out.impact_times.push_back(t);
                     out.slipping_impacts += hit.slipped;
                     x[0] = 0;
                     // As the rocking-only ODE runs (rest_threshold): below rest_velocity or

@@ -2,9 +2,10 @@
 // input: event-driven.  Inside a regime the state is integrated by
 // Dormand-Prince 5(4) with dense output (Boost.Odeint, its steps ending on
 // the input's kinks, as the ODE solvers of stepper.hpp on a record) to the
-// stated tolerances; the regime changes are events located on the dense
-// output by bisection to rounding: an impact (theta reaching 0), the fall
-// (|theta| reaching the overturn angle), a slip starting (|f| reaching mu n
+// stated tolerances; the regime changes are events found on the dense
+// output and located on true steps (docs/sliding.md, Accuracy): an impact
+// (theta reaching 0), the fall (|theta| reaching the overturn angle), a
+// slip starting (|f| reaching mu n
 // on a stuck corner) or stopping (the pivot's or the base's velocity
 // reaching 0), a block at rest set going (|A| above g min(mu, tan alpha)),
 // and free flight (n reaching 0: outside the model, an error).  Beside the
@@ -13,6 +14,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,7 @@ struct SlidingOptions {
     double rest_velocity = 1e-9;  // |theta'| below max(rest_velocity, 10 atol) alpha p after an impact: the
                                   // block lies flat, and its slip rate below the same times R is 0
     long max_events = 1000000;    // a guard: beyond it, std::runtime_error (a second of events)
+    std::size_t max_impact_times = 1000000;  // impact_times keeps the first ones (8 bytes each)
     std::string describe() const;
 };
 
@@ -46,6 +49,7 @@ struct SlidingResult {
     double t_overturn = NAN;
     bool uplifted = false, slid = false;  // rocked, slipped at some time
     int impacts = 0, slipping_impacts = 0;
+    std::vector<double> impact_times;  // in order, the first options.max_impact_times of them
     long regime_changes = 0;
     double time_in[4] = {0, 0, 0, 0};  // seconds in each Regime (rest, slide, rock, slide-rock)
     // The energy balance per unit mass (J/kg): the input's work W = int A x_G' dt,
