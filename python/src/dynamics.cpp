@@ -115,7 +115,8 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
                      const std::optional<Real>& rtol_given, const std::optional<Real>& atol_given,
                      const std::optional<Text>& criterion_given, const py::object& restitution_given,
                      const Flag& paper_given, const std::optional<Real>& dt_given, const Real& free_time_given,
-                     const std::optional<Text>& floor_given, const py::object& friction_given, const py::kwargs& extra) {
+                     const std::optional<Text>& floor_given, const py::object& friction_given,
+                     const py::object& imperfection_given, const py::kwargs& extra) {
     no_other_keywords(extra, "simulate", "simulate");
     // Each argument converted, or refused naming it, in the signature's order.
     const dynamics::GivenBlock given = block_argument(thickness_given, height_given, half_height_given, alpha_given, p_given);
@@ -143,6 +144,19 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
         refuse("paper=True sets restitution 1 and the final-rotation criterion: give it without restitution and criterion");
     const double e = restitution_given.is_none() ? (paper ? 1.0 : NAN) : restitution_argument(restitution_given);
     model.restitution = std::isnan(e) ? housner_restitution(alpha) : e;
+    // An imperfect block (as rocking simulate --lean ...): each corner's own
+    // restitution unless one is given; the criteria by each side's alpha.
+    records::CollapseOptions refusal;
+    if (!friction_given.is_none()) refusal.friction = 1;  // imperfection_argument refuses the two together
+    const dynamics::Imperfection imp = imperfection_argument(imperfection_given, refusal);
+    if (imp.any()) {
+        try {
+            model = dynamics::imperfect_model(model.equation, given.block, imp, e);
+        } catch (const std::invalid_argument& err) {
+            refuse(std::string(err.what()) + " (imperfection on the block given)");
+        }
+    }
+    const double alpha_plus = imp.any() ? model.block.alpha : alpha, alpha_minus = model.symmetric() ? 0.0 : model.minus.alpha;
     SimulationOptions options;
     try {
         options.solver.kind = solver ? parse_solver(*solver)
@@ -181,7 +195,7 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
     } else if (one_sine) {
         if (!ap || !wp) refuse("one_sine needs ap and wp");
         const double slowest = OneSinePulse::slowest_wp_over_p * model.block.p;
-        const double strongest = OneSinePulse::strongest_ap_over_threshold * model.uplift_threshold();
+        const double strongest = OneSinePulse::strongest_ap_over_threshold * model.uplift_threshold_on(1);
         if (*wp > 0 && *wp < slowest)
             refuse("wp: must be at least 1e-6 p = " + significant(slowest, 6) + " rad/s (got " + significant(*wp, 17) +
                    "): slower pulses lift the block by less than the rounding of the input");
@@ -189,7 +203,7 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
             refuse("ap: must be at most 1e9 times the uplift threshold, " + significant(strongest, 6) + " g (got " +
                    significant(*ap, 17) + "): above it the fall time drifts from the closed form");
         try {
-            input = std::make_unique<OneSinePulse>(*ap, *wp, model.uplift_threshold());
+            input = std::make_unique<OneSinePulse>(*ap, *wp, model.uplift_threshold_on(1));
         } catch (const std::invalid_argument& err) {
             refuse(err.what());
         }
@@ -199,16 +213,16 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
         if (to.has_value() == x.has_value()) refuse("give exactly one of to and x");
         const char* to_name = to ? "to" : "x";
         if (!((to ? *to : *x) > 0)) refuse(std::string(to_name) + ": must be > 0");
-        const double to_s = to ? *to : *x / model.block.p;
+        const double to_s = to ? *to : *x / given.block.p;
         // A finite to > 0 is its own to_s; only x / p can leave the double range (the message
         // read *x, an empty optional, when to was given).
         if (!to && (!(to_s > 0) || !std::isfinite(to_s)))
-            refuse("x: x / p = " + significant(*x, 17) + " / " + significant(model.block.p, 17) +
+            refuse("x: x / p = " + significant(*x, 17) + " / " + significant(given.block.p, 17) +
                    " s is outside the range of double");
         if (pga.has_value() + q.has_value() + rd.has_value() != 1) refuse("give exactly one of pga, q and rd");
         const char* amplitude_name = rd ? "rd" : q ? "q" : "pga";
         if (!((rd ? *rd : q ? *q : *pga) > 0)) refuse(std::string(amplitude_name) + ": must be > 0");
-        const double peak_g = rd ? *rd * q_factor(t, model.block.p * to_s).q * alpha : pga ? *pga : *q * alpha;
+        const double peak_g = rd ? *rd * q_factor(t, model.block.p * to_s).q * alpha_plus : pga ? *pga : *q * alpha;
         if (!(peak_g > 0) || !std::isfinite(peak_g))
             refuse(std::string(amplitude_name) + ": the PGA it gives, " + significant(peak_g, 17) +
                    " g, is outside the range of double");
@@ -260,7 +274,8 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
     const std::string tolerance = options.solver.kind == SolverKind::exact
                                       ? std::string(" (closed form between events)")
                                       : " (" + tolerance_text(options.solver) + atol_rad + ")";
-    const bool collapse = r.collapse(criterion, alpha);
+    auto collapsed = [&](Criterion c) { return r.collapse(c, alpha_plus, alpha_minus); };
+    const bool collapse = collapsed(criterion);
     py::dict out = result();
     out["model"] = text(model.describe());
     out["preset"] = paper ? "paper" : "physical";
@@ -279,9 +294,14 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
     out["overturned"] = r.overturned;
     out["overturned_during_input"] = r.overturned_during_input;
     out["t_overturn"] = std::isnan(r.t_overturn) ? py::object(py::none()) : py::object(py::float_(r.t_overturn));
-    out["collapse_final_rotation"] = r.collapse(Criterion::final_rotation, alpha);
-    out["collapse_peak_rotation"] = r.collapse(Criterion::peak_rotation, alpha);
-    out["collapse_overturning"] = r.collapse(Criterion::overturning, alpha);
+    out["collapse_final_rotation"] = collapsed(Criterion::final_rotation);
+    out["collapse_peak_rotation"] = collapsed(Criterion::peak_rotation);
+    out["collapse_overturning"] = collapsed(Criterion::overturning);
+    if (imp.any()) {
+        out["imperfection"] = imperfection_dict(imp, given.block);
+        out["peak_plus_over_alpha_plus"] = r.peak_plus_input / model.block.alpha;
+        out["peak_minus_over_alpha_minus"] = r.peak_minus_input / model.alpha_on(-1);
+    }
     // What the text output and --output's notes state beside the JSON's fields.
     out["solver_description"] = solver_name(options.solver.kind) + tolerance;
     out["alpha"] = alpha;
@@ -316,7 +336,7 @@ void init_dynamics(py::module_& m) {
           "to"_a = py::none(), "x"_a = py::none(), "pga"_a = py::none(), "q"_a = py::none(), "rd"_a = py::none(),
           "one_sine"_a = false, "ap"_a = py::none(), "wp"_a = py::none(), "record"_a = py::none(),
           "model"_a = "linearised", "solver"_a = py::none(), "rtol"_a = py::none(), "atol"_a = py::none(),
-          "criterion"_a = py::none(), "restitution"_a = py::none(), "paper"_a = false, "dt"_a = 0.01, "free_time"_a = 0.0, "floor"_a = py::none(), "friction"_a = py::none(),
+          "criterion"_a = py::none(), "restitution"_a = py::none(), "paper"_a = false, "dt"_a = 0.01, "free_time"_a = 0.0, "floor"_a = py::none(), "friction"_a = py::none(), "imperfection"_a = py::none(),
           R"(`rocking simulate --json`: one block under a pulse train, a one-sine pulse or a record.
 
 Geometry: thickness and height (m, full dimensions: alpha = atan(B/H), eqs. 2, 4), or alpha with

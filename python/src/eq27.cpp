@@ -91,7 +91,8 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const st
               const std::optional<Real>& p_max_given, const Whole& p_points_given, const Real& q_max_given,
               const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed, const std::optional<Whole>& jobs,
               const Text& method_given, const std::optional<Real>& width_given,
-              const std::optional<Real>& robust_width_given, const py::object& restitution, const py::object& friction, const py::kwargs& extra) {
+              const std::optional<Real>& robust_width_given, const py::object& restitution, const py::object& friction, const py::object& imperfection,
+              const py::kwargs& extra) {
     no_other_keywords(extra, "eq27", "eq27");
     const std::optional<double> p_min = number(p_min_given, "p_min"), p_max = number(p_max_given, "p_max");
     const long long p_points_long = whole(p_points_given, "p_points");
@@ -113,6 +114,7 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const st
     o.ida.q_max = bounded(q_max, "q_max", o.ida.q_min, 1e4, "(1, 10000]");
     restitution_into(restitution, o.ida.model);
     friction_into(friction, restitution, o.ida.model);
+    imperfection_into(imperfection, o.ida.model);
     method_argument(method_given, width_given, robust_width_given, o.ida);
     const bool refine = o.ida.method == studies::IdaOptions::Method::refine;
     o.bootstrap.resamples = bootstrap_argument(bootstrap, seed, o.bootstrap.seed);
@@ -198,7 +200,7 @@ void init_eq27(py::module_& m) {
     m.def("eq27", gsl_checked(&eq27), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = py::none(),
           "p_max"_a = py::none(), "p_points"_a = 10, "q_max"_a = 20.0, "bootstrap"_a = py::none(), "seed"_a = py::none(),
           "jobs"_a = py::none(), "method"_a = "grid", "width"_a = py::none(), "robust_width"_a = py::none(),
-          "restitution"_a = "housner", "friction"_a = py::none(),
+          "restitution"_a = "housner", "friction"_a = py::none(), "imperfection"_a = py::none(),
           R"(`rocking eq27 --json`: each record's first collapse q on every block of the grid against eq. 27
 at x = p to_k; per to_k the share of non-conservative cases with its Wilson and bootstrap
 intervals, by record and the map over blocks.  p: p_points log-spaced from p_min (default 0.5) to

@@ -303,7 +303,7 @@ std::shared_ptr<Record> record_floor(py::handle record, const Real& period_given
 records::CollapseOptions collapse_options(const Real& alpha_given, const Text& model_given,
                                           const std::optional<Text>& solver_given,
                                           const std::optional<Text>& criterion_given, const py::object& restitution, const py::object& friction,
-                                          const std::optional<Real>& rtol_given, const std::optional<Real>& atol_given) {
+                                          const py::object& imperfection, const std::optional<Real>& rtol_given, const std::optional<Real>& atol_given) {
     const double alpha = number(alpha_given, "alpha");
     const std::string model = string_argument(model_given, "model");
     const std::optional<std::string> solver = string_argument(solver_given, "solver"),
@@ -329,6 +329,7 @@ records::CollapseOptions collapse_options(const Real& alpha_given, const Text& m
     o.housner_restitution = std::isnan(e);
     if (!o.housner_restitution) o.restitution = e;
     friction_into(friction, restitution, o);
+    imperfection_into(imperfection, o);
     if (o.friction > 0 && (model != "linearised" || solver))
         refuse("model and solver do not apply with friction: the sliding-rocking model has its full equations and its "
                "event-driven solver");
@@ -339,10 +340,11 @@ records::CollapseOptions collapse_options(const Real& alpha_given, const Text& m
 }
 
 py::dict collapse(py::handle record, const Real& alpha_given, const Text& model, const std::optional<Text>& solver,
-                  const std::optional<Text>& criterion, const py::object& restitution, const py::object& friction, const std::optional<Real>& rtol,
+                  const std::optional<Text>& criterion, const py::object& restitution, const py::object& friction,
+                  const py::object& imperfection, const std::optional<Real>& rtol,
                   const std::optional<Real>& atol, const py::kwargs& extra) {
     no_other_keywords(extra, "collapse", "collapse");
-    const records::CollapseOptions o = collapse_options(alpha_given, model, solver, criterion, restitution, friction, rtol, atol);
+    const records::CollapseOptions o = collapse_options(alpha_given, model, solver, criterion, restitution, friction, imperfection, rtol, atol);
     const double alpha = number(alpha_given, "alpha");
     const RecordPtr r = record_argument(record, "record");
     records::CollapseResult c;
@@ -368,7 +370,7 @@ py::dict collapse(py::handle record, const Real& alpha_given, const Text& model,
 py::dict assess(py::handle records_given, const std::optional<Real>& thickness, const std::optional<Real>& height,
                 const std::optional<Real>& half_height, const std::optional<Real>& alpha_given,
                 const std::optional<Real>& p_given, const Real& width_given, const py::object& restitution, const py::object& friction,
-                const std::optional<Text>& floor, const py::kwargs& extra) {
+                const py::object& imperfection, const std::optional<Text>& floor, const py::kwargs& extra) {
     no_other_keywords(extra, "assess", "assess");
     const dynamics::GivenBlock given = block_argument(thickness, height, half_height, alpha_given, p_given);
     const double alpha = given.alpha;
@@ -376,6 +378,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
     studies::AssessOptions o;
     restitution_into(restitution, o.model);
     friction_into(friction, restitution, o.model);
+    imperfection_into(imperfection, o.model);
     o.width = number(width_given, "width");
     if (!(o.width >= 1e-7 && o.width <= 0.1)) refuse("width: must be in [1e-7, 0.1] (got " + significant(o.width, 17) + ")");
     if (!studies::in_search_alpha_range(alpha))
@@ -552,12 +555,12 @@ idealised as its first mode (docs/floor_motion.md): a linear oscillator of perio
 ratio, with the floor's participation G = Gamma phi(z); a_f = a_g + G D'', exact for the record read
 linear between samples (Nigam & Jennings 1969), at its samples.  Releases the GIL.)");
     m.def("collapse", gsl_checked(&collapse), "record"_a, py::kw_only(), "alpha"_a, "model"_a = "linearised", "solver"_a = py::none(),
-          "criterion"_a = py::none(), "restitution"_a = "housner", "friction"_a = py::none(), "rtol"_a = py::none(), "atol"_a = py::none(),
+          "criterion"_a = py::none(), "restitution"_a = "housner", "friction"_a = py::none(), "imperfection"_a = py::none(), "rtol"_a = py::none(), "atol"_a = py::none(),
           R"(`rocking collapse --json`: Table 1's search, the first p (rad/s) raised from 0.3 by 1 % at which the
 record overturns the block, then refined.  Not a bound (docs/findings.md, T1b).  Releases the GIL.)");
     m.def("assess", gsl_checked(&assess), "record"_a, py::kw_only(), "thickness"_a = py::none(), "height"_a = py::none(),
           "half_height"_a = py::none(), "alpha"_a = py::none(), "p"_a = py::none(), "width"_a = 1e-3,
-          "restitution"_a = "housner", "friction"_a = py::none(), "floor"_a = py::none(),
+          "restitution"_a = "housner", "friction"_a = py::none(), "imperfection"_a = py::none(), "floor"_a = py::none(),
           R"(`rocking assess --json`: the block (thickness and height in m, or alpha with height, half_height or p)
 against one record or a list: eq. 27's check with its ratio and margin, the run on each record, the
 scale factors at which the block first overturns and first robustly collapses, the nearest

@@ -60,7 +60,8 @@ py::object boundary(const studies::Interval& in, bool lower) {
 py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min, const Real& p_max, const Whole& points,
                   const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
                   const std::optional<Real>& robust_width_given, const std::optional<Text>& mark_given,
-                  const py::object& restitution, const py::object& friction, const std::optional<Text>& floor, const py::kwargs& extra) {
+                  const py::object& restitution, const py::object& friction, const py::object& imperfection,
+                  const std::optional<Text>& floor, const py::kwargs& extra) {
     no_other_keywords(extra, "spectrum", "spectrum");
     // As rocking spectrum --mark: the marked blocks' alphas join alpha's.
     std::vector<double> alphas;
@@ -98,6 +99,7 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     }
     restitution_into(restitution, o.model);
     friction_into(friction, restitution, o.model);
+    imperfection_into(imperfection, o.model);
     const int threads = jobs_argument(jobs);
     const RecordPtr r = with_floor(record_argument(record, "record"), floor);
     std::vector<Study> found;
@@ -284,7 +286,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
                    const Whole& points, const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed,
                    const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
                    const std::optional<Real>& robust_width_given, const std::optional<Text>& block_given,
-                   const py::object& restitution, const py::object& friction, const Flag& nrml_given, const std::optional<Text>& floor,
+                   const py::object& restitution, const py::object& friction, const py::object& imperfection, const Flag& nrml_given, const std::optional<Text>& floor,
                    const py::kwargs& extra) {
     no_other_keywords(extra, "fragility", "fragility");
     const bool nrml = flag(nrml_given, "nrml");
@@ -329,6 +331,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         for (double v : ps) blocks.push_back({a, v, ""});
     restitution_into(restitution, o.ida.model);
     friction_into(friction, restitution, o.ida.model);
+    imperfection_into(imperfection, o.ida.model);
     std::vector<BlockFragility> study;
     {
         py::gil_scoped_release unlocked;
@@ -439,7 +442,7 @@ void init_studies(py::module_& m) {
     using namespace py::literals;
     m.def("spectrum", gsl_checked(&spectrum), "record"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = 0.3, "p_max"_a = 30.0,
           "points"_a = 200, "jobs"_a = py::none(), "method"_a = "grid", "width"_a = py::none(),
-          "robust_width"_a = py::none(), "mark"_a = py::none(), "restitution"_a = "housner", "friction"_a = py::none(), "floor"_a = py::none(),
+          "robust_width"_a = py::none(), "mark"_a = py::none(), "restitution"_a = "housner", "friction"_a = py::none(), "imperfection"_a = py::none(), "floor"_a = py::none(),
           R"(`rocking spectrum --json`: for each alpha (a number or a list), the overturning intervals in p
 (rad/s), each end bisected to 1e-6 and checked, beside Table 1's first collapse, and the grid: each
 spectrum's points as arrays (p, grid, max_theta, final_rotation, peak_rotation, overturning,
@@ -453,7 +456,7 @@ overturning p on either side and their heights).  An alpha given twice is refuse
     m.def("fragility", gsl_checked(&fragility), "records"_a, py::kw_only(), "alpha"_a = py::none(), "p"_a = py::none(),
           "q_max"_a = 20.0, "points"_a = 100, "bootstrap"_a = py::none(), "seed"_a = py::none(), "jobs"_a = py::none(),
           "method"_a = "grid", "width"_a = py::none(), "robust_width"_a = py::none(), "block"_a = py::none(),
-          "restitution"_a = "housner", "friction"_a = py::none(), "nrml"_a = false, "floor"_a = py::none(),
+          "restitution"_a = "housner", "friction"_a = py::none(), "imperfection"_a = py::none(), "nrml"_a = false, "floor"_a = py::none(),
           R"(`rocking fragility --json`: for each block (every alpha with every p) and record, the IDA's
 overturning intervals in q = PGA/(alpha g), the first collapse q or a censored point, the lognormal
 fit with a bootstrap interval (bootstrap=K, seed=S) and the empirical curve (as arrays q, share).

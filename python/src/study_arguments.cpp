@@ -102,6 +102,57 @@ void friction_into(const py::object& value, const py::object& restitution, recor
     model.friction = mu;
 }
 
+dynamics::Imperfection imperfection_argument(const py::object& value, const records::CollapseOptions& model) {
+    if (value.is_none()) return {};
+    if (!py::isinstance<py::dict>(value))
+        throw py::type_error("imperfection: expected a dict of lean, out_of_plumb (rad), fc (MPa), density (kg/m3), got " +
+                             std::string(py::str(py::type::of(value).attr("__name__"))));
+    dynamics::ImperfectionSpec spec;
+    for (const auto& [key, item] : py::cast<py::dict>(value)) {
+        const std::string k = py::str(key);
+        std::optional<double>* slot = k == "lean" ? &spec.lean : k == "out_of_plumb" ? &spec.out_of_plumb
+                                    : k == "fc" ? &spec.fc_mpa : k == "density" ? &spec.density : nullptr;
+        if (!slot) refuse("imperfection: unknown key '" + k + "' (lean, out_of_plumb, fc, density)");
+        *slot = number(py::cast<Real>(item), "imperfection['" + k + "']");
+    }
+    dynamics::Imperfection imp;
+    try {
+        imp = dynamics::imperfection_of(spec, [](const std::string& n) { return "imperfection['" + n + "']"; });
+    } catch (const std::invalid_argument& e) {
+        refuse(e.what());
+    }
+    if (imp.any() && model.friction > 0)
+        refuse("imperfection: friction does not apply to an imperfect block (the sliding-rocking model's block is a "
+               "perfect rectangle)");
+    return imp;
+}
+
+py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base) {
+    const dynamics::ImperfectGeometry g = dynamics::imperfect_geometry(base, imp);
+    auto corner = [](const dynamics::CornerGeometry& k) {
+        py::dict d;
+        d["alpha"] = k.alpha;
+        d["p"] = k.p;
+        d["R"] = k.R;
+        d["restitution_onto"] = k.restitution_onto;
+        return d;
+    };
+    py::dict d;
+    d["lean"] = imp.lean;
+    d["out_of_plumb"] = imp.out_of_plumb;
+    d["fc_mpa"] = imp.fc / 1e6;
+    d["density"] = imp.density;
+    d["sigma0_kpa"] = g.sigma0 / 1e3;
+    d["setback_m"] = g.setback;
+    d["corner_plus"] = corner(g.plus);
+    d["corner_minus"] = corner(g.minus);
+    return d;
+}
+
+void imperfection_into(const py::object& value, records::CollapseOptions& model) {
+    model.imperfection = imperfection_argument(value, model);
+}
+
 void restitution_into(const py::object& value, records::CollapseOptions& model) {
     const double e = restitution_argument(value);
     model.housner_restitution = std::isnan(e);

@@ -53,5 +53,13 @@ void restitution_into(const py::object& value, records::CollapseOptions& model);
 // (0, 1e6], refused beside a numeric restitution (the sliding-rocking
 // model's impacts follow from impulse and momentum).
 void friction_into(const py::object& value, const py::object& restitution, records::CollapseOptions& model);
+// imperfection={"lean": rad, "out_of_plumb": rad, "fc": MPa, "density": kg/m3}
+// (None: the perfect block), as --lean, --out-of-plumb, --fc, --density:
+// ValueError naming the key, refused beside friction.
+dynamics::Imperfection imperfection_argument(const py::object& value, const records::CollapseOptions& model);
+void imperfection_into(const py::object& value, records::CollapseOptions& model);
+// As rocking simulate --json's "imperfection": each corner's alpha, p, R and
+// restitution onto it, the setback and its stress.
+py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base);
 
 }  // namespace rocking::python

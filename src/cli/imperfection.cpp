@@ -35,11 +35,6 @@ void imperfection_into(const Args& a, records::CollapseOptions& model) {
     model.imperfection = imperfection_option(a);
 }
 
-dynamics::ImperfectGeometry geometry_of(const dynamics::Imperfection& imp, const dynamics::Block& base) {
-    const double R = base.R > 0 ? base.R : 3.0 * dynamics::kGravity / (4.0 * base.p * base.p);
-    return dynamics::imperfect_geometry(R * std::sin(base.alpha), R * std::cos(base.alpha), imp);
-}
-
 dynamics::Model imperfect_model_option(const Args& a, dynamics::Equation equation, const dynamics::GivenBlock& given,
                                        double restitution) {
     const dynamics::Imperfection imp = imperfection_option(a);
@@ -51,7 +46,7 @@ dynamics::Model imperfect_model_option(const Args& a, dynamics::Equation equatio
 }
 
 std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base) {
-    const dynamics::ImperfectGeometry g = geometry_of(imp, base);
+    const dynamics::ImperfectGeometry g = dynamics::imperfect_geometry(base, imp);
     auto corner = [](const dynamics::CornerGeometry& k) {
         return "{\"alpha\": " + json_number(k.alpha) + ", \"p\": " + json_number(k.p) + ", \"R\": " + json_number(k.R) +
                ", \"restitution_onto\": " + json_number(k.restitution_onto) + "}";

@@ -37,7 +37,4 @@ dynamics::Model imperfect_model_option(const Args& a, dynamics::Equation equatio
 // setback and its stress.
 std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base);
 
-// The imperfection's geometry on the block (alpha, p) (R from p when unknown).
-dynamics::ImperfectGeometry geometry_of(const dynamics::Imperfection& imp, const dynamics::Block& base);
-
 }  // namespace rocking::cli

@@ -237,7 +237,7 @@ int cmd_simulate(int argc, char** argv) {
                     describe_block(given).c_str(),
                     input->describe().c_str(), solver_name(options.solver.kind).c_str(), tolerance.c_str());
         if (imp.any()) {
-            std::printf("  %s\n", describe_imperfection(imp, geometry_of(imp, given.block)).c_str());
+            std::printf("  %s\n", describe_imperfection(imp, imperfect_geometry(given.block, imp)).c_str());
             std::printf("  largest theta/alpha_+ = %.10g, -theta/alpha_- = %.10g during the input (each side by its "
                         "own alpha; below, theta is in units of the alpha given)\n",
                         r.peak_plus_input / model.block.alpha, r.peak_minus_input / model.alpha_on(-1));

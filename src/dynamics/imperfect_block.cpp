@@ -104,9 +104,13 @@ ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imp
     return g;
 }
 
-Model imperfect_model(Equation equation, const Block& base, const Imperfection& imp, double restitution) {
+ImperfectGeometry imperfect_geometry(const Block& base, const Imperfection& imp) {
     const double R = base.R > 0 ? base.R : 3.0 * kGravity / (4.0 * base.p * base.p);
-    const ImperfectGeometry g = imperfect_geometry(R * std::sin(base.alpha), R * std::cos(base.alpha), imp);
+    return imperfect_geometry(R * std::sin(base.alpha), R * std::cos(base.alpha), imp);
+}
+
+Model imperfect_model(Equation equation, const Block& base, const Imperfection& imp, double restitution) {
+    const ImperfectGeometry g = imperfect_geometry(base, imp);
     Model m;
     m.equation = equation;
     m.block = {g.plus.alpha, g.plus.p, g.plus.R};

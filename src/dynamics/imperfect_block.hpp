@@ -73,6 +73,11 @@ struct ImperfectGeometry {
 // leaves (0, pi/4), or the weight crushes the base (sigma0 >= 0.85 fc).
 ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imperfection);
 
+// The same for a symmetric block `base` given by its alpha and R, or its p,
+// which gives R = 3 g / (4 p^2) (eq. 4) and the half-dimensions R sin alpha,
+// R cos alpha.
+ImperfectGeometry imperfect_geometry(const Block& base, const Imperfection& imperfection);
+
 // The model of `base` (a symmetric block: its alpha and R, or its p, which
 // gives R = 3 g / (4 p^2) and the half-dimensions R sin alpha, R cos alpha)
 // with the imperfections.  restitution: a factor for both corners, or NaN

@@ -1,0 +1,147 @@
+#!/usr/bin/env bash
+# Imperfect blocks from the command line and Python (issue 41): --lean,
+# --out-of-plumb, --fc, --density.  Each corner's geometry against the
+# formulas recomputed here (NTC 2018 eq. 7.8.2's setback included); the
+# collapse of a leaning block under case 2 at eq. 15's PGA on its weaker
+# corner, evaluated here; the set-back block's uplift at tan(alpha') =
+# b'/h; Python's simulate equal to --json; a spectrum and an IDA of a
+# leaning block whose every boundary simulate confirms on either side; the
+# refusals.
+#
+#   tests/imperfect_cli_test.sh ROCKING [PYTHONPATH]
+set -u
+rocking="$1"
+pypath="${2:-}"
+py=/usr/bin/python3
+source "$(dirname "$0")/check_lib.sh"
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+
+# The corners of a 0.4 x 3 m wall 0.02 rad out of plumb, pivots set back by fc 2 MPa.
+"$rocking" simulate --case 2 --x 1 --rd 0.5 --thickness 0.4 --height 3 --out-of-plumb 0.02 --fc 2 --density 2000 \
+    --json >"$tmp/g.json" || { echo "FAIL: simulate --out-of-plumb --fc"; fail=1; }
+if $py - "$tmp/g.json" <<'PY'
+import json, math, sys
+d = json.load(open(sys.argv[1]))["imperfection"]
+g, b, h, phi, fc, rho = 9.81, 0.2, 1.5, 0.02, 2e6, 2000.0
+sigma0 = rho * g * 2 * h
+mu_ntc = (2 * b) ** 2 * sigma0 / 2 * (1 - sigma0 / (0.85 * fc))   # NTC 2018 eq. 7.8.2, per unit thickness
+bp = mu_ntc / (sigma0 * 2 * b)                                     # the weight's arm about the pivot
+e = h * math.tan(phi)
+k2 = (b * b + e * e + h * h) / 3
+rp, rm = (e - bp, h), (e + bp, h)
+for key, r, side in (("corner_plus", rp, 1), ("corner_minus", rm, -1)):
+    R = math.hypot(*r)
+    want = {"alpha": math.atan2(-side * r[0], r[1]), "R": R, "p": math.sqrt(g * R / (k2 + R * R)),
+            "restitution_onto": (k2 + rp[0] * rm[0] + h * h) / (k2 + R * R)}
+    for k, v in want.items():
+        assert abs(d[key][k] - v) < 1e-12 * abs(v), (key, k, d[key][k], v)
+assert abs(d["setback_m"] - (b - bp)) < 1e-15 and abs(d["sigma0_kpa"] - sigma0 / 1e3) < 1e-9, d
+PY
+then echo "ok: corners and setback against NTC 2018 eq. 7.8.2"; else echo "FAIL: corners and setback"; fail=1; fi
+
+# A block 0.1 rad leaning 0.02 rad rocks under case 2 on its corner theta > 0 (alpha 0.08):
+# eq. 15 at x = p to gives its collapse PGA q2 alpha_+ g; just above it theta(t_fin) passes
+# alpha_+, just below it does not (final-rotation criterion, no impact).
+if $py - "$rocking" <<'PY'
+import json, math, subprocess, sys
+rocking = sys.argv[1]
+x = 1.3
+c = math.cosh(x)
+q2 = (4 * c * c - 2) / (4 * c * c - 3 * c - 1)                    # eq. 15
+pga = q2 * (0.1 - 0.02)
+def run(f):
+    out = subprocess.run([rocking, "simulate", "--case", "2", "--x", repr(x), "--pga", repr(pga * f), "--alpha", "0.1",
+                          "--height", "2", "--lean", "0.02", "--criterion", "final-rotation", "--json"],
+                         capture_output=True, check=True).stdout
+    return json.loads(out)
+hi, lo = run(1 + 1e-9), run(1 - 1e-9)
+assert hi["collapse"] and not lo["collapse"], (hi["collapse"], lo["collapse"])
+assert hi["peak_plus_over_alpha_plus"] >= 1 - 1e-7, hi["peak_plus_over_alpha_plus"]
+assert hi["peak_minus_over_alpha_minus"] == 0
+assert "imperfect, on theta < 0: alpha = 0.12" in hi["model"], hi["model"]
+PY
+then echo "ok: a leaning block collapses at eq. 15's PGA on its weaker corner"; else echo "FAIL: eq. 15 on the leaning block"; fail=1; fi
+
+# Pivots set back: the full equation's block lifts above tan(alpha') = b'/h, not below.
+if $py - "$rocking" <<'PY'
+import json, subprocess, sys
+rocking = sys.argv[1]
+g, b, h, fc, rho = 9.81, 0.15, 1.0, 1.0e6, 1800.0
+sigma0 = rho * g * 2 * h
+thr = b * (1 - sigma0 / (0.85 * fc)) / h
+def lifts(f):
+    out = subprocess.run([rocking, "simulate", "--train", "1:1", "--to", "0.5", "--pga", repr(thr * f), "--thickness",
+                          "0.3", "--height", "2", "--model", "full", "--fc", "1", "--json"], capture_output=True, check=True).stdout
+    return json.loads(out)["max_theta_input_over_alpha"] > 0
+assert lifts(1 + 1e-6) and not lifts(1 - 1e-6)
+PY
+then echo "ok: the set-back block lifts at b'/h"; else echo "FAIL: set-back uplift"; fail=1; fi
+
+# Python's simulate(imperfection=...) is rocking simulate --json.
+if [[ -n "$pypath" ]]; then
+    "$rocking" simulate --case 4 --x 2 --rd 1.2 --alpha 0.15 --p 2 --lean -0.01 --out-of-plumb 0.015 --json >"$tmp/c.json"
+    if PYTHONPATH="$pypath" $py - "$tmp/c.json" <<'PY'
+import json, sys
+import rocking_q as rq
+cli = json.load(open(sys.argv[1]))
+d = rq.simulate(case=4, x=2, rd=1.2, alpha=0.15, p=2, imperfection={"lean": -0.01, "out_of_plumb": 0.015})
+for k in ("model", "collapse", "impacts", "max_theta_input_over_alpha", "peak_plus_over_alpha_plus",
+          "peak_minus_over_alpha_minus", "imperfection", "collapse_peak_rotation"):
+    assert d[k] == cli[k], (k, d[k], cli[k])
+for bad, msg in (({"lean": 1}, "imperfection['lean']: an angle"), ({"tilt": 0.1}, "unknown key 'tilt'"),
+                 ({"density": 2000}, "imperfection['density'] goes with imperfection['fc']")):
+    try:
+        rq.simulate(case=4, x=2, rd=1.2, alpha=0.15, p=2, imperfection=bad)
+        raise SystemExit("accepted %r" % bad)
+    except ValueError as e:
+        assert msg in str(e), (msg, str(e))
+PY
+    then echo "ok: Python simulate(imperfection=) is --json"; else echo "FAIL: Python simulate(imperfection=)"; fail=1; fi
+fi
+
+# A leaning block's spectrum and IDA on a synthetic record: every boundary confirmed by
+# simulate --lean on either side; the model states the lean.
+"$rocking" record synth --stochastic 3 --dt 0.01 --duration 15 --output "$tmp/s.txt" >/dev/null || { echo "FAIL: synth"; exit 1; }
+"$rocking" spectrum "$tmp/s.txt" --unit m/s2 --alpha 0.1 --points 30 --p-min 1 --p-max 10 --lean 0.03 --json >"$tmp/sp.json" \
+    || { echo "FAIL: spectrum --lean"; fail=1; }
+"$rocking" fragility "$tmp/s.txt" --unit m/s2 --alpha 0.1 --p 4 --points 30 --q-max 5 --lean 0.03 --json >"$tmp/fr.json" \
+    || { echo "FAIL: fragility --lean"; fail=1; }
+if $py - "$tmp/sp.json" "$tmp/fr.json" "$rocking" "$tmp/s.txt" <<'PY'
+import json, subprocess, sys
+sp, fr = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+rocking, record = sys.argv[3], sys.argv[4]
+def falls(*args):
+    out = subprocess.run([rocking, "simulate", "--record", record, "--unit", "m/s2", "--lean", "0.03", "--alpha", "0.1", *args,
+                          "--json"], capture_output=True, check=True).stdout
+    return json.loads(out)["collapse_overturning"]
+for d in (sp, fr):
+    assert "lean 0.03 rad" in d["model"], d["model"]
+seen = 0
+for iv in sp["spectra"][0]["intervals"]:
+    for end in ("lower", "upper"):
+        b = iv.get(end)
+        if b:
+            assert falls("--p", repr(b["p_collapse"])) and not falls("--p", repr(b["p_safe"])), (end, b)
+            seen += 1
+assert seen >= 1, sp["spectra"][0]["intervals"]
+ida = fr["blocks"][0]["records"][0]
+assert ida["collapsed"] and ida["point_check"]["confirmation"] == "confirmed", ida
+for iv in ida["intervals"][:3]:
+    for end in ("lower", "upper"):
+        b = iv.get(end)
+        if b:
+            assert falls("--p", "4", "--q", repr(b["q_collapse"])) and not falls("--p", "4", "--q", repr(b["q_safe"])), (end, b)
+PY
+then echo "ok: a leaning block's spectrum and IDA boundaries"; else echo "FAIL: leaning spectrum and IDA"; fail=1; fi
+
+base=(--case 2 --x 1 --rd 0.5 --alpha 0.1 --height 2)
+check "a lean beyond alpha" "on its corner theta > 0 alpha = -0.1 rad: the centre of gravity is beyond the pivot" \
+    "$rocking" simulate "${base[@]}" --lean 0.2
+status "a lean beyond alpha" 2 "$rocking" simulate "${base[@]}" --lean 0.2
+check "an angle beyond pi/4" "--out-of-plumb: an angle in rad within (-pi/4, pi/4)" "$rocking" simulate "${base[@]}" --out-of-plumb 1
+check "density without fc" "--density goes with --fc" "$rocking" simulate "${base[@]}" --density 2000
+check "a crushing base" "the block's weight crushes its base" "$rocking" simulate "${base[@]}" --fc 0.02
+check "no friction with a lean" "--friction does not apply to an imperfect block" "$rocking" simulate "${base[@]}" --lean 0.01 --friction 0.6
+check "a study states the lean" "lean 0.01 rad" "$rocking" collapse "$tmp/s.txt" --unit m/s2 --alpha 0.1 --lean 0.01
+exit $fail
