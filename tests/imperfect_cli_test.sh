@@ -135,6 +135,33 @@ for iv in ida["intervals"][:3]:
 PY
 then echo "ok: a leaning block's spectrum and IDA boundaries"; else echo "FAIL: leaning spectrum and IDA"; fail=1; fi
 
+# Batch rows take lean, out_of_plumb, fc and density columns: the commands' runs.
+cat >"$tmp/m.csv" <<CSV
+kind,record,unit,alpha,p,lean,out_of_plumb,fc,density
+simulate,s.txt,m/s2,0.1,4,0.03,,,
+simulate,s.txt,m/s2,0.1,4,,0.02,2,2000
+collapse,s.txt,m/s2,0.1,,0.03,,,
+simulate,s.txt,m/s2,0.1,4,1,,,
+CSV
+"$rocking" batch "$tmp/m.csv" --output "$tmp/mo.csv" >/dev/null 2>&1
+if $py - "$tmp/mo.csv" "$rocking" "$tmp/s.txt" <<'PY'
+import csv, json, subprocess, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+rocking, record = sys.argv[2], sys.argv[3]
+def cli(*args):
+    return json.loads(subprocess.run([rocking, *args, "--json"], capture_output=True, check=True).stdout)
+a = cli("simulate", "--record", record, "--unit", "m/s2", "--alpha", "0.1", "--p", "4", "--lean", "0.03")
+b = cli("simulate", "--record", record, "--unit", "m/s2", "--alpha", "0.1", "--p", "4", "--out-of-plumb", "0.02", "--fc", "2",
+        "--density", "2000")
+c = cli("collapse", record, "--unit", "m/s2", "--alpha", "0.1", "--lean", "0.03")
+assert float(rows[0]["max_theta"]) == a["max_theta_input_over_alpha"] and int(rows[0]["impacts"]) == a["impacts"], (rows[0], a)
+assert float(rows[1]["max_theta"]) == b["max_theta_input_over_alpha"], (rows[1], b)
+assert rows[0]["model_used"] == "linearised imperfect lean 0.03 out_of_plumb 0" and rows[0]["restitution_used"] == "per corner"
+assert float(rows[2]["p_collapse"]) == c["p"], (rows[2], c)
+assert rows[3]["status"] == "error" and "lean: an angle in rad within (-pi/4, pi/4)" in rows[3]["error"], rows[3]
+PY
+then echo "ok: batch rows of imperfect blocks are the commands' runs"; else echo "FAIL: batch imperfect rows"; fail=1; fi
+
 base=(--case 2 --x 1 --rd 0.5 --alpha 0.1 --height 2)
 check "a lean beyond alpha" "on its corner theta > 0 alpha = -0.1 rad: the centre of gravity is beyond the pivot" \
     "$rocking" simulate "${base[@]}" --lean 0.2

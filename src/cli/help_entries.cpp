@@ -42,7 +42,7 @@ collapse q theta grows like e^(x t/to): the rows stop where it leaves the double
 const char* kSimulate = R"(
 rocking simulate INPUT BLOCK [--paper] [--model M] [--solver S] [--rtol R] [--atol A]
                  [--criterion C] [--restitution E|housner] [--output FILE [--dt DT]]
-                 [--friction MU] [--json]
+                 [--friction MU | --lean RAD --out-of-plumb RAD --fc MPA --density KG/M3] [--json]
 )";
 const char* kSimulateDetails = R"(
 One block under a pulse train, a one-sine pulse or a record, with impacts, the free rocking
@@ -84,6 +84,13 @@ The model (default: see The model):
                     solver at --rtol/--atol (default 1e-9); adds the base's slip (m), the time in
                     each regime and the energy balance; without --model, --solver,
                     --restitution, --output and --paper (docs/sliding.md)
+  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
+                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
+  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
+                    alpha, p and restitution
+  --fc MPA          the masonry's compressive strength: the pivots set back by half the
+                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
+                    --density KG/M3 (default 1800) gives that weight; none with --friction
 Output:
   --output FILE     writes t (s), theta/alpha, theta'/(alpha p) every --dt DT s (default 0.01), at
                     most 10^6 rows: a --dt that could write more over t_fin and the free rocking
@@ -174,6 +181,13 @@ spectrum finds every interval).
   --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
                     model (docs/sliding.md: full equations, impacts without rebound, its own
                     event-driven solver); without --restitution
+  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
+                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
+  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
+                    alpha, p and restitution
+  --fc MPA          the masonry's compressive strength: the pivots set back by half the
+                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
+                    --density KG/M3 (default 1800) gives that weight; none with --friction
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --json            machine-readable output
@@ -216,6 +230,13 @@ named in the output. For each record:
   --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
                     model (docs/sliding.md: full equations, impacts without rebound, its own
                     event-driven solver); without --restitution
+  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
+                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
+  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
+                    alpha, p and restitution
+  --fc MPA          the masonry's compressive strength: the pivots set back by half the
+                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
+                    --density KG/M3 (default 1800) gives that weight; none with --friction
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --png PNG         the check on one record (gnuplot): above, max |theta|/alpha of 300 runs of
@@ -260,6 +281,13 @@ missed.
   --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
                     model (docs/sliding.md: full equations, impacts without rebound, its own
                     event-driven solver); without --restitution
+  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
+                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
+  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
+                    alpha, p and restitution
+  --fc MPA          the masonry's compressive strength: the pivots set back by half the
+                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
+                    --density KG/M3 (default 1800) gives that weight; none with --friction
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      the grid: alpha, p, grid, max |theta|/alpha, the three criteria, t_overturn
@@ -309,6 +337,13 @@ given twice (the same samples, whatever the path) is refused.
   --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
                     model (docs/sliding.md: full equations, impacts without rebound, its own
                     event-driven solver); without --restitution
+  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
+                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
+  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
+                    alpha, p and restitution
+  --fc MPA          the masonry's compressive strength: the pivots set back by half the
+                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
+                    --density KG/M3 (default 1800) gives that weight; none with --friction
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      one row per block and record
@@ -351,6 +386,13 @@ alpha or a record given twice (the same samples, whatever the path) is refused.
   --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
                     model (docs/sliding.md: full equations, impacts without rebound, its own
                     event-driven solver); without --restitution
+  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
+                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
+  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
+                    alpha, p and restitution
+  --fc MPA          the masonry's compressive strength: the pivots set back by half the
+                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
+                    --density KG/M3 (default 1800) gives that weight; none with --friction
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      the map: per block, the records non-conservative for each to_k

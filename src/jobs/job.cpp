@@ -28,7 +28,8 @@ const std::vector<std::string>& manifest_columns() {
     static const std::vector<std::string> names = {
         "id",   "kind",        "record",      "unit",   "record_dt", "alpha",     "p",      "height",
         "half_height", "scaling", "model", "solver", "rtol",      "atol",      "restitution", "criterion",
-        "q_max", "points",     "p_min",       "p_max",  "method",    "width",     "robust_width", "friction"};
+        "q_max", "points",     "p_min",       "p_max",  "method",    "width",     "robust_width", "friction",
+        "lean", "out_of_plumb", "fc", "density"};
     return names;
 }
 
@@ -237,6 +238,17 @@ void model_from(const Columns& c, const std::vector<std::string>& row, Job& job)
                 bad(other, "does not apply with friction (the sliding-rocking model has its full equations, impact law "
                            "and event-driven solver)");
     }
+    // As --lean, --out-of-plumb, --fc, --density (issue 41): an imperfect block.
+    auto given = [&](const char* column) -> std::optional<double> {
+        const std::string& v = c.cell(row, column);
+        if (v.empty()) return std::nullopt;
+        return number(column, v);
+    };
+    job.imperfection = dynamics::imperfection_of({given("lean"), given("out_of_plumb"), given("fc"), given("density")},
+                                                 [](const std::string& n) { return n; });
+    if (job.imperfection.any() && job.friction > 0)
+        bad("friction", "does not apply to an imperfect block (lean, out_of_plumb, fc): the sliding-rocking model's block "
+                        "is a perfect rectangle");
     const std::string& criterion = c.cell(row, "criterion");
     job.criterion = dynamics::Criterion::overturning;
     if (!criterion.empty()) {
@@ -280,7 +292,8 @@ Job parse_job(const Columns& c, const std::vector<std::string>& row, const std::
     job.kind = kind_from(c.cell(row, "kind"));
     for (const std::string& name : c.names()) {
         static const std::set<std::string> common = {"id",  "kind", "record", "unit", "record_dt", "alpha", "model",
-                                                     "solver", "rtol", "atol", "restitution", "criterion", "friction"};
+                                                     "solver", "rtol", "atol", "restitution", "criterion", "friction",
+                                                     "lean", "out_of_plumb", "fc", "density"};
         if (!c.cell(row, name).empty() && !common.count(name) && !own_columns(job.kind).count(name))
             bad(name, "does not apply to " + std::string(job.kind == Kind::ida ? "an " : "a ") + kind_name(job.kind) + " job (" + why_not(job.kind, name) + ")");
     }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/imperfect_block.hpp"
 #include "dynamics/model.hpp"
 #include "dynamics/simulate.hpp"
 
@@ -67,6 +68,7 @@ struct Job {
     double restitution = 1;                // otherwise
     dynamics::Criterion criterion = dynamics::Criterion::final_rotation;
     double friction = 0;                   // > 0: the sliding-rocking model (issue 41), rtol from the rtol column
+    dynamics::Imperfection imperfection{}; // lean, out_of_plumb, fc, density columns (issue 41)
     double q_max = 20;                     // ida
     int points = 0;                        // ida (q) and spectrum (p): the grid's points
     double p_min = 0.3, p_max = 30;        // spectrum, rad/s

@@ -1,5 +1,7 @@
 #include "jobs/result_row.hpp"
 
+#include <cstdio>
+
 #include "records/collapse.hpp"
 
 #include "batch/manifest.hpp"
@@ -85,9 +87,22 @@ std::string result_row(int line, const std::vector<std::string>& echo, const Job
                                                                                                      : records::CollapseOptions{}.sliding_rtol));
             cells.push_back("impulse and momentum");
         } else {
-            cells.push_back(job->equation == dynamics::Equation::linearised ? "linearised" : "full");
+            std::string model = job->equation == dynamics::Equation::linearised ? "linearised" : "full";
+            const dynamics::Imperfection& imp = job->imperfection;
+            if (imp.any()) {  // as the manifest's cells give them (%g: 0.03, not 0.029999999999999999)
+                char text[160];
+                std::snprintf(text, sizeof text, " imperfect lean %g out_of_plumb %g", imp.lean, imp.out_of_plumb);
+                model += text;
+                if (imp.fc > 0) {
+                    std::snprintf(text, sizeof text, " fc %g density %g", imp.fc / 1e6, imp.density);
+                    model += text;
+                }
+            }
+            cells.push_back(model);
             cells.push_back(job->solver_text());
-            cells.push_back(harness::format_number(job->restitution_factor()));
+            // An imperfect block's Housner restitution is each corner's own (docs/imperfect.md).
+            cells.push_back(imp.any() && job->housner ? std::string("per corner")
+                                                      : harness::format_number(job->restitution_factor()));
         }
         cells.push_back(dynamics::criterion_name(job->criterion));
         cells.push_back(job->block ? harness::format_number(job->block->p) : "");

@@ -34,6 +34,7 @@ records::CollapseOptions search_model(const Job& job) {
     o.restitution = job.restitution;
     o.criterion = job.criterion;
     o.friction = job.friction;
+    o.imperfection = job.imperfection;
     if (job.friction > 0 && job.solver.rtol != dynamics::SolverOptions{}.rtol) o.sliding_rtol = job.solver.rtol;
     return o;
 }
@@ -41,7 +42,8 @@ records::CollapseOptions search_model(const Job& job) {
 Figures simulate(const Job& job, const SampledInput& input) {
     // A friction row runs as the searches run it (records::simulate_block), in a rocking run's terms.
     const dynamics::SimulationResult r = [&] {
-        if (job.friction > 0) return records::simulate_block(input, job.alpha, job.block->p, search_model(job));
+        if (job.friction > 0 || job.imperfection.any())
+            return records::simulate_block(input, job.alpha, job.block->p, search_model(job));
         dynamics::Model model;
         model.equation = job.equation;
         model.block = *job.block;
@@ -51,7 +53,8 @@ Figures simulate(const Job& job, const SampledInput& input) {
         return dynamics::simulate(model, input, options);
     }();
     Figures f;
-    f.collapse = r.collapse(job.criterion, job.alpha);
+    f.collapse = job.imperfection.any() ? records::run_collapses(r, job.criterion, job.alpha, job.block->p, search_model(job))
+                                        : r.collapse(job.criterion, job.alpha);
     f.max_theta = r.max_abs_theta_input / job.alpha;
     if (!r.overturned_during_input) f.theta_tfin = r.theta_at_tfin / job.alpha;
     // As rocking simulate refuses them: a rotation beyond a double in units of alpha.
