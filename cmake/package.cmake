@@ -19,10 +19,12 @@ set(ROCKING_PUBLIC_HEADERS
   qfactor/superposition.hpp
   qfactor/closed_forms.hpp
   qfactor/printed.hpp
+  qfactor/imperfect_q.hpp
   dynamics/model.hpp
   dynamics/ground_input.hpp
   dynamics/stepper.hpp
   dynamics/simulate.hpp
+  dynamics/imperfect_block.hpp
   records/record.hpp
   records/measures.hpp
   records/collapse.hpp

@@ -39,6 +39,43 @@ PY
 then echo "ok: friction 1e6 is the full model"; else echo "FAIL: friction 1e6 against --model full"; fail=1; fi
 rm -f "${TMPDIR:-/tmp}/friction.$$.json" "${TMPDIR:-/tmp}/full.$$.json"
 
+# --output: theta(t) and the slip every --dt.  Newmark's slip at each row of the slide, and at
+# friction 1e6 the rocking-only full model's theta(t) while the block has not slipped.
+"$rocking" simulate --train 1:1 --to 0.4 --pga 0.5 --alpha 0.3 --height 2 --friction 0.2 --rtol 1e-12 \
+    --output "${TMPDIR:-/tmp}/slide.$$.csv" --dt 0.05 >/dev/null
+"$rocking" simulate --case 1 --x 1.5 --rd 0.9 --alpha 0.2 --height 3 --friction 1e6 --rtol 1e-11 \
+    --output "${TMPDIR:-/tmp}/stuck.$$.csv" --dt 0.001 >/dev/null
+"$rocking" simulate --case 1 --x 1.5 --rd 0.9 --alpha 0.2 --height 3 --model full --rtol 1e-11 \
+    --output "${TMPDIR:-/tmp}/rock.$$.csv" --dt 0.001 >/dev/null
+if $py - "${TMPDIR:-/tmp}/slide.$$.csv" "${TMPDIR:-/tmp}/stuck.$$.csv" "${TMPDIR:-/tmp}/rock.$$.csv" <<'PY'
+import csv, sys
+def rows(f):
+    return list(csv.DictReader(l for l in open(f) if not l.startswith("#")))
+g, a, mu, T = 9.81, 0.5, 0.2, 0.4
+vT = (a - mu) * g * T
+slide = rows(sys.argv[1])
+assert len(slide) >= 19, len(slide)
+for r in slide:
+    t = float(r["t"])
+    if t <= T:
+        want, rate = 0.5 * (a - mu) * g * t * t, (a - mu) * g * t
+    else:
+        want, rate = 0.5 * (a - mu) * g * T * T + vT * (t - T) - 0.5 * mu * g * (t - T) ** 2, vT - mu * g * (t - T)
+    assert abs(float(r["slip_m"]) - want) < 1e-9 and abs(float(r["slip_rate_m_s"]) - rate) < 1e-9, (r, want, rate)
+    assert r["regime"] == ("rest" if t == 0 else "slide") and float(r["theta_over_alpha"]) == 0, r
+stuck, rock = rows(sys.argv[2]), rows(sys.argv[3])
+n = 0
+for s, r in zip(stuck, rock):
+    if s["regime"] == "slide_rock" or abs(float(r["theta_over_alpha"])) > 1:
+        break
+    assert s["t"] == r["t"] and abs(float(s["theta_over_alpha"]) - float(r["theta_over_alpha"])) < 1e-7, (s, r)
+    assert float(s["slip_m"]) == 0, s
+    n += 1
+assert n > 1000, n
+PY
+then echo "ok: --output with friction: Newmark's slip per row, the full model's theta(t)"; else echo "FAIL: --output with friction"; fail=1; fi
+rm -f "${TMPDIR:-/tmp}/slide.$$.csv" "${TMPDIR:-/tmp}/stuck.$$.csv" "${TMPDIR:-/tmp}/rock.$$.csv"
+
 base=(--case 1 --x 1.5 --rd 0.9 --alpha 0.2 --height 3)
 check "friction states its model" "Coulomb friction mu = 0.6" "$rocking" simulate "${base[@]}" --friction 0.6
 check "friction states its solver" "event-driven Dormand-Prince 5(4), rtol 1e-09" "$rocking" simulate "${base[@]}" --friction 0.6

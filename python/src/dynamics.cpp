@@ -52,11 +52,12 @@ std::unique_ptr<GroundInput> record_input(const records::Record& r, const std::o
 
 // simulate(friction=MU), as rocking simulate --friction --json (src/cli/simulate_friction.cpp).
 py::dict sliding_result(const dynamics::GivenBlock& given, const GroundInput& input, Criterion criterion,
-                        const records::CollapseOptions& m) {
+                        const records::CollapseOptions& m, double record_dt) {
     const double alpha = given.alpha, p = given.block.p;
     const sliding::FrictionBlock block{alpha, 3 * kGravity / (4 * p * p), m.friction};
     sliding::SlidingOptions o;
     o.rtol = o.atol_alpha = m.sliding_rtol;
+    o.record_dt = record_dt;
     sliding::SlidingResult r;
     {
         py::gil_scoped_release unlocked;
@@ -101,6 +102,23 @@ py::dict sliding_result(const dynamics::GivenBlock& given, const GroundInput& in
         std::replace(key.begin(), key.end(), '-', '_');
         out[py::str(key)] = r.collapse(c, alpha);
     }
+    // theta(t) and the slip every dt, as --output's rows.
+    std::vector<double> t, theta, omega, slip, rate;
+    py::list regime;
+    for (const sliding::SlidingSample& s : r.samples) {
+        t.push_back(s.t);
+        theta.push_back(s.theta);
+        omega.push_back(s.omega);
+        slip.push_back(s.slip);
+        rate.push_back(s.slip_rate);
+        regime.append(sliding::regime_name(s.regime));
+    }
+    out["t"] = to_array(t);
+    out["theta"] = to_array(theta);
+    out["omega"] = to_array(omega);
+    out["slip_m"] = to_array(slip);
+    out["slip_rate_m_s"] = to_array(rate);
+    out["regime"] = regime;
     return out;
 }
 
@@ -254,7 +272,16 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
         if (rtol) sliding.sliding_rtol = *rtol;
         if (kept) input = record_input(*kept, scaled_to);
         refuse_unresolvable_run(model.block.p, input->t_end(), culprits);
-        return sliding_result(given, *input, criterion, sliding);
+        // dt as the command's --dt with --output: the rows to the run's end.
+        if (free_time != 0) refuse("free_time does not apply with friction (the rows go to the run's end)");
+        SimulationOptions rows;
+        if (dt) {
+            if (!(*dt > 0)) refuse("dt: must be > 0 (got " + significant(*dt, 17) + ")");
+            rows.record_dt = *dt;
+            const std::string why = rows_refusal(model, *input, rows);
+            if (!why.empty()) refuse(why);
+        }
+        return sliding_result(given, *input, criterion, sliding, rows.record_dt);
     }
     SimulationResult r;
     std::string too_many_rows;

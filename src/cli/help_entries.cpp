@@ -82,8 +82,9 @@ The model (default: see The model):
                     (full equations; rest, slide, rock and slide-rock; impacts without rebound,
                     the new corner stuck or slipping), its own event-driven Dormand-Prince
                     solver at --rtol/--atol (default 1e-9); adds the base's slip (m), the time in
-                    each regime and the energy balance; without --model, --solver,
-                    --restitution, --output and --paper (docs/sliding.md)
+                    each regime and the energy balance; --output adds the slip (m), its rate
+                    and the regime to each row; without --model, --solver, --restitution and
+                    --paper (docs/sliding.md)
   --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
                     toward theta > 0: alpha - RAD and alpha + RAD on its two corners
   --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own

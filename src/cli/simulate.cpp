@@ -162,7 +162,7 @@ int cmd_simulate(int argc, char** argv) {
     }
     // The sliding-rocking model keeps its own equations, impact law and solver.
     if (has("--friction")) {
-        for (const char* f : {"--model", "--solver", "--restitution", "--output", "--dt"})
+        for (const char* f : {"--model", "--solver", "--restitution"})
             if (has(f))
                 throw UsageError(std::string(f) + " does not apply with --friction: the sliding-rocking model has its "
                                  "full equations, its impact law and its event-driven solver");
@@ -172,7 +172,13 @@ int cmd_simulate(int argc, char** argv) {
                              "variable (in units of alpha)");
         refuse_unresolvable_run(model.block.p, input->t_end(), a, {"--record-dt", "--to", "--x", "--p", "--height"},
                                 has("--record") ? a.values.at("--record") : "the input");
-        return simulate_friction(a, given, *input, criterion, friction_option(a));
+        // theta(t) and the slip every --dt, to the run's end (at most t_fin + 200/p, as the rocking model's).
+        if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
+        if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");
+        if (has("--output")) check_output_rows(model, *input, options);
+        check_outputs(a, {"--output"}, has("--record") ? std::vector<std::string>{a.values.at("--record")} : std::vector<std::string>{},
+                      "--record");
+        return simulate_friction(a, given, *input, criterion, friction_option(a), options.record_dt);
     }
     if (has("--output")) options.record_dt = has("--dt") ? num("--dt") : 0.01;
     if (has("--output") && !(options.record_dt > 0)) throw UsageError("--dt: must be > 0");

@@ -13,6 +13,7 @@
 #include "cli/options.hpp"
 #include "cli/simulate_friction.hpp"
 #include "dynamics/sliding/sliding_simulate.hpp"
+#include "harness/table.hpp"
 
 namespace rocking::cli {
 
@@ -41,7 +42,7 @@ void print_criteria(const dynamics::SimulationResult& r, double alpha, double al
 }
 
 int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::GroundInput& input,
-                      dynamics::Criterion criterion, double mu) {
+                      dynamics::Criterion criterion, double mu, double record_dt) {
     using namespace dynamics;
     const double alpha = given.alpha, p = given.block.p;
     // R from p (eq. 4) whatever way the block was given: the slip is in metres.
@@ -53,7 +54,19 @@ int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::Gr
     tolerance_options(a.values, alpha, tolerances);
     o.rtol = tolerances.rtol;
     o.atol_alpha = tolerances.atol_alpha;
+    o.record_dt = record_dt;
     const sliding::SlidingResult r = sliding::simulate_sliding(block, input, o);
+    if (record_dt > 0) {
+        harness::Table table({"t", "theta_over_alpha", "omega_over_alpha_p", "slip_m", "slip_rate_m_s", "regime"});
+        table.note("model", model_text(mu, criterion, o.rtol));
+        table.note("input", input.describe());
+        table.note("solver", o.describe() + "; the rows read on its dense output (the steps' interpolant)");
+        table.note("criterion", criterion_name(criterion));
+        for (const sliding::SlidingSample& s : r.samples)
+            table.row().add(s.t).add(s.theta / alpha).add(s.omega / (alpha * p)).add(s.slip).add(s.slip_rate)
+                .add(regime_name(s.regime));
+        write_output(table, a.values.at("--output"));
+    }
     const bool collapse = r.collapse(criterion, alpha);
     auto regime_time = [&](Regime k) { return r.time_in[static_cast<int>(k)]; };
     if (a.json) {

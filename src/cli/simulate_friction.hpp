@@ -15,6 +15,6 @@ void print_criteria(const dynamics::SimulationResult& r, double alpha, double al
 // Runs the block on the input with friction mu and prints the result (text
 // or --json); the tolerances from --rtol and --atol.
 int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::GroundInput& input,
-                      dynamics::Criterion criterion, double mu);
+                      dynamics::Criterion criterion, double mu, double record_dt = 0);
 
 }  // namespace rocking::cli

@@ -257,6 +257,15 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
         const double residual = energy(block, ph, at) - (e0 + at[4] - at[5] - out.impact_loss / (g * R));
         out.balance_error = std::max(out.balance_error, std::fabs(residual));
     };
+    // The samples k record_dt up to `until`, the state at s from state_at(s).
+    long next_sample = 0;
+    auto sample_until = [&](double until, const auto& state_at) {
+        if (!(o.record_dt > 0)) return;
+        for (double s = next_sample * o.record_dt; s <= until; s = ++next_sample * o.record_dt) {
+            const State y = state_at(s);
+            out.samples.push_back({s, y[0], y[1], y[2] * R, y[3] * R, phase.regime});
+        }
+    };
     auto track = [&](double when, const State& at) {
         out.max_abs_slip = std::max(out.max_abs_slip, std::fabs(at[2]) * R);
         if (when <= t_fin) out.max_abs_theta_input = std::max(out.max_abs_theta_input, std::fabs(at[0]));
@@ -299,6 +308,7 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                 return start_flat(block, g * input.accel(s), 0).regime != Regime::rest;
             });
             out.time_in[0] += std::min(go, t_fin) - t;
+            sample_until(std::min(go, t_fin), [&](double) { return x; });
             t = std::min(go, t_fin);
             if (t >= t_fin) continue;
             set_phase(start_flat(block, g * input.accel(t), 0));  // rest again: move_until ran out of tries
@@ -368,6 +378,7 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                 lo = hi;
             }
             if (which < 0) {
+                sample_until(t1, state);
                 out.time_in[static_cast<int>(phase.regime)] += t1 - t;
                 t = t1;
                 x = t1 == step.second ? dense.current_state() : state(t1);
@@ -376,6 +387,7 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
             // The event: the state there, the time in the regime, the transition.
             const Located event = locate_event(sys, true_step(), t0, t1, found, which, o.overturn_angle);
             found = event.t;
+            sample_until(std::nextafter(found, -INFINITY), state);
             out.time_in[static_cast<int>(phase.regime)] += found - t;
             t = found;
             x = event.x;

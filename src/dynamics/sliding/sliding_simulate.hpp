@@ -35,7 +35,17 @@ struct SlidingOptions {
                                   // block lies flat, and its slip rate below the same times R is 0
     long max_events = 1000000;    // a guard: beyond it, std::runtime_error (a second of events)
     std::size_t max_impact_times = 1000000;  // impact_times keeps the first ones (8 bytes each)
+    // > 0: keep the state every record_dt seconds, k record_dt up to the
+    // run's end (the fall, or the end of the free rocking followed), read on
+    // the dense output (its interpolant, of the steps' accuracy).
+    double record_dt = 0;
     std::string describe() const;
+};
+
+struct SlidingSample {
+    double t, theta, omega;  // s, rad, rad/s
+    double slip, slip_rate;  // the base's displacement on the ground and its rate, m and m/s
+    Regime regime;
 };
 
 struct SlidingResult {
@@ -59,6 +69,7 @@ struct SlidingResult {
     double input_work = 0, friction_loss = 0, impact_loss = 0, final_energy = 0;
     double balance_error = 0;
     long steps = 0, rhs_evaluations = 0;
+    std::vector<SlidingSample> samples;  // options.record_dt > 0
     // In a rocking run's terms (what the searches and the criteria read).
     SimulationResult as_rocking() const;
     bool collapse(Criterion c, double alpha) const { return as_rocking().collapse(c, alpha); }
