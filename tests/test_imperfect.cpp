@@ -427,6 +427,23 @@ TEST(ImperfectBlock, UpliftTimeOnARecordAgainstAScan) {
                 EXPECT_NEAR(again, t, 1e-12);
             }
     EXPECT_GT(found, 30);
+    // A one-sine pulse (a sinusoidal piece): its first a/g > up or < -down,
+    // against a scan at 1e-6 s refined by bisection here.
+    const OneSinePulse sine(0.3, 5.0, 0.05);
+    for (double up : {0.1, 0.25})
+        for (double down : {0.15, 0.28}) {
+            auto beyond = [&](double s) { return sine.accel(s) > up || -sine.accel(s) > down; };
+            double lo = 0, hi = NAN;
+            for (double s = 0; s < sine.t_end(); s += 1e-6)
+                if (beyond(s)) {
+                    hi = s;
+                    break;
+                }
+                else lo = s;
+            ASSERT_FALSE(std::isnan(hi));
+            for (int it = 0; it < 60; ++it) (beyond(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+            EXPECT_NEAR(first_beyond(sine, 0.0, sine.t_end(), up, down), hi, 1e-12) << up << " " << down;
+        }
 }
 
 // The closed-form collapse PGA toward each corner (qfactor/imperfect_q.hpp)

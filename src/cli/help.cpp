@@ -52,6 +52,21 @@ mode shape); a_f = a_g + G D'' (docs/floor_motion.md; rocking record floor write
 The outputs name the floor's model with the record.
 )";
 
+const char* kBeyondThePaperDefinitions = R"(
+Beyond the paper's block (issue 41), on simulate and every study, stated in each output:
+--friction MU       the base on Coulomb friction MU, in (0, 1e6]: the sliding-rocking model (full
+                    equations; rest, slide, rock, slide-rock; impacts without rebound, the new
+                    corner stuck or slipping), its own event-driven solver (docs/sliding.md)
+--lean RAD          the block stands on a bed inclined by RAD toward theta > 0: alpha - RAD and
+                    alpha + RAD on its two corners, the same p and restitution
+--out-of-plumb RAD  a wall built leaning by RAD toward theta > 0 on a horizontal bed: each corner
+                    its own alpha, p and restitution (docs/imperfect.md)
+--fc MPA            the masonry's compressive strength: the pivots set back by half the
+                    compressed zone (NTC 2018 eq. 7.8.2: 0.85 fc under the block's own weight,
+                    --density KG/M3, default 1800); a base that crushes is refused
+The imperfections combine; none goes with --friction. Angles within (-pi/4, pi/4).
+)";
+
 // A text of the help without the line break it starts with in the source.
 std::string body(const char* text) { return text[0] == '\n' ? text + 1 : text; }
 
@@ -90,6 +105,7 @@ std::string entry_help(const HelpEntry& e) {
     if (e.shared & kTheModel) out += "\n" + body(kModelDefinitions);
     if (e.shared & kTheRecords) out += "\n" + body(kRecordDefinitions);
     if (e.shared & kTheFloor) out += "\n" + body(kFloorDefinitions);
+    if (e.shared & kBeyondThePaper) out += "\n" + body(kBeyondThePaperDefinitions);
     return out;
 }
 

@@ -85,13 +85,8 @@ The model (default: see The model):
                     each regime and the energy balance; --output adds the slip (m), its rate
                     and the regime to each row; without --model, --solver, --restitution and
                     --paper (docs/sliding.md)
-  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
-                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
-  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
-                    alpha, p and restitution
-  --fc MPA          the masonry's compressive strength: the pivots set back by half the
-                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
-                    --density KG/M3 (default 1800) gives that weight; none with --friction
+  --lean RAD, --out-of-plumb RAD, --fc MPA [--density KG/M3]   an imperfect block (see Beyond
+                    the paper's block)
 Output:
   --output FILE     writes t (s), theta/alpha, theta'/(alpha p) every --dt DT s (default 0.01), at
                     most 10^6 rows: a --dt that could write more over t_fin and the free rocking
@@ -179,16 +174,9 @@ spectrum finds every interval).
   --rtol R, --atol A   the ODE solvers' tolerances, as for rocking simulate (default 1e-6, R alpha)
   --criterion C     overturning (the default), final-rotation or peak-rotation
   --restitution E   a factor in [0, 1] or housner (the default)
-  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
-                    model (docs/sliding.md: full equations, impacts without rebound, its own
-                    event-driven solver); without --restitution
-  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
-                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
-  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
-                    alpha, p and restitution
-  --fc MPA          the masonry's compressive strength: the pivots set back by half the
-                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
-                    --density KG/M3 (default 1800) gives that weight; none with --friction
+  --friction MU     a base that slides (see Beyond the paper's block); without --restitution
+  --lean RAD, --out-of-plumb RAD, --fc MPA [--density KG/M3]   an imperfect block (see Beyond
+                    the paper's block)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --json            machine-readable output
@@ -228,16 +216,9 @@ named in the output. For each record:
   --width W         the refine searches' width, in ln q and ln p, in [1e-7, 0.1] (default 1e-3):
                     an island of overturning narrower than W may be missed
   --restitution E   the restitution on angular velocity at impact, in [0, 1], or housner (the default)
-  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
-                    model (docs/sliding.md: full equations, impacts without rebound, its own
-                    event-driven solver); without --restitution
-  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
-                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
-  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
-                    alpha, p and restitution
-  --fc MPA          the masonry's compressive strength: the pivots set back by half the
-                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
-                    --density KG/M3 (default 1800) gives that weight; none with --friction
+  --friction MU     a base that slides (see Beyond the paper's block); without --restitution
+  --lean RAD, --out-of-plumb RAD, --fc MPA [--density KG/M3]   an imperfect block (see Beyond
+                    the paper's block)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --png PNG         the check on one record (gnuplot): above, max |theta|/alpha of 300 runs of
@@ -279,16 +260,9 @@ missed.
                     --robust-width R in ln p, default 5e-3, in [1e-7, 1]) and overturned share per
                     band (docs/overturning_set.md)
   --restitution E   theta' after an impact over theta' before, in [0, 1], or housner (the default)
-  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
-                    model (docs/sliding.md: full equations, impacts without rebound, its own
-                    event-driven solver); without --restitution
-  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
-                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
-  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
-                    alpha, p and restitution
-  --fc MPA          the masonry's compressive strength: the pivots set back by half the
-                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
-                    --density KG/M3 (default 1800) gives that weight; none with --friction
+  --friction MU     a base that slides (see Beyond the paper's block); without --restitution
+  --lean RAD, --out-of-plumb RAD, --fc MPA [--density KG/M3]   an imperfect block (see Beyond
+                    the paper's block)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      the grid: alpha, p, grid, max |theta|/alpha, the three criteria, t_overturn
@@ -335,16 +309,9 @@ given twice (the same samples, whatever the path) is refused.
                     order of their samples' SHA-256, so that the listing's order changes nothing;
                     the intervals are 90 % percentile intervals
   --restitution E   theta' after an impact over theta' before, in [0, 1], or housner (the default)
-  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
-                    model (docs/sliding.md: full equations, impacts without rebound, its own
-                    event-driven solver); without --restitution
-  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
-                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
-  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
-                    alpha, p and restitution
-  --fc MPA          the masonry's compressive strength: the pivots set back by half the
-                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
-                    --density KG/M3 (default 1800) gives that weight; none with --friction
+  --friction MU     a base that slides (see Beyond the paper's block); without --restitution
+  --lean RAD, --out-of-plumb RAD, --fc MPA [--density KG/M3]   an imperfect block (see Beyond
+                    the paper's block)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      one row per block and record
@@ -384,16 +351,9 @@ alpha or a record given twice (the same samples, whatever the path) is refused.
                     under each capacity, the first overturning and the first robust collapse
   --bootstrap K, --seed S   as for rocking fragility
   --restitution E   theta' after an impact over theta' before, in [0, 1], or housner (the default)
-  --friction MU     the base on Coulomb friction MU, in (0, 1e6]: every run on the sliding-rocking
-                    model (docs/sliding.md: full equations, impacts without rebound, its own
-                    event-driven solver); without --restitution
-  --lean RAD        an imperfect block (docs/imperfect.md) standing on a bed inclined by RAD
-                    toward theta > 0: alpha - RAD and alpha + RAD on its two corners
-  --out-of-plumb RAD   a wall built out of plumb by RAD toward theta > 0: each corner its own
-                    alpha, p and restitution
-  --fc MPA          the masonry's compressive strength: the pivots set back by half the
-                    compressed zone (NTC 2018 eq. 7.8.2, 0.85 fc under the block's own weight);
-                    --density KG/M3 (default 1800) gives that weight; none with --friction
+  --friction MU     a base that slides (see Beyond the paper's block); without --restitution
+  --lean RAD, --out-of-plumb RAD, --fc MPA [--density KG/M3]   an imperfect block (see Beyond
+                    the paper's block)
   --unit U, --dt DT a plain-text record's unit and step (see Records)
   --floor T1,G[,zeta]   the motion of a floor of a building in place of the ground's (see A floor)
   --output CSV      the map: per block, the records non-conservative for each to_k
@@ -441,7 +401,7 @@ lines are skipped; an empty cell takes the default of the command that runs that
   (--json is refused: the results of a batch are CSV.)
 )";
 
-constexpr unsigned kStudy = kTheBlock | kTheModel | kTheRecords | kTheFloor;
+constexpr unsigned kStudy = kTheBlock | kTheModel | kTheRecords | kTheFloor | kBeyondThePaper;
 
 }  // namespace
 

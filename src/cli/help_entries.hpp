@@ -12,6 +12,7 @@ enum SharedDefinitions : unsigned {
     kTheModel = 2u,       // the default model: Housner's restitution, overturning after the free rocking
     kTheRecords = 4u,     // the records' formats, units, --unit and --dt
     kTheFloor = 8u,       // --floor T1,G[,zeta]
+    kBeyondThePaper = 16u,  // --friction, --lean, --out-of-plumb, --fc, --density (issue 41)
 };
 
 // Each text starts with a line break, dropped (so that its first line lines up with the rest

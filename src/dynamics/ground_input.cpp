@@ -133,6 +133,25 @@ double linear_crossing(double t0, double c0, double c1, double t, double end, do
 // a sample later (RunRules.ARecordReachingAlphaExactlyAtASampleLiftsTheBlockThere).
 bool leaving(double a, double c1, double thr) { return std::fabs(a) >= thr && a * c1 > 0.0; }
 
+// On a sinusoidal piece, the first time in (t, end] where beyond(a) holds:
+// bracketed on a grid of 256 points, then the root of gap_for(a at the
+// bracket's end), a function of time; INFINITY when there is none.
+template <class Beyond, class GapFor>
+double sine_crossing(const InputPiece& piece, double t, double end, Beyond beyond, GapFor gap_for) {
+    const int n = 256;
+    double prev = t;
+    for (int k = 1; k <= n; ++k) {
+        const double tk = t + (end - t) * k / n;
+        const double ak = piece.at(tk);
+        if (beyond(ak)) {
+            const auto f = gap_for(ak);
+            return numerics::root_of(f, prev, tk, f(prev), f(tk), 50);
+        }
+        prev = tk;
+    }
+    return INFINITY;
+}
+
 }  // namespace
 
 double GroundInput::first_above(double t, double t_end, double thr) const {
@@ -146,17 +165,9 @@ double GroundInput::first_above(double t, double t_end, double thr) const {
             const double tc = linear_crossing(piece.t0, piece.c0, piece.c1, t, end, thr);
             if (tc < end) return tc;
         } else {
-            // A sinusoidal piece: bracket on a fine grid, then refine.
-            const int n = 256;
-            double prev = t;
-            for (int k = 1; k <= n; ++k) {
-                const double tk = t + (end - t) * k / n;
-                if (std::fabs(piece.at(tk)) > thr) {
-                    auto f = [&](double s) { return std::fabs(piece.at(s)) - thr; };
-                    return numerics::root_of(f, prev, tk, f(prev), f(tk), 50);
-                }
-                prev = tk;
-            }
+            const double tc = sine_crossing(piece, t, end, [&](double v) { return std::fabs(v) > thr; },
+                                            [&](double) { return [&](double s) { return std::fabs(piece.at(s)) - thr; }; });
+            if (tc < INFINITY) return tc;
         }
         t = end;
     }
@@ -184,18 +195,11 @@ double first_beyond(const GroundInput& input, double t, double t_end, double up,
                 if (tc < end) return tc;
             }
         } else {
-            const int n = 256;
-            double prev = t;
-            for (int k = 1; k <= n; ++k) {
-                const double tk = t + (end - t) * k / n;
-                const double ak = piece.at(tk);
-                if (beyond(ak)) {
-                    const double level = ak > 0 ? up : -down;
-                    auto f = [&](double s) { return piece.at(s) - level; };
-                    return numerics::root_of(f, prev, tk, f(prev), f(tk), 50);
-                }
-                prev = tk;
-            }
+            const double tc = sine_crossing(piece, t, end, beyond, [&](double ak) {
+                const double level = ak > 0 ? up : -down;
+                return [&piece, level](double s) { return piece.at(s) - level; };
+            });
+            if (tc < INFINITY) return tc;
         }
         // This piece stays within the two levels: the next one, where
         // first_above starts over (its quiet stretches skipped).
