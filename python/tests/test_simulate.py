@@ -110,14 +110,24 @@ def test_errors_are_the_command_line_s():
     assert str(e.value) == message
 
 
-def test_friction_is_simulate_friction_json():
+def test_friction_is_simulate_friction_json(tmp_path):
     # simulate(friction=MU) as rocking simulate --friction MU --json (issue 41): every field
-    # the same, and its refusals.
+    # the same, the rows as --output's, and its refusals.
     args = dict(train=[(1, 1), (-1, 1)], to=0.3, pga=0.3, alpha=0.2, height=3)
     s = rq.simulate(friction=0.6, **args)
     c = cli("simulate", "--train", "1:1,-1:1", "--to", 0.3, "--pga", 0.3, "--alpha", 0.2, "--height", 3,
             "--friction", 0.6)
-    assert set(s) == set(c) and all(s[k] == c[k] for k in c), [k for k in c if s.get(k) != c[k]]
+    rows = {"t", "theta", "omega", "slip_m", "slip_rate_m_s", "regime"}  # --output's, every dt = 0.01 s
+    assert set(s) == set(c) | rows and all(s[k] == c[k] for k in c), [k for k in c if s.get(k) != c[k]]
+    out = tmp_path / "rows.csv"
+    cli("simulate", "--train", "1:1,-1:1", "--to", 0.3, "--pga", 0.3, "--alpha", 0.2, "--height", 3,
+        "--friction", 0.6, "--output", out)
+    notes, table = read_csv(out)
+    assert len(s["t"]) == len(table["t"]) > 50 and s["t"].tolist() == table["t"]
+    assert s["slip_m"].tolist() == table["slip_m"] and s["slip_rate_m_s"].tolist() == table["slip_rate_m_s"]
+    assert s["theta"].tolist() == [v * 0.2 for v in table["theta_over_alpha"]] or \
+        np.allclose(s["theta"] / 0.2, table["theta_over_alpha"], rtol=1e-15, atol=0)
+    assert s["regime"] == table["regime"] and s["regime"][0] == "rest"
     assert "Coulomb friction mu = 0.6" in s["model"] and s["energy"]["balance_error_over_gR"] < 1e-8
     with pytest.raises(ValueError, match="^friction: model, solver, restitution, paper and atol do not apply"):
         rq.simulate(friction=0.6, restitution=0.9, **args)
