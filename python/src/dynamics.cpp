@@ -316,7 +316,7 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
     out["t_fin"] = r.t_fin;
     out["theta_tfin_over_alpha"] = r.overturned_during_input ? py::object(py::none()) : py::object(py::float_(r.theta_at_tfin / alpha));
     out["max_theta_input_over_alpha"] = r.max_abs_theta_input / alpha;
-    out["input_lifts_block"] = input->peak() > model.uplift_threshold();
+    out["input_lifts_block"] = dynamics::input_lifts(*input, model);
     out["impacts"] = r.impacts;
     out["overturned"] = r.overturned;
     out["overturned_during_input"] = r.overturned_during_input;
@@ -325,14 +325,17 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
     out["collapse_peak_rotation"] = collapsed(Criterion::peak_rotation);
     out["collapse_overturning"] = collapsed(Criterion::overturning);
     if (imp.any()) {
-        out["imperfection"] = imperfection_dict(imp, given.block);
+        out["imperfection"] = imperfection_dict(imp, given.block, e);
+        out["peak_over_own_alpha"] = dynamics::peak_over_own_alpha(r, model);
+    }
+    if (!model.symmetric()) {
         out["peak_plus_over_alpha_plus"] = r.peak_plus_input / model.block.alpha;
-        out["peak_minus_over_alpha_minus"] = r.peak_minus_input / model.alpha_on(-1);
+        out["peak_minus_over_alpha_minus"] = r.peak_minus_input / model.minus.alpha;
     }
     // What the text output and --output's notes state beside the JSON's fields.
     out["solver_description"] = solver_name(options.solver.kind) + tolerance;
     out["alpha"] = alpha;
-    out["p"] = model.block.p;
+    out["p"] = given.block.p;
     out["restitution"] = model.restitution;
     out["impact_times"] = to_array(r.impact_times);
     // theta(t) every dt, as --output's rows (t, theta/alpha, theta'/(alpha p)), and in rad and rad/s.

@@ -127,20 +127,20 @@ dynamics::Imperfection imperfection_argument(const py::object& value, const reco
     return imp;
 }
 
-py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base) {
+py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution) {
     const dynamics::ImperfectGeometry g = dynamics::imperfect_geometry(base, imp);
-    auto corner = [](const dynamics::CornerGeometry& k) {
+    auto corner = [&](const dynamics::CornerGeometry& k) {
         py::dict d;
         d["alpha"] = k.alpha;
         d["p"] = k.p;
         d["R"] = k.R;
-        d["restitution_onto"] = k.restitution_onto;
+        d["restitution_onto"] = std::isnan(restitution) ? k.restitution_onto : restitution;
         return d;
     };
     py::dict d;
     d["lean"] = imp.lean;
     d["out_of_plumb"] = imp.out_of_plumb;
-    d["fc_mpa"] = imp.fc / 1e6;
+    d["fc"] = imp.fc / 1e6;  // MPa, as the argument's key
     d["density"] = imp.density;
     d["sigma0_kpa"] = g.sigma0 / 1e3;
     d["setback_m"] = g.setback;

@@ -60,6 +60,6 @@ dynamics::Imperfection imperfection_argument(const py::object& value, const reco
 void imperfection_into(const py::object& value, records::CollapseOptions& model);
 // As rocking simulate --json's "imperfection": each corner's alpha, p, R and
 // restitution onto it, the setback and its stress.
-py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base);
+py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution);
 
 }  // namespace rocking::python

@@ -45,14 +45,15 @@ dynamics::Model imperfect_model_option(const Args& a, dynamics::Equation equatio
     }
 }
 
-std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base) {
+std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution) {
     const dynamics::ImperfectGeometry g = dynamics::imperfect_geometry(base, imp);
-    auto corner = [](const dynamics::CornerGeometry& k) {
+    auto corner = [&](const dynamics::CornerGeometry& k) {
         return "{\"alpha\": " + json_number(k.alpha) + ", \"p\": " + json_number(k.p) + ", \"R\": " + json_number(k.R) +
-               ", \"restitution_onto\": " + json_number(k.restitution_onto) + "}";
+               ", \"restitution_onto\": " + json_number(std::isnan(restitution) ? k.restitution_onto : restitution) + "}";
     };
+    // Its keys as the inputs' (Python's imperfection={...}, the batch columns): fc in MPa.
     return "\"imperfection\": {\"lean\": " + json_number(imp.lean) + ", \"out_of_plumb\": " + json_number(imp.out_of_plumb) +
-           ", \"fc_mpa\": " + json_number(imp.fc / 1e6) + ", \"density\": " + json_number(imp.density) +
+           ", \"fc\": " + json_number(imp.fc / 1e6) + ", \"density\": " + json_number(imp.density) +
            ", \"sigma0_kpa\": " + json_number(g.sigma0 / 1e3) + ", \"setback_m\": " + json_number(g.setback) +
            ", \"corner_plus\": " + corner(g.plus) + ", \"corner_minus\": " + corner(g.minus) + "}";
 }

@@ -35,6 +35,7 @@ dynamics::Model imperfect_model_option(const Args& a, dynamics::Equation equatio
 // The JSON member "imperfection": {...} for these imperfections on the
 // block (alpha, p): each corner's alpha, p, R and restitution onto it, the
 // setback and its stress.
-std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base);
+// restitution: NaN (each corner's own) or the factor given on both.
+std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution);
 
 }  // namespace rocking::cli

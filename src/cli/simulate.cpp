@@ -69,16 +69,11 @@ int cmd_simulate(int argc, char** argv) {
     if (paper && (has("--restitution") || has("--criterion")))
         throw UsageError("--paper sets restitution 1 and the final-rotation criterion: give it without --restitution "
                          "and --criterion");
-    model.restitution = paper ? 1.0 : housner_restitution(alpha);
-    if (has("--restitution")) {
-        const double e = restitution_option(a.values.at("--restitution"));
-        model.restitution = std::isnan(e) ? housner_restitution(alpha) : e;
-    }
-    // An imperfect block: each corner's own restitution unless one is given.
+    // NaN: Housner's, which on an imperfect block is each corner's own from its geometry.
+    const double e_given = paper ? 1.0 : has("--restitution") ? restitution_option(a.values.at("--restitution")) : NAN;
+    model.restitution = std::isnan(e_given) ? housner_restitution(alpha) : e_given;
     const Imperfection imp = imperfection_option(a);
-    if (imp.any())
-        model = imperfect_model_option(a, model.equation, given,
-                                       paper || has("--restitution") ? model.restitution : double(NAN));
+    if (imp.any()) model = imperfect_model_option(a, model.equation, given, e_given);
     // The criteria measure theta against the block's corners: an imperfect
     // block's own alphas, else the alpha given.
     const double alpha_plus = imp.any() ? model.block.alpha : alpha, alpha_minus = model.symmetric() ? 0.0 : model.minus.alpha;
@@ -208,11 +203,11 @@ int cmd_simulate(int argc, char** argv) {
     auto collapsed = [&](Criterion c) { return r.collapse(c, alpha_plus, alpha_minus); };
     const bool collapse = collapsed(criterion);
     // The block starts at rest and rocks only once |a| > the threshold (eq. 3: alpha g; eq. 1: g tan alpha).
-    const bool lifts = input->peak() > model.uplift_threshold();
+    const bool lifts = input_lifts(*input, model);
     if (a.json) {
         auto b = [](bool v) { return v ? "true" : "false"; };
         std::cout << "{\"model\": " << json_string(model.describe()) << ", \"preset\": " << (paper ? "\"paper\"" : "\"physical\"")
-                  << ", \"alpha\": " << json_number(alpha) << ", \"p\": " << json_number(model.block.p) << ", "
+                  << ", \"alpha\": " << json_number(alpha) << ", \"p\": " << json_number(given.block.p) << ", "
                   << block_json(given) << ", \"input\": " << json_string(input->describe())
                   << ", \"solver\": " << json_string(solver_name(options.solver.kind))
                   << ", \"rtol\": " << json_number(options.solver.rtol)
@@ -230,23 +225,30 @@ int cmd_simulate(int argc, char** argv) {
                   << ", \"collapse_peak_rotation\": " << b(collapsed(Criterion::peak_rotation))
                   << ", \"collapse_overturning\": " << b(collapsed(Criterion::overturning));
         if (imp.any())
-            std::cout << ", " << imperfection_json(imp, given.block)
-                      << ", \"peak_plus_over_alpha_plus\": " << json_number(r.peak_plus_input / model.block.alpha)
-                      << ", \"peak_minus_over_alpha_minus\": "
-                      << json_number(r.peak_minus_input / model.alpha_on(-1));
+            std::cout << ", " << imperfection_json(imp, given.block, e_given)
+                      << ", \"peak_over_own_alpha\": " << json_number(peak_over_own_alpha(r, model));
+        // Each side's peak where the corners differ (a setback alone keeps the block symmetric).
+        if (!model.symmetric())
+            std::cout << ", \"peak_plus_over_alpha_plus\": " << json_number(r.peak_plus_input / model.block.alpha)
+                      << ", \"peak_minus_over_alpha_minus\": " << json_number(r.peak_minus_input / model.minus.alpha);
         std::cout << "}\n";
     } else {
         std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
         std::printf("  model:  %s%s\n  block:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(),
                     paper ? " (--paper: the paper's setting)"
+                    : imp.any() ? ""
                     : model.restitution == housner_restitution(alpha) ? " (Housner's 1 - 1.5 sin^2 alpha)" : "",
                     describe_block(given).c_str(),
                     input->describe().c_str(), solver_name(options.solver.kind).c_str(), tolerance.c_str());
         if (imp.any()) {
-            std::printf("  %s\n", describe_imperfection(imp, imperfect_geometry(given.block, imp)).c_str());
-            std::printf("  largest theta/alpha_+ = %.10g, -theta/alpha_- = %.10g during the input (each side by its "
-                        "own alpha; below, theta is in units of the alpha given)\n",
-                        r.peak_plus_input / model.block.alpha, r.peak_minus_input / model.alpha_on(-1));
+            std::printf("  %s\n", describe_imperfection(imp, imperfect_geometry(given.block, imp), e_given).c_str());
+            if (model.symmetric())
+                std::printf("  largest |theta|/alpha' = %.10g during the input, alpha' = %.6g the set-back block's (below, "
+                            "theta is in units of the alpha given)\n", peak_over_own_alpha(r, model), model.block.alpha);
+            else
+                std::printf("  largest theta/alpha_+ = %.10g, -theta/alpha_- = %.10g during the input (each side by its "
+                            "own alpha; below, theta is in units of the alpha given)\n",
+                            r.peak_plus_input / model.block.alpha, r.peak_minus_input / model.minus.alpha);
         }
         // A block that fell during the input has no theta(t_fin) to print: it lies on the ground.
         if (r.overturned_during_input)

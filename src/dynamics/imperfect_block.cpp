@@ -120,7 +120,18 @@ Model imperfect_model(Equation equation, const Block& base, const Imperfection& 
     return m;
 }
 
-std::string describe_imperfection(const Imperfection& imp, const ImperfectGeometry& g) {
+double peak_over_own_alpha(const SimulationResult& r, const Model& model) {
+    if (model.symmetric()) return r.max_abs_theta_input / model.block.alpha;
+    return std::max(r.peak_plus_input / model.block.alpha, r.peak_minus_input / model.minus.alpha);
+}
+
+bool input_lifts(const GroundInput& input, const Model& model) {
+    if (model.symmetric()) return input.peak() > model.uplift_threshold();
+    return first_beyond(input, 0.0, input.t_end(), model.uplift_threshold_on(1), model.uplift_threshold_on(-1)) <
+           input.t_end();
+}
+
+std::string describe_imperfection(const Imperfection& imp, const ImperfectGeometry& g, double restitution) {
     char text[600];
     int n = std::snprintf(text, sizeof text, "imperfect block:");
     if (imp.lean != 0) n += std::snprintf(text + n, sizeof text - n, " lean %.6g rad (bed inclined),", imp.lean);
@@ -132,10 +143,12 @@ std::string describe_imperfection(const Imperfection& imp, const ImperfectGeomet
                            " fc %.4g MPa, density %.5g kg/m3: sigma0 %.4g kPa, pivot set back %.4g mm (NTC 2018 eq. 7.8.2 "
                            "stress block, 0.85 fc),",
                            imp.fc / 1e6, imp.density, g.sigma0 / 1e3, g.setback * 1e3);
+    const bool own = std::isnan(restitution);
     std::snprintf(text + n, sizeof text - n,
                   " corner theta > 0: alpha %.6g, p %.6g rad/s, e onto it %.6g; corner theta < 0: alpha %.6g, p %.6g rad/s, "
-                  "e onto it %.6g",
-                  g.plus.alpha, g.plus.p, g.plus.restitution_onto, g.minus.alpha, g.minus.p, g.minus.restitution_onto);
+                  "e onto it %.6g%s",
+                  g.plus.alpha, g.plus.p, own ? g.plus.restitution_onto : restitution, g.minus.alpha, g.minus.p,
+                  own ? g.minus.restitution_onto : restitution, own ? " (each corner's own, from its geometry)" : " (given)");
     return text;
 }
 

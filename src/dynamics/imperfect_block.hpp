@@ -30,7 +30,11 @@
 #include <optional>
 #include <string>
 
+#include <cmath>
+
+#include "dynamics/ground_input.hpp"
 #include "dynamics/model.hpp"
+#include "dynamics/simulate.hpp"
 
 namespace rocking::dynamics {
 
@@ -85,7 +89,19 @@ ImperfectGeometry imperfect_geometry(const Block& base, const Imperfection& impe
 // (a setback alone) give a symmetric model (minus unset).
 Model imperfect_model(Equation equation, const Block& base, const Imperfection& imperfection, double restitution);
 
-// One line: the imperfections and the corners they give.
-std::string describe_imperfection(const Imperfection& imperfection, const ImperfectGeometry& g);
+// One line: the imperfections and the corners they give; restitution as
+// imperfect_model's (NaN: each corner's own, else the factor given).
+std::string describe_imperfection(const Imperfection& imperfection, const ImperfectGeometry& g,
+                                  double restitution = NAN);
+
+// The largest share of the way to the top during the input, each side by
+// its own alpha: max(theta/alpha_+, -theta/alpha_-), or max |theta| over
+// the block's alpha where the model is symmetric (a setback alone: the
+// record kernel keeps no sides).
+double peak_over_own_alpha(const SimulationResult& r, const Model& model);
+
+// Whether the input lifts the block at rest at all: it passes a corner's
+// uplift threshold (Model::uplift_threshold_on) before its end.
+bool input_lifts(const GroundInput& input, const Model& model);
 
 }  // namespace rocking::dynamics
