@@ -19,8 +19,9 @@ dt/PHASES and its error is the root mean square over them (the error a run
 can be expected to have; the error of their mean is kept in the CSV).
 
 Times are CPU seconds of one run inside its process: Siconos' time-stepping
-loop as the tool reports it (without Python's start, the import of siconos and
-the plugin's compilation, whose wall time the CSV keeps), the engine's through
+loop as the tool reports it, on one BLAS thread (without Python's start, the
+import of siconos and the plugin's compilation, whose wall time the CSV
+keeps), the engine's through
 the Python module rocking_q (the library the command runs; a command's process
 start, about 5 ms, would hide runs of 0.03-1 ms), the fastest of 3 windows.
 Without the module, the command's wall time is used and said so.
@@ -51,7 +52,7 @@ G = 9.81
 RTOLS = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12]
 DEFAULT_RTOL = 1e-9
 REFERENCE_RTOL = 1e-13
-DTS = [1e-3, 5e-4, 2e-4, 1e-4, 5e-5, 2e-5, 1e-5]
+DTS = [1e-3, 5e-4, 2e-4, 1e-4, 5e-5, 2e-5, 1e-5, 5e-6]
 SICONOS_DT_COMPARED = 1e-4  # the dt tests/sliding_siconos_test.sh converges at
 AQK = "esm/IT.AQK..HNE.D.20090406.013240.C.ACC.ASC"
 
@@ -84,7 +85,7 @@ def cases(window):
     ]
     if window:
         w = f"--record {window} --record-dt 0.005"
-        # Siconos' finest dt is 2e-5 here: 4.9 s of motion cost about 6 s a run at 1e-5.
+        # Siconos' finest dt is 1e-5 here: at 5e-6 its 4.9 s of motion would take 14 s a run.
         out.append(Case("record", "(d) L'Aquila AQK E-W, 8 s around its PGA (0.33 g), 0.3 m x 2 m, mu 0.6: "
                         "6 impacts, the fall", w + " --unit g --thickness 0.3 --height 2 --friction 0.6",
                         w + " --mu 0.6 --overturn-angle 1.5707963267948966",
@@ -93,9 +94,15 @@ def cases(window):
     return out
 
 
-def run_json(cmd, what):
+# Siconos' BLAS is OpenBLAS's pthread build, whose idle threads spin: on this
+# 2-core machine under load half a run's CPU went to them as system time (10 s
+# at dt 2e-5 on case (d), 3.4 s with one thread, the same numbers to the bit).
+ONE_THREAD = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+
+
+def run_json(cmd, what, env=None):
     t0 = time.perf_counter()
-    done = subprocess.run(cmd, capture_output=True, text=True)
+    done = subprocess.run(cmd, capture_output=True, text=True, env=env)
     wall = time.perf_counter() - t0
     if done.returncode != 0:
         sys.exit(f"bench/siconos_equal_accuracy.py: {what} failed (exit {done.returncode}): {' '.join(cmd)}\n{done.stderr.strip()}")
@@ -292,7 +299,7 @@ def bench_case(case, rocking, clock, phases, say, rows):
     for dt in case.dts:
         cmd = [PY, TOOL, *shlex.split(case.siconos), "--alpha", repr(ref_e["alpha"]), "--R", repr(ref_e["R_from_p"]),
                "--dt", repr(dt), "--phases", str(phases)]
-        s, wall = run_json(cmd, "tools/siconos_block.py")
+        s, wall = run_json(cmd, "tools/siconos_block.py", ONE_THREAD)
         cpu = s["cpu_s"] / phases
         bp = s["by_phase"]
         impacts, overturned = sorted(set(bp["impacts"])), sorted(set(bp["overturned"]))
@@ -348,7 +355,8 @@ def equal_accuracy(res, say, rows):
             p, C = res["fit"][k]
             s_dt = (target / C) ** (1 / p) if target > 0 and p > 0 else 0.0
             s_cpu = cost_dt / s_dt if s_dt > 0 else math.inf
-            how = "extrapolated"
+            # No grid of doubles over a run of seconds has steps below about 1e-15 s.
+            how = "extrapolated" + (", formal" if s_dt < 1e-12 else "")
         line = (f"  {case.name:10} {lab:16} engine rtol 1e-9: {g(target)} {u}{below} in {human_time(default['cpu'])}; "
                 f"Siconos {how}: dt {g(s_dt, 1)} s, {human_time(s_cpu)} ({g(s_cpu / default['cpu'], 1)} times the engine's)")
         say(line)
@@ -406,7 +414,7 @@ def main(argv):
         say("The sliding-rocking engine (rocking simulate --friction) against Siconos (tools/siconos_block.py)")
         say(f"machine: {machine()}")
         say(f"errors: |value - reference|; Siconos' the root mean square over {a.phases} runs on grids offset by "
-            f"dt/{a.phases}; engine times: {clock.how}; Siconos': CPU of its time-stepping loop per run")
+            f"dt/{a.phases}; engine times: {clock.how}; Siconos': CPU of its time-stepping loop per run (OPENBLAS_NUM_THREADS=1)")
         if window is None:
             say(f"skip: case (d) needs {os.path.join(a.records, AQK)} (ROCKING_RECORDS or --records)")
         results = [bench_case(c, a.rocking, clock, a.phases, say, rows) for c in cases(window)]
