@@ -367,11 +367,14 @@ def equal_accuracy(res, say, rows):
         if at_dt is None:
             continue
         s_err = at_dt["rms"][k]
-        cheap = [r for r in res["engine"] if r["errors"][k] <= s_err and r["same"]]
-        if cheap:
-            best = min(cheap, key=lambda r: r["cpu"])
+        # The loosest rtol from which on every tighter one is within it: a
+        # choice the errors alone make (the cheapest would follow the timings' noise).
+        within = [r["errors"][k] <= s_err and r["same"] for r in res["engine"]]
+        first = next((i for i in range(len(within)) if all(within[i:])), None)
+        if first is not None:
+            best = res["engine"][first]
             say(f"  {'':10} {'':16} Siconos dt 1e-4: {g(s_err)} {u} in {human_time(at_dt['cpu'])}; the engine's "
-                f"cheapest rtol within it: {best['rtol']:g} ({g(best['errors'][k])} {u}), {human_time(best['cpu'])} "
+                f"loosest rtol within it: {best['rtol']:g} ({g(best['errors'][k])} {u}), {human_time(best['cpu'])} "
                 f"({g(at_dt['cpu'] / best['cpu'], 1)} x faster)")
             rows.append({"case": case.name, "quantity": lab, "unit": u,
                          "method": "engine at Siconos' dt 1e-4 accuracy", "setting": f"rtol {best['rtol']:g}",
