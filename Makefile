@@ -6,7 +6,7 @@ JOBS    ?= 2
 # OpenMPI for rocking batch under mpirun: the build works without it, on threads only).
 PACKAGES = g++ cmake make libgtest-dev libboost-dev libgsl-dev gnuplot-nox python3-matplotlib python3-mpmath libopenmpi-dev openmpi-bin
 
-.PHONY: all deps build reproduce test bless bench bench-records bench-spectrum bench-fragility bench-overturning-set bench-batch bench-sliding report clean
+.PHONY: all deps build reproduce test bless bench bench-records bench-spectrum bench-fragility bench-overturning-set bench-batch bench-sliding bench-siconos report clean
 
 all: build
 
@@ -84,6 +84,12 @@ bench-overturning-set: build
 bench-sliding: build
 	cmake --build $(BUILD) --target bench_sliding -j $(JOBS)
 	$(BUILD)/bench_sliding --out $(OUT)/bench
+
+# The sliding-rocking engine against Siconos at equal accuracy (a benchmark, not a test; issue 41,
+# about 2-4 minutes): each one's error against rtol and dt, and the cost of each at the other's
+# accuracy, in out/bench/siconos.{txt,csv}. Skips without python3-siconos.
+bench-siconos: build
+	/usr/bin/python3 bench/siconos_equal_accuracy.py --rocking $(BUILD)/rocking --python $(BUILD)/python --out $(OUT)/bench
 
 # rocking batch's scale (a benchmark, not a test): jobs/s on 1 and 2 threads and 1-3 MPI ranks, the
 # coordination's cost, a model of 10^9 simulations: out/bench/batch.{txt,csv} (BATCH_BENCH_JOBS=N, default 10^6).
