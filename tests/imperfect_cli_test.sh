@@ -135,6 +135,31 @@ for iv in ida["intervals"][:3]:
 PY
 then echo "ok: a leaning block's spectrum and IDA boundaries"; else echo "FAIL: leaning spectrum and IDA"; fail=1; fi
 
+# The outputs that a probe found wrong (2026-11-26): with a setback alone each side's peak read
+# 0; --restitution housner took the nominal alpha's on both corners; input_lifts_block read the
+# nominal alpha; the JSON's p was corner +1's.
+if $py - "$rocking" "$tmp" <<'PY'
+import json, subprocess, sys
+rocking, tmp = sys.argv[1], sys.argv[2]
+def sim(*args):
+    return json.loads(subprocess.run([rocking, "simulate", *args, "--json"], capture_output=True, check=True).stdout)
+d = sim("--case", "2", "--x", "1", "--rd", "1.01", "--alpha", "0.2", "--p", "2", "--fc", "1")
+alpha_set_back = d["imperfection"]["corner_plus"]["alpha"]
+assert "peak_plus_over_alpha_plus" not in d
+assert abs(d["peak_over_own_alpha"] - d["max_theta_input_over_alpha"] * 0.2 / alpha_set_back) < 1e-12, d
+assert d["p"] == 2, d["p"]
+w = ["--record", tmp + "/s.txt", "--unit", "m/s2", "--alpha", "0.16", "--p", "2", "--out-of-plumb", "0.03", "--q", "1.4"]
+h, n = sim(*w, "--restitution", "housner"), sim(*w)
+assert h == n, [k for k in n if h.get(k) != n[k]]
+g = sim(*w, "--restitution", "0.9")
+assert g["imperfection"]["corner_plus"]["restitution_onto"] == 0.9 == g["imperfection"]["corner_minus"]["restitution_onto"]
+with open(tmp + "/c.txt", "w") as f:
+    f.write("-0.2249\n" * 50)     # below the corner -1's alpha 0.25, above the nominal 0.2
+c = sim("--record", tmp + "/c.txt", "--unit", "g", "--record-dt", "0.01", "--alpha", "0.2", "--p", "2", "--lean", "0.05")
+assert c["input_lifts_block"] is False and c["impacts"] == 0 and c["max_theta_input_over_alpha"] == 0, c
+PY
+then echo "ok: the probe's findings stay fixed"; else echo "FAIL: the probe's findings"; fail=1; fi
+
 # Batch rows take lean, out_of_plumb, fc and density columns: the commands' runs.
 cat >"$tmp/m.csv" <<CSV
 kind,record,unit,alpha,p,lean,out_of_plumb,fc,density

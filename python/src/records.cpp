@@ -401,7 +401,7 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         if (refused.blame == studies::Refusal::Blame::block)
             refuse(size_name + ": " + refused.why);
         if (refused.blame == studies::Refusal::Blame::record) throw std::invalid_argument(label_of(*r) + ": " + refused.why);
-        refuse_unresolvable_run(o.spectrum_options(given.block.p).p_max, inputs.back()->t_end(), "record " + label_of(*r));
+        refuse_unresolvable_run(o.spectrum_options(given.block.p, given.alpha).p_max, inputs.back()->t_end(), "record " + label_of(*r));
         views.push_back(inputs.back().get());
     }
     std::vector<std::string> labels;

@@ -210,7 +210,7 @@ int cmd_assess(int argc, char** argv) {
             throw UsageError(size_flag +
                              ": " + refused.why);
         if (refused.blame == studies::Refusal::Blame::record) throw std::runtime_error(path + ": " + refused.why);
-        refuse_unresolvable_run(o.spectrum_options(given.block.p).p_max, inputs.back()->t_end(), a, {"--dt"}, path);
+        refuse_unresolvable_run(o.spectrum_options(given.block.p, given.alpha).p_max, inputs.back()->t_end(), a, {"--dt"}, path);
         views.push_back(inputs.back().get());
     }
     // As fragility: a record given twice (the same samples, whatever the path) would count twice in the fit.
@@ -227,7 +227,7 @@ int cmd_assess(int argc, char** argv) {
         const studies::RecordAssessment& r = s.records[0];
         const std::vector<studies::ScaledRun> response =
             studies::scaled_response(*views[0], alpha, given.block.p, o.model, 1, o.ida_q_max(r.q_record), 300);
-        write_assess_png(a.values.at("--png"), records[0], r, response, o.spectrum_options(given.block.p));
+        write_assess_png(a.values.at("--png"), records[0], r, response, o.spectrum_options(given.block.p, given.alpha));
     }
     if (a.json) print_json(files, names, given, s, o, floor_input_note(a));
     else print_text(files, names, given, s, o, floor_input_note(a));

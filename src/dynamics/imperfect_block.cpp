@@ -63,11 +63,13 @@ ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imp
     g.h = h;
     if (imp.fc > 0) {
         g.sigma0 = 2 * imp.density * kGravity * h;
-        char text[320];
+        char text[400];
         std::snprintf(text, sizeof text,
                       "the block's weight crushes its base: sigma0 = 2 rho g h = %.4g Pa is not below 0.85 fc = %.4g Pa "
-                      "(at this fc and density a block stands up to a height 2h of %.4g m)",
-                      g.sigma0, 0.85 * imp.fc, 0.85 * imp.fc / (imp.density * kGravity));
+                      "(at this fc and density a block stands up to a height 2h of %.4g m: at this slenderness, p above "
+                      "%.4g rad/s, where a range over p such as --p-min must start)",
+                      g.sigma0, 0.85 * imp.fc, 0.85 * imp.fc / (imp.density * kGravity),
+                      crushing_p(std::atan(b / h), imp));
         refuse(!(g.sigma0 < 0.85 * imp.fc), text);
         g.setback = b * g.sigma0 / (0.85 * imp.fc);
     }
@@ -102,6 +104,33 @@ ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imp
         refuse(!(k->alpha > 0 && k->alpha < M_PI / 4), text);
     }
     return g;
+}
+
+double crushing_p(double alpha, const Imperfection& imp) {
+    if (!(imp.fc > 0)) return 0.0;
+    return std::sqrt(3 * imp.density * kGravity * kGravity * std::cos(alpha) / (1.7 * imp.fc));
+}
+
+double lowest_standing_p(double alpha, const Imperfection& imp) {
+    auto stands = [&](double p) {
+        try {
+            imperfect_geometry(Block::from_p(p, alpha), imp);
+            return true;
+        } catch (const std::invalid_argument&) {
+            return false;
+        }
+    };
+    // A larger p is a smaller block: less weight on its base, a smaller setback.
+    double lo = crushing_p(alpha, imp), hi = 1000.0;
+    if (lo == 0.0 && stands(1e-300)) return 0.0;
+    if (!stands(hi)) return INFINITY;
+    if (!(lo > 0)) lo = 1e-3;
+    while (stands(lo) && lo > 1e-12) lo /= 2;
+    while (hi - lo > 1e-12 * hi) {
+        const double mid = 0.5 * (lo + hi);
+        (stands(mid) ? hi : lo) = mid;
+    }
+    return hi;
 }
 
 ImperfectGeometry imperfect_geometry(const Block& base, const Imperfection& imp) {

@@ -77,6 +77,19 @@ struct ImperfectGeometry {
 // leaves (0, pi/4), or the weight crushes the base (sigma0 >= 0.85 fc).
 ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imperfection);
 
+// With pivots set back (fc > 0), the pulsation at and below which a block of
+// slenderness alpha crushes its base under its own weight: 2 rho g R cos
+// alpha >= 0.85 fc with R = 3 g / (4 p^2) (eq. 4), so p^2 <= 3 rho g^2 cos
+// alpha / (1.7 fc); 0 without fc.
+double crushing_p(double alpha, const Imperfection& imperfection);
+
+// The lowest p from which the block of slenderness alpha with these
+// imperfections stands (imperfect_geometry accepts it: it does not crush,
+// and a lean does not take a set-back corner's alpha to 0), to 1e-12
+// relative above the limit: where a search over p starts.  0 for a block
+// that stands at every p, INFINITY for one that stands at none up to 1000 rad/s.
+double lowest_standing_p(double alpha, const Imperfection& imperfection);
+
 // The same for a symmetric block `base` given by its alpha and R, or its p,
 // which gives R = 3 g / (4 p^2) (eq. 4) and the half-dimensions R sin alpha,
 // R cos alpha.

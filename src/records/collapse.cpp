@@ -15,15 +15,17 @@ namespace {
 // "; imperfect block: lean 0.02 rad, ..." or nothing for a perfect block.
 std::string imperfection_words(const Imperfection& imp, bool housner) {
     if (!imp.any()) return "";
-    char text[320];
+    char text[480];
     int n = std::snprintf(text, sizeof text, "; imperfect block (docs/imperfect.md):");
     if (imp.lean != 0) n += std::snprintf(text + n, sizeof text - n, " lean %g rad,", imp.lean);
     if (imp.out_of_plumb != 0) n += std::snprintf(text + n, sizeof text - n, " out of plumb %g rad,", imp.out_of_plumb);
     if (imp.fc != 0)
-        n += std::snprintf(text + n, sizeof text - n, " pivots set back by fc %g MPa at density %g kg/m3,", imp.fc / 1e6,
-                           imp.density);
-    std::snprintf(text + n, sizeof text - n, "%s",
-                  housner ? " each corner's restitution from the geometry" : " the restitution given on both corners");
+        n += std::snprintf(text + n, sizeof text - n,
+                           " pivots set back by fc %g MPa at density %g kg/m3 (a scan over p starts above the blocks "
+                           "that crush under their own weight),",
+                           imp.fc / 1e6, imp.density);
+    if (n > 0 && text[n - 1] == ',') text[n - 1] = '\0';
+    if (!housner) std::snprintf(text + n - 1, sizeof text - n + 1, ", the restitution given on both corners");
     return text;
 }
 
@@ -42,7 +44,9 @@ std::string CollapseOptions::describe_model() const {
     std::snprintf(number, sizeof number, "%g", restitution);  // std::to_string printed 1e-7 as 0.000000
     std::string text = equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1";
     text += ", restitution ";
-    text += housner_restitution ? std::string("Housner 1 - 1.5 sin^2 alpha") : std::string(number);
+    text += housner_restitution ? std::string(imperfection.any() ? "Housner's law on each corner's geometry"
+                                                                : "Housner 1 - 1.5 sin^2 alpha")
+                                : std::string(number);
     text += ", criterion " + criterion_name(criterion) + ", solver " + solver_name(solver.kind);
     if (solver.kind != SolverKind::exact) text += " (" + tolerance_text(solver) + ")";
     return text + imperfection_words(imperfection, housner_restitution);
@@ -54,7 +58,8 @@ std::string CollapseOptions::describe() const {
     else {
         // Its own bytes since before the studies' describe_model: "solver dopri5 rtol ..." without parentheses.
         os << (equation == Equation::linearised ? "linearised eq. 3" : "full eq. 1") << ", restitution ";
-        if (housner_restitution) os << "Housner 1 - 1.5 sin^2 alpha";
+        if (housner_restitution)
+            os << (imperfection.any() ? "Housner's law on each corner's geometry" : "Housner 1 - 1.5 sin^2 alpha");
         else os << restitution;
         os << ", criterion " << criterion_name(criterion) << ", solver " << solver_name(solver.kind)
            << (solver.kind == SolverKind::exact ? std::string("") : " " + tolerance_text(solver))
@@ -126,7 +131,9 @@ CollapseResult smallest_collapse_p(const GroundInput& input, double alpha, const
         ++out.simulations;
         return collapses_at(input, alpha, p, options);
     };
-    double lo = 0.0, p = options.p_min;
+    // Blocks that crush under their own weight (pivots set back) are left
+    // out: the scan starts just above them.
+    double lo = 0.0, p = std::max(options.p_min, lowest_standing_p(alpha, options.imperfection));
     while (p <= options.p_max) {
         if (collapses(p)) break;
         lo = p;

@@ -18,7 +18,8 @@ std::string AssessOptions::describe() const {
     char range[200];
     std::snprintf(range, sizeof range, "q in [1, %g] (or to twice the record's q, at most 1e4)", q_max);
     char p_range[200];
-    std::snprintf(p_range, sizeof p_range, "p in [%g, %g] rad/s (or wider, to hold the block's p)", p_min, p_max);
+    std::snprintf(p_range, sizeof p_range, "p in [%g, %g] rad/s (or wider, to hold the block's p%s)", p_min, p_max,
+                  model.imperfection.fc > 0 ? "; from above the blocks that crush under their own weight" : "");
     char w[40];
     std::snprintf(w, sizeof w, "%g", width);
     return ida.describe_model() + "; the scale factors from the IDA over " + range +
@@ -28,12 +29,12 @@ std::string AssessOptions::describe() const {
 
 double AssessOptions::ida_q_max(double q_record) const { return std::min(1e4, std::max(q_max, 2 * q_record)); }
 
-SpectrumOptions AssessOptions::spectrum_options(double block_p) const {
+SpectrumOptions AssessOptions::spectrum_options(double block_p, double alpha) const {
     SpectrumOptions sp;
     sp.model = model;
     // A block outside [0.3, 30] rad/s (H above 160 m or below 2 cm at small
     // alpha) read the range's end as its nearest change of outcome.
-    sp.p_min = std::max(0.01, std::min(p_min, block_p / 1.5));
+    sp.p_min = std::max({0.01, std::min(p_min, block_p / 1.5), dynamics::lowest_standing_p(alpha, model.imperfection)});
     sp.p_max = std::min(1000.0, std::max(p_max, block_p * 1.5));
     sp.method = SpectrumOptions::Method::refine;
     sp.width = width;
@@ -97,7 +98,7 @@ RecordAssessment assess_record(const dynamics::SampledInput& input, const record
             a.first_robust_to = in.to, a.first_robust_open = !in.has_upper;
     }
 
-    const SpectrumOptions sp = o.spectrum_options(block.p);
+    const SpectrumOptions sp = o.spectrum_options(block.p, block.alpha);
     a.spectrum = rocking_spectrum(input, block.alpha, sp);
     a.mark = mark_block(input, a.spectrum, block, sp);
     return a;

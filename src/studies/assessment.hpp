@@ -41,7 +41,9 @@ struct AssessOptions {
     // The spectrum's: the model, [p_min, p_max] widened to hold the block's p
     // with a factor 1.5 to spare (within [0.01, 1000] rad/s), and the refine
     // search at width.
-    SpectrumOptions spectrum_options(double block_p) const;
+    // alpha: the block's (with --fc the range starts above the blocks of
+    // that slenderness that crush under their own weight).
+    SpectrumOptions spectrum_options(double block_p, double alpha) const;
 };
 
 struct RecordAssessment {
