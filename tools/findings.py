@@ -33,6 +33,7 @@ expected files' reader, the number formats, ev() and @entry):
     tools/findings_fig05_08.py   fig05 fig06 fig08 F5a-F8, Figures 5, 6 and 8
     tools/findings_tables.py     table1 table2     T1a-T2b, Tables 1 and 2
     tools/findings_fig11_12.py   fig11 fig12       F11-F12, Figures 11 and 12 and the fragility
+    tools/findings_imperfection.py imperfection    I1-I2, imperfect blocks (issue 41)
 
 Adding a finding (issue 39's first overturning, the sliding work): write one function
 of the data under @entry(...) in the module of its section, next to the entries of the
@@ -76,6 +77,7 @@ import findings_fig47  # noqa: E402
 import findings_fig05_08  # noqa: E402
 import findings_tables  # noqa: E402
 import findings_fig11_12  # noqa: E402
+import findings_imperfection  # noqa: E402
 from findings_errata import E  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -83,7 +85,8 @@ DOC = "docs/findings.md"
 
 # The entry modules in the document's order: the entries follow it, and within a module the
 # order in which it defines them.
-MODULES = [findings_errata, findings_fig47, findings_fig05_08, findings_tables, findings_fig11_12]
+MODULES = [findings_errata, findings_fig47, findings_fig05_08, findings_tables, findings_fig11_12,
+           findings_imperfection]
 ENTRIES = [e for m in MODULES for e in entries_of(m)]
 
 # The document's body: a section per key (an entry's `section`), in this order, with its title
@@ -104,6 +107,10 @@ SECTIONS = [
     ("table2", "Table 2", ""),
     ("fig11", "Figure 11", ""),
     ("fig12", "Figure 12", ""),
+    ("imperfection", "Imperfect blocks (issue 41)",
+     "The model's limit the paper names (\"neglects [...] geometric or material imperfections\"), tested: blocks "
+     "that lean, stand out of plumb or pivot on corners set back by the masonry's finite strength "
+     "(`dynamics/imperfect_block.hpp`, scene `imperfection`)."),
 ]
 
 # Findings of docs/ and the PROVENANCE files that are about the harness, not the paper.

@@ -28,6 +28,7 @@ This file opens the PDF and builds the pages in order; the rest is a module per 
     report_records.py    Tables 1-2 and Figures 11-12 (Section 4)
     report_spectrum.py   the rocking spectrum of the Norcia records
     report_fragility.py  the fragility study and eq. 27 at scale
+    report_imperfection.py  imperfect blocks: the closed forms per corner, eq. 27 on the records
     report_bench.py      the speed-accuracy trade (make bench)
 """
 import os
@@ -41,6 +42,7 @@ import report_bench  # noqa: E402
 import report_figures  # noqa: E402
 import report_findings  # noqa: E402
 import report_fragility  # noqa: E402
+import report_imperfection  # noqa: E402
 import report_outputs as outputs  # noqa: E402
 import report_records  # noqa: E402
 import report_spectrum  # noqa: E402
@@ -53,7 +55,7 @@ def main(argv):
         L = Layout(pdf)
         report_title.page(L)
         for topic in (report_findings, report_figures, report_records, report_spectrum, report_fragility,
-                      report_bench):
+                      report_imperfection, report_bench):
             topic.pages(L)
         L.finish()
     for p in L.problems:
