@@ -421,7 +421,9 @@ TEST(ImperfectBlock, UpliftTimeOnARecordAgainstAScan) {
                 }
                 ++found;
                 EXPECT_NEAR(t, truth, 1e-12) << t0 << " " << up << " " << down;
-                if (up == down) EXPECT_EQ(t, in.first_above(t0, in.t_end(), up));
+                if (up == down) {
+                    EXPECT_EQ(t, in.first_above(t0, in.t_end(), up));
+                }
                 // From the crossing just found at one level, the other is next.
                 const double again = first_beyond(in, t, in.t_end(), up, down);
                 EXPECT_NEAR(again, t, 1e-12);
