@@ -59,5 +59,6 @@ void run_fig12(SceneContext& ctx);
 void run_fig08(SceneContext& ctx);
 void run_spectrum(SceneContext& ctx);
 void run_fragility(SceneContext& ctx);
+void run_sliding(SceneContext& ctx);
 
 }  // namespace rocking::scenes

@@ -308,7 +308,7 @@ SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& in
                     std::snprintf(text, sizeof text,
                                   "sliding: the block leaves the ground at t = %.9g s (n = 0 at its pivot): free flight "
                                   "is outside the sliding-rocking model", t);
-                    throw std::runtime_error(text);
+                    throw FreeFlight(text, t);
                 }
                 case slip_starts: {
                     const Contact c = stick_rocking(block, x[0], x[1], phase.sigma, A);
