@@ -61,7 +61,7 @@ void run_case(Case& c, const dynamics::SampledInput& record) {
 std::string outcome(const Run& r) { return r.outside ? "outside" : r.overturned ? "yes" : "no"; }
 
 struct Tally {
-    int cases = 0, slid = 0, outside = 0;
+    int cases = 0, slid = 0;
     std::map<Effect, int> effects;
     double largest_change = 0;  // signed, the largest |peak change| among same/peak rows
     double largest_slip = 0;    // among the friction runs at 1e-9 that stay standing
@@ -162,7 +162,6 @@ void write_claim(SceneContext& ctx) {
             Tally& t = tally[{c.alpha, kFrictions[m]}];
             ++t.cases;
             t.slid += !f[0].outside && f[0].slid;
-            t.outside += f[0].outside || f[1].outside;
             ++t.effects[e];
             if (!f[0].outside && !f[0].overturned) t.largest_slip = std::max(t.largest_slip, f[0].max_slip);
             const bool compare = (e == Effect::same || e == Effect::peak) && !base.overturned && base.peak > 0;

@@ -73,7 +73,7 @@ double newmark_slip(double mu, const std::vector<std::pair<double, double>>& pul
         }
     };
     for (const auto& [a, T] : pulses) advance(a, T);
-    if (v != 0) x += v * v / (2 * mu * g);  // the ground at rest: friction stops it
+    if (v != 0) x += v * std::fabs(v) / (2 * mu * g);  // the ground at rest: friction stops it, either way
     return x;
 }
 
