@@ -60,5 +60,6 @@ void run_fig08(SceneContext& ctx);
 void run_spectrum(SceneContext& ctx);
 void run_fragility(SceneContext& ctx);
 void run_imperfection(SceneContext& ctx);
+void run_sliding(SceneContext& ctx);
 
 }  // namespace rocking::scenes

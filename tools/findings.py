@@ -34,6 +34,7 @@ expected files' reader, the number formats, ev() and @entry):
     tools/findings_tables.py     table1 table2     T1a-T2b, Tables 1 and 2
     tools/findings_fig11_12.py   fig11 fig12       F11-F12, Figures 11 and 12 and the fragility
     tools/findings_imperfection.py imperfection    I1-I2, imperfect blocks (issue 41)
+    tools/findings_sliding.py    sliding           S1-S3, the claims on a base with Coulomb friction
 
 Adding a finding (issue 39's first overturning, the sliding work): write one function
 of the data under @entry(...) in the module of its section, next to the entries of the
@@ -78,6 +79,7 @@ import findings_fig05_08  # noqa: E402
 import findings_tables  # noqa: E402
 import findings_fig11_12  # noqa: E402
 import findings_imperfection  # noqa: E402
+import findings_sliding  # noqa: E402
 from findings_errata import E  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -86,7 +88,7 @@ DOC = "docs/findings.md"
 # The entry modules in the document's order: the entries follow it, and within a module the
 # order in which it defines them.
 MODULES = [findings_errata, findings_fig47, findings_fig05_08, findings_tables, findings_fig11_12,
-           findings_imperfection]
+           findings_imperfection, findings_sliding]
 ENTRIES = [e for m in MODULES for e in entries_of(m)]
 
 # The document's body: a section per key (an entry's `section`), in this order, with its title
@@ -111,6 +113,11 @@ SECTIONS = [
      "The model's limit the paper names (\"neglects [...] geometric or material imperfections\"), tested: blocks "
      "that lean, stand out of plumb or pivot on corners set back by the masonry's finite strength "
      "(`dynamics/imperfect_block.hpp`, scene `imperfection`)."),
+    ("sliding", "Sliding: the paper's claims on a base with Coulomb friction",
+     "The paper's block rocks on a corner that never slips (its conclusion: it \"neglects base sliding\"). Scene "
+     "`sliding` (issue 41, docs/sliding.md) puts the block on Coulomb friction μ = 0.8, 0.6, 0.4, with the full "
+     "equations and impacts that may slip, and retests the one claim the paper makes about sliding and two claims "
+     "it makes for its model."),
 ]
 
 # Findings of docs/ and the PROVENANCE files that are about the harness, not the paper.

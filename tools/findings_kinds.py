@@ -53,10 +53,10 @@ KINDS = [
          "been checked: a suspected extraction artefact, not an erratum, until it is; the entry says what would "
          "settle it.",
          gloss="possibly not the paper's: see what would settle it"),
-    Kind("beyond", "Beyond the paper's scope", r"(fails|holds) beyond the paper's (range|criterion|records)",
-         "**fails beyond the paper's range / criterion / records**: a claim tested on a range, a collapse "
-         "criterion, or records and scalings the paper does not use, and found not to hold there: a finding about "
-         "the model the paper proposes, not an error of the paper.",
+    Kind("beyond", "Beyond the paper's scope", r"(fails|holds) beyond the paper's (range|criterion|records|model)",
+         "**fails beyond the paper's range / criterion / records / model**: a claim tested on a range, a collapse "
+         "criterion, records and scalings, or a model (a sliding base) the paper does not use, and found not to hold "
+         "there: a finding about the model the paper proposes, not an error of the paper.",
          gloss="a finding about the model, not an error of the paper", qualifier="beyond the paper's",
          paper_scope=True),
     Kind("caveat", "Caveats", r"caveat: .+",

@@ -29,6 +29,7 @@ This file opens the PDF and builds the pages in order; the rest is a module per 
     report_spectrum.py   the rocking spectrum of the Norcia records
     report_fragility.py  the fragility study and eq. 27 at scale
     report_imperfection.py  imperfect blocks: the closed forms per corner, eq. 27 on the records
+    report_sliding.py    the paper's claims on a base with Coulomb friction (scene sliding)
     report_bench.py      the speed-accuracy trade (make bench)
 """
 import os
@@ -45,6 +46,7 @@ import report_fragility  # noqa: E402
 import report_imperfection  # noqa: E402
 import report_outputs as outputs  # noqa: E402
 import report_records  # noqa: E402
+import report_sliding  # noqa: E402
 import report_spectrum  # noqa: E402
 import report_title  # noqa: E402
 
@@ -55,7 +57,7 @@ def main(argv):
         L = Layout(pdf)
         report_title.page(L)
         for topic in (report_findings, report_figures, report_records, report_spectrum, report_fragility,
-                      report_imperfection, report_bench):
+                      report_imperfection, report_sliding, report_bench):
             topic.pages(L)
         L.finish()
     for p in L.problems:

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -75,9 +76,17 @@ struct SlidingResult {
     bool collapse(Criterion c, double alpha) const { return as_rocking().collapse(c, alpha); }
 };
 
+// The block leaves the ground (n reaches 0 at its pivot) at time t: free
+// flight, outside the model.  Its own type, so that a study can count the
+// runs the model cannot follow apart from every other failure.
+struct FreeFlight : std::runtime_error {
+    double t;
+    FreeFlight(const std::string& what, double when) : std::runtime_error(what), t(when) {}
+};
+
 // Throws std::invalid_argument for a bad block or tolerances outside
-// [kSmallestTolerance, 1), std::runtime_error when the block would fly or
-// the events do not end, std::domain_error where the contact problem has no
+// [kSmallestTolerance, 1), FreeFlight (a std::runtime_error) when the block
+// would fly, std::runtime_error when the events do not end, std::domain_error where the contact problem has no
 // consistent solution (friction_block.hpp).
 SlidingResult simulate_sliding(const FrictionBlock& block, const GroundInput& input, const SlidingOptions& options);
 
