@@ -157,6 +157,15 @@ with open(tmp + "/c.txt", "w") as f:
     f.write("-0.2249\n" * 50)     # below the corner -1's alpha 0.25, above the nominal 0.2
 c = sim("--record", tmp + "/c.txt", "--unit", "g", "--record-dt", "0.01", "--alpha", "0.2", "--p", "2", "--lean", "0.05")
 assert c["input_lifts_block"] is False and c["impacts"] == 0 and c["max_theta_input_over_alpha"] == 0, c
+# A spectrum's "the record never lifts the block" reads the leaning block's lower corner (0.09 g
+# lifts alpha 0.1 leaning 0.02 on its corner +1, not the perfect block).
+with open(tmp + "/k.txt", "w") as f:
+    f.write("0.09\n" * 300)
+def spec(*extra):
+    out = subprocess.run([rocking, "spectrum", tmp + "/k.txt", "--unit", "g", "--dt", "0.01", "--alpha", "0.1",
+                          "--points", "20", *extra, "--json"], capture_output=True, check=True).stdout
+    return json.loads(out)["spectra"][0]["lifts"]
+assert spec("--lean", "0.02") is True and spec() is False
 PY
 then echo "ok: the probe's findings stay fixed"; else echo "FAIL: the probe's findings"; fail=1; fi
 

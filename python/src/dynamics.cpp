@@ -116,6 +116,14 @@ py::dict sliding_result(const dynamics::GivenBlock& given, const GroundInput& in
     out["t"] = to_array(t);
     out["theta"] = to_array(theta);
     out["omega"] = to_array(omega);
+    // As the rocking-only result's and --output's columns.
+    std::vector<double> theta_a, omega_ap;
+    for (const sliding::SlidingSample& s : r.samples) {
+        theta_a.push_back(s.theta / alpha);
+        omega_ap.push_back(s.omega / (alpha * p));
+    }
+    out["theta_over_alpha"] = to_array(theta_a);
+    out["omega_over_alpha_p"] = to_array(omega_ap);
     out["slip_m"] = to_array(slip);
     out["slip_rate_m_s"] = to_array(rate);
     out["regime"] = regime;

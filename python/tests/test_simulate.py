@@ -117,7 +117,8 @@ def test_friction_is_simulate_friction_json(tmp_path):
     s = rq.simulate(friction=0.6, **args)
     c = cli("simulate", "--train", "1:1,-1:1", "--to", 0.3, "--pga", 0.3, "--alpha", 0.2, "--height", 3,
             "--friction", 0.6)
-    rows = {"t", "theta", "omega", "slip_m", "slip_rate_m_s", "regime"}  # --output's, every dt = 0.01 s
+    rows = {"t", "theta", "omega", "theta_over_alpha", "omega_over_alpha_p", "slip_m", "slip_rate_m_s",
+            "regime"}  # --output's, every dt = 0.01 s
     assert set(s) == set(c) | rows and all(s[k] == c[k] for k in c), [k for k in c if s.get(k) != c[k]]
     out = tmp_path / "rows.csv"
     cli("simulate", "--train", "1:1,-1:1", "--to", 0.3, "--pga", 0.3, "--alpha", 0.2, "--height", 3,
@@ -128,6 +129,8 @@ def test_friction_is_simulate_friction_json(tmp_path):
     assert s["theta"].tolist() == [v * 0.2 for v in table["theta_over_alpha"]] or \
         np.allclose(s["theta"] / 0.2, table["theta_over_alpha"], rtol=1e-15, atol=0)
     assert s["regime"] == table["regime"] and s["regime"][0] == "rest"
+    assert s["theta_over_alpha"].tolist() == table["theta_over_alpha"]
+    assert s["omega_over_alpha_p"].tolist() == table["omega_over_alpha_p"]
     assert "Coulomb friction mu = 0.6" in s["model"] and s["energy"]["balance_error_over_gR"] < 1e-8
     with pytest.raises(ValueError, match="^friction: model, solver, restitution, paper and atol do not apply"):
         rq.simulate(friction=0.6, restitution=0.9, **args)

@@ -89,7 +89,11 @@ int cmd_collapse(int argc, char** argv) {
             m.equation = o.equation;
             m.block = Block::from_p(1.0, alpha);
             const double pga_g = r.pga() / kGravity, thr = m.uplift_threshold();
-            if (pga_g <= thr)
+            if (o.imperfection.any() && !records::input_lifts_any(input, alpha, o.p_min, o))
+                std::printf("no collapse for p up to %g rad/s: the record never lifts the block at all (it stays within "
+                            "each corner's uplift threshold, the searched blocks' lowest)\n", o.p_max);
+            else if (o.imperfection.any()) std::printf("no collapse for p up to %g rad/s\n", o.p_max);
+            else if (pga_g <= thr)
                 std::printf("no collapse for p up to %g rad/s: the record never lifts the block at all (PGA %.6g g <= "
                             "the uplift threshold %s g = %.6g g)\n",
                             o.p_max, pga_g, o.equation == Equation::full ? "tan alpha" : "alpha", thr);

@@ -98,7 +98,7 @@ ImperfectGeometry imperfect_geometry(double b, double h, const Imperfection& imp
         const char* side = k == &g.plus ? "theta > 0" : "theta < 0";
         char text[240];
         std::snprintf(text, sizeof text,
-                      "on its corner %s alpha = %.6g rad: %s", side, k->alpha,
+                      "on its corner %s alpha = %.6g rad: %s", side, k->alpha == 0 ? 0.0 : k->alpha,
                       k->alpha <= 0 ? "the centre of gravity is beyond the pivot, the block cannot stand"
                                     : "beyond pi/4, not a slender block (the engine's range is (0, pi/4))");
         refuse(!(k->alpha > 0 && k->alpha < M_PI / 4), text);
@@ -112,6 +112,7 @@ double crushing_p(double alpha, const Imperfection& imp) {
 }
 
 double lowest_standing_p(double alpha, const Imperfection& imp) {
+    if (!imp.any()) return 0.0;
     auto stands = [&](double p) {
         try {
             imperfect_geometry(Block::from_p(p, alpha), imp);

@@ -116,6 +116,11 @@ bool run_collapses(const SimulationResult& r, Criterion c, double alpha, double 
     return r.collapse(c, m.block.alpha, m.symmetric() ? 0.0 : m.minus.alpha);
 }
 
+bool input_lifts_any(const GroundInput& input, double alpha, double p_min, const CollapseOptions& options) {
+    const double p = std::max(p_min, lowest_standing_p(alpha, options.imperfection));
+    return dynamics::input_lifts(input, model_of(alpha, std::isfinite(p) ? p : p_min, options));
+}
+
 bool collapses_at(const GroundInput& input, double alpha, double p, const CollapseOptions& options) {
     return run_collapses(run_block(input, alpha, p, options, options.criterion == Criterion::overturning),
                          options.criterion, alpha, p, options);

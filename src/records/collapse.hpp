@@ -71,6 +71,12 @@ CollapseResult smallest_collapse_p(const dynamics::GroundInput& input, double al
 // under the model, restitution, criterion and solver of `options`.
 bool collapses_at(const dynamics::GroundInput& input, double alpha, double p, const CollapseOptions& options);
 
+// Whether the input lifts, at rest, any block of slenderness alpha that a
+// search from p_min runs: the perfect block's threshold (alpha, or tan alpha
+// on eq. 1, whatever p), or an imperfect block's lowest, on the weakest
+// block of the range (the lowest p that stands: the largest setback).
+bool input_lifts_any(const dynamics::GroundInput& input, double alpha, double p_min, const CollapseOptions& options);
+
 // The same block's whole run, with the free rocking after the input followed
 // whatever the criterion, so that all three criteria are decided at once (the
 // rocking spectrum's grid, studies/spectrum.hpp).

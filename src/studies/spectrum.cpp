@@ -308,10 +308,9 @@ Spectrum rocking_spectrum(const GroundInput& input, double alpha, const Spectrum
     check_options(alpha, o);
     Spectrum s;
     s.alpha = alpha;
-    dynamics::Model threshold;  // the uplift threshold depends on alpha and the equation only
-    threshold.equation = o.model.equation;
-    threshold.block = dynamics::Block::from_p(1.0, alpha);
-    s.lifts = input.peak() > threshold.uplift_threshold();
+    // An imperfect block lifts lower than the perfect one, and a set-back one
+    // the lower the larger it is: the range's weakest block.
+    s.lifts = records::input_lifts_any(input, alpha, o.p_min, o.model);
     if (o.method == SpectrumOptions::Method::refine) {
         refined_spectrum(s, input, alpha, o);
         summarise(s, o);
