@@ -17,6 +17,17 @@ namespace sliding_scene {
 
 double half_diagonal(double alpha) { return 0.5 * kHeight / std::cos(alpha); }
 
+SceneRecords load_records(const std::string& root, const std::vector<std::string>& files) {
+    SceneRecords out;
+    for (const std::string& f : files) {
+        out.read.push_back(records::read_any(f));
+        const records::Record& r = out.read.back();
+        out.inputs.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(kGravity), r.dt, r.name));
+        out.labels.push_back(f.substr(root.size() + 1));
+    }
+    return out;
+}
+
 double pulsation(double alpha) { return std::sqrt(3 * kGravity / (4 * half_diagonal(alpha))); }
 
 std::string number_label(double v) {

@@ -100,13 +100,9 @@ void write_claim(SceneContext& ctx) {
         for (const char* f : kFiles) ctx.skip(f, kNoRecords);
         return;
     }
-    std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
-    std::vector<std::string> labels;
-    for (const std::string& f : files) {
-        const records::Record r = records::read_any(f);
-        inputs.push_back(std::make_unique<dynamics::SampledInput>(r.in_g(kGravity), r.dt, r.name));  // as table1
-        labels.push_back(f.substr(root.size() + 1));
-    }
+    const SceneRecords loaded = load_records(root, files);
+    const auto& inputs = loaded.inputs;
+    const auto& labels = loaded.labels;
     std::vector<Case> cases;
     for (std::size_t r = 0; r < files.size(); ++r)
         for (double a : alphas())

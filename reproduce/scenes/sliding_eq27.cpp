@@ -172,16 +172,11 @@ void write_eq27(SceneContext& ctx) {
         for (const char* f : kFiles) ctx.skip(f, kNoRecords);
         return;
     }
-    std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
-    std::vector<std::string> labels;
+    const SceneRecords loaded = load_records(root, files);
+    const auto& inputs = loaded.inputs;
+    const auto& labels = loaded.labels;
+    const auto& recs = loaded.read;
     std::vector<std::array<double, 11>> to(files.size());
-    std::vector<records::Record> recs;
-    for (const std::string& f : files) {
-        recs.push_back(records::read_any(f));
-        inputs.push_back(std::make_unique<dynamics::SampledInput>(recs.back().in_g(kGravity), recs.back().dt,
-                                                                  recs.back().name));
-        labels.push_back(f.substr(root.size() + 1));
-    }
     batch::run_ordered<std::array<double, 11>>(
         files.size(), batch::PoolOptions{batch::default_threads()},
         [&](std::size_t i) { return records::half_periods(recs[i]).to; },

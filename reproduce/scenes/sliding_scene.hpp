@@ -8,10 +8,13 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "dynamics/ground_input.hpp"
 #include "dynamics/simulate.hpp"
+#include "records/record.hpp"
 #include "scene.hpp"
 
 namespace rocking::scenes::sliding_scene {
@@ -33,6 +36,15 @@ inline constexpr double kRtol = 1e-9, kRtolTight = 1e-11;
 inline constexpr double kPeakChange = 0.05;
 
 double half_diagonal(double alpha);  // R = (H/2)/cos(alpha), m
+
+// The shared records as the record parts run them: each as read, as an
+// input in g (as table1 makes it) and labelled by its path under root.
+struct SceneRecords {
+    std::vector<records::Record> read;
+    std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
+    std::vector<std::string> labels;
+};
+SceneRecords load_records(const std::string& root, const std::vector<std::string>& files);
 double pulsation(double alpha);      // p = sqrt(3 g/(4 R)), rad/s (eq. 4)
 std::string number_label(double v);  // %g: "0.4", "1e+06"
 std::string digits10(double v);      // %.10g: the tables' rotations and slips (tolerances far wider)
