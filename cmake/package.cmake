@@ -37,7 +37,8 @@ set(ROCKING_PUBLIC_HEADERS
   studies/stripe_fit.hpp
   studies/ida.hpp
   studies/spectrum.hpp
-  studies/eq27_at_scale.hpp)
+  studies/eq27_at_scale.hpp
+  studies/eq27_of_block.hpp)
 foreach(header ${ROCKING_PUBLIC_HEADERS})
   get_filename_component(folder ${header} DIRECTORY)
   install(FILES src/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/rocking_q/${folder})

@@ -205,4 +205,42 @@ check "density without fc" "--density goes with --fc" "$rocking" simulate "${bas
 check "a crushing base" "the block's weight crushes its base" "$rocking" simulate "${base[@]}" --fc 0.02
 check "no friction with a lean" "--friction does not apply to an imperfect block" "$rocking" simulate "${base[@]}" --lean 0.01 --friction 0.6
 check "a study states the lean" "lean 0.01 rad" "$rocking" collapse "$tmp/s.txt" --unit m/s2 --alpha 0.1 --lean 0.01
+check "a mirrored train with a lean" "flip the signs of --lean and --out-of-plumb with it" \
+    "$rocking" simulate --train -1:1 --x 1 --q 2 --alpha 0.1 --p 2 --lean 0.01
+
+# assess and collapse state the imperfect block, and assess checks eq. 27 toward each corner:
+# the paper's q2_n6(p to_5) at the nominal block (recomputed here by (S2) from the to_5 given),
+# times the weaker corner's alpha over alpha; collapse's simulate hint keeps --lean; spectrum
+# with --fc and no --p-min starts where the blocks stand (collapse's p at its range's start).
+if $py - "$rocking" "$tmp/s.txt" <<'PY'
+import json, math, subprocess, sys
+rocking, record = sys.argv[1], sys.argv[2]
+def cli(*args, js=True):
+    out = subprocess.run([rocking, *args] + (["--json"] if js else []), capture_output=True, check=True).stdout
+    return json.loads(out) if js else out.decode()
+alpha, psi = 0.1, 0.02
+a = cli("assess", record, "--unit", "m/s2", "--alpha", repr(alpha), "--p", "3", "--lean", repr(psi), "--width", "0.01")
+r = a["records"][0]
+x = 3 * r["to5"]
+# The paper's q2_n6 from `rocking q` (checked against eq. 27 by the q scenes): what is
+# checked here is the scaling by the weaker corner's alpha, the imperfect block's own.
+q27 = cli("q", "--case", "2", "--pulses", "6", "--x", repr(x))["q"]
+assert abs(r["q_eq27_as_printed"] - q27) < 1e-12 * q27, (r["q_eq27_as_printed"], q27)
+assert abs(r["q_eq27"] - q27 * (alpha - psi) / alpha) < 1e-12 * q27, (r["q_eq27"], q27)
+assert r["eq27_side"] == 1 and r["passes"] == (r["q_record"] < r["q_eq27"]), r
+im = a["imperfection"]
+assert abs(im["corner_plus"]["alpha"] - (alpha - psi)) < 1e-15 and abs(im["corner_minus"]["alpha"] - (alpha + psi)) < 1e-15, im
+assert "toward each corner" in a["check"], a["check"]
+c = cli("collapse", record, "--unit", "m/s2", "--alpha", "0.1", "--lean", repr(psi))
+assert c["found"] and abs(c["imperfection"]["corner_plus"]["alpha"] - (alpha - psi)) < 1e-15, c
+t = cli("collapse", record, "--unit", "m/s2", "--thickness", "0.3", "--height", "3", "--lean", repr(psi), js=False)
+assert "--thickness 0.3 --height 3 --unit m/s2 --lean 0.02" in t, t
+s = cli("spectrum", record, "--unit", "m/s2", "--alpha", "0.1", "--fc", "1", "--points", "4")
+f = cli("collapse", record, "--unit", "m/s2", "--alpha", "0.1", "--fc", "1")
+assert s["grid"]["p_min"] > 0.3 and f["below_range"] and s["grid"]["p_min"] == f["p"], (s["grid"], f)
+PY
+then echo "ok: assess's eq. 27 toward each corner, the imperfection stated, spectrum from standing blocks"
+else echo "FAIL: assess/collapse/spectrum with an imperfect block"; fail=1; fi
+check "a spectrum of crushed blocks asked for" "the block's weight crushes its base" \
+    "$rocking" spectrum "$tmp/s.txt" --unit m/s2 --alpha 0.1 --fc 1 --p-min 0.3 --points 4
 exit $fail

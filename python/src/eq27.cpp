@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/imperfect_block.hpp"
 #include "common.hpp"
 #include "fragility_fits.hpp"
 #include "studies/distinct_inputs.hpp"
@@ -115,6 +116,13 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const st
     restitution_into(restitution, o.ida.model);
     friction_into(friction, restitution, o.ida.model);
     imperfection_into(imperfection, o.ida.model);
+    // As rocking eq27: with fc the tallest blocks crush, and without p_min the grid starts where they stand.
+    if (!p_min) {
+        o.grid.p_min = std::fmax(o.grid.p_min, dynamics::lowest_standing_p(o.grid.alphas, o.ida.model.imperfection));
+        if (!(o.grid.p_max > o.grid.p_min))
+            refuse("imperfection fc: the blocks of these alphas stand only above p = " + g7(o.grid.p_min) +
+                   " rad/s, at or above p_max (" + g7(o.grid.p_max) + " rad/s)");
+    }
     method_argument(method_given, width_given, robust_width_given, o.ida);
     const bool refine = o.ida.method == studies::IdaOptions::Method::refine;
     o.bootstrap.resamples = bootstrap_argument(bootstrap, seed, o.bootstrap.seed);
@@ -203,7 +211,7 @@ void init_eq27(py::module_& m) {
           "restitution"_a = "housner", "friction"_a = py::none(), "imperfection"_a = py::none(),
           R"(`rocking eq27 --json`: each record's first collapse q on every block of the grid against eq. 27
 at x = p to_k; per to_k the share of non-conservative cases with its Wilson and bootstrap
-intervals, by record and the map over blocks.  p: p_points log-spaced from p_min (default 0.5) to
+intervals, by record and the map over blocks.  p: p_points log-spaced from p_min (default 0.5, or where the blocks stand with imperfection fc) to
 p_max (default 10); p_points=1 is p_min alone (p_max, if given, must equal it).  method='refine'
 (width=w in ln q, default 1e-5; robust_width, default 5e-3), as --method refine: the shares,
 by_record, map and case_points under the first overturning (capacity, capacity_note), and the

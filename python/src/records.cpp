@@ -363,6 +363,11 @@ py::dict collapse(py::handle record, const Real& alpha_given, const Text& model,
     out["below_range"] = c.below_range();
     out["simulations"] = c.simulations;
     out["search"] = o.describe();
+    // As rocking collapse --json: each corner at the p found, or the imperfections alone.
+    if (o.imperfection.any())
+        out["imperfection"] = c.found ? imperfection_dict(o.imperfection, dynamics::Block::from_p(c.p, alpha),
+                                                          o.housner_restitution ? NAN : o.restitution)
+                                      : imperfection_inputs_dict(o.imperfection);
     return out;
 }
 
@@ -434,6 +439,8 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         d["to5"] = r.motion.to5;
         d["x"] = r.x;
         d["q_eq27"] = r.q_eq27;
+        d["q_eq27_as_printed"] = r.q_eq27_as_printed;
+        d["eq27_side"] = r.eq27_side;
         d["eq27_passes_alpha_before_t_fin"] = r.eq27_passes_alpha;
         d["eq27_impact_before_t_fin"] = r.eq27_strikes;
         d["q_record"] = r.q_record;
@@ -466,7 +473,10 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
     // As rocking assess --json: the floor's model where the records are a floor's motion.
     out["input"] = floor ? records::describe_as_input(records::parse_floor_model(*string_argument(floor, "floor")))
                          : std::string("each record as recorded: the ground's motion");
-    out["check"] = "eq. 27: the record's q below q2_n6(p to_5)";
+    out["check"] = o.describe_check();
+    if (o.model.imperfection.any())
+        out["imperfection"] = imperfection_dict(o.model.imperfection, given.block,
+                                                o.model.housner_restitution ? NAN : o.model.restitution);
     out["records"] = rows;
     py::dict fragility = result();
     fragility["fitted"] = a.fitted;

@@ -13,6 +13,7 @@
 #include "fragility_fits.hpp"
 #include "study_arguments.hpp"
 #include "dynamics/ground_input.hpp"
+#include "dynamics/imperfect_block.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "records/collapse.hpp"
 #include "studies/distinct_inputs.hpp"
@@ -57,7 +58,7 @@ py::object boundary(const studies::Interval& in, bool lower) {
     return std::move(d);
 }
 
-py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min, const Real& p_max, const Whole& points,
+py::dict spectrum(py::handle record, const py::object& alpha, const std::optional<Real>& p_min, const Real& p_max, const Whole& points,
                   const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
                   const std::optional<Real>& robust_width_given, const std::optional<Text>& mark_given,
                   const py::object& restitution, const py::object& friction, const py::object& imperfection,
@@ -82,7 +83,8 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     }
     if (alphas.empty()) refuse("give alpha, or mark='BxH,...' for the alphas of the blocks marked");
     studies::SpectrumOptions o;
-    o.p_min = number(p_min, "p_min"), o.p_max = number(p_max, "p_max");
+    if (p_min) o.p_min = *number(p_min, "p_min");
+    o.p_max = number(p_max, "p_max");
     const long long points_given = whole(points, "points");
     if (points_given < 2 || points_given > 100000) refuse("points: must be between 2 and 100000");
     o.points = static_cast<int>(points_given);
@@ -93,13 +95,20 @@ py::dict spectrum(py::handle record, const py::object& alpha, const Real& p_min,
     if (m.refine) o.method = studies::SpectrumOptions::Method::refine;
     o.width = m.width;
     o.robust_width = m.robust_width;
+    restitution_into(restitution, o.model);
+    friction_into(friction, restitution, o.model);
+    imperfection_into(imperfection, o.model);
+    // As rocking spectrum: with fc the tallest blocks crush, and without p_min the range starts where they stand.
+    if (!p_min) {
+        o.p_min = std::fmax(o.p_min, dynamics::lowest_standing_p(alphas, o.model.imperfection));
+        if (!(o.p_max > o.p_min))
+            refuse("imperfection fc: the blocks of these alphas stand only above p = " + g7(o.p_min) +
+                   " rad/s, at or above p_max (" + g7(o.p_max) + " rad/s)");
+    }
     for (const studies::BlockShape& b : marks) {
         const std::string why = studies::why_not_markable(b, o);
         if (!why.empty()) refuse("mark " + b.built + ": " + why + " (p_min, p_max)");
     }
-    restitution_into(restitution, o.model);
-    friction_into(friction, restitution, o.model);
-    imperfection_into(imperfection, o.model);
     const int threads = jobs_argument(jobs);
     const RecordPtr r = with_floor(record_argument(record, "record"), floor);
     std::vector<Study> found;
@@ -359,9 +368,7 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
     grid["q_max"] = o.ida.q_max;
     grid["points"] = o.ida.points;
     grid["rel_tol"] = o.ida.rel_tol;
-    grid["note"] = o.ida.describe_grid() +
-                   "; q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold; " +
-                   o.ida.describe_checks();
+    grid["note"] = o.ida.describe_grid() + "; " + o.ida.describe_q() + "; " + o.ida.describe_checks();
     if (refine) {
         grid["method"] = "refine";
         grid["width"] = o.ida.width;
@@ -377,6 +384,11 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         b["alpha"] = f.block.alpha;
         b["p"] = f.block.p;
         if (!f.block.built.empty()) b["built"] = f.block.built;
+        // An imperfect block's grid may start below q_min, where it lifts.
+        if (o.ida.model.imperfection.any()) {
+            b["q_start"] = o.ida.q_start(f.block.alpha, f.block.p);
+            if (refine) b["stripe_half_width"] = studies::stripe_half_width(o.ida.q_start(f.block.alpha, f.block.p), o.ida.q_max, o.ida.points);
+        }
         py::list rows;
         for (std::size_t k = 0; k < recs.size(); ++k) {
             const Ida& ida = f.idas[k];
@@ -440,13 +452,14 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
 
 void init_studies(py::module_& m) {
     using namespace py::literals;
-    m.def("spectrum", gsl_checked(&spectrum), "record"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = 0.3, "p_max"_a = 30.0,
+    m.def("spectrum", gsl_checked(&spectrum), "record"_a, py::kw_only(), "alpha"_a = py::none(), "p_min"_a = py::none(), "p_max"_a = 30.0,
           "points"_a = 200, "jobs"_a = py::none(), "method"_a = "grid", "width"_a = py::none(),
           "robust_width"_a = py::none(), "mark"_a = py::none(), "restitution"_a = "housner", "friction"_a = py::none(), "imperfection"_a = py::none(), "floor"_a = py::none(),
           R"(`rocking spectrum --json`: for each alpha (a number or a list), the overturning intervals in p
 (rad/s), each end bisected to 1e-6 and checked, beside Table 1's first collapse, and the grid: each
 spectrum's points as arrays (p, grid, max_theta, final_rotation, peak_rotation, overturning,
-t_overturn with NaN for null).  jobs: threads (default: the cores this process may use).
+t_overturn with NaN for null).  p_min: 0.3 by default, or where the blocks stand with imperfection
+fc (the tallest crush).  jobs: threads (default: the cores this process may use).
 method='refine' (width=w in ln p, default 1e-5; robust_width, default 5e-3) finds every island
 wider than w and adds first_overturning (p, found, boundary), first_robust_collapse, bands (from,
 to, share), samples, accepted, at_width, with_margins and unguaranteed_from, as --method refine

@@ -127,6 +127,15 @@ dynamics::Imperfection imperfection_argument(const py::object& value, const reco
     return imp;
 }
 
+py::dict imperfection_inputs_dict(const dynamics::Imperfection& imp) {
+    py::dict d;
+    d["lean"] = imp.lean;
+    d["out_of_plumb"] = imp.out_of_plumb;
+    d["fc"] = imp.fc / 1e6;  // MPa, as the argument's key
+    d["density"] = imp.density;
+    return d;
+}
+
 py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution) {
     const dynamics::ImperfectGeometry g = dynamics::imperfect_geometry(base, imp);
     auto corner = [&](const dynamics::CornerGeometry& k) {
@@ -137,11 +146,7 @@ py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Bl
         d["restitution_onto"] = std::isnan(restitution) ? k.restitution_onto : restitution;
         return d;
     };
-    py::dict d;
-    d["lean"] = imp.lean;
-    d["out_of_plumb"] = imp.out_of_plumb;
-    d["fc"] = imp.fc / 1e6;  // MPa, as the argument's key
-    d["density"] = imp.density;
+    py::dict d = imperfection_inputs_dict(imp);
     d["sigma0_kpa"] = g.sigma0 / 1e3;
     d["setback_m"] = g.setback;
     d["corner_plus"] = corner(g.plus);

@@ -61,5 +61,7 @@ void imperfection_into(const py::object& value, records::CollapseOptions& model)
 // As rocking simulate --json's "imperfection": each corner's alpha, p, R and
 // restitution onto it, the setback and its stress.
 py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution);
+// The imperfections alone, for a search over blocks of many sizes (collapse without a p found).
+py::dict imperfection_inputs_dict(const dynamics::Imperfection& imp);
 
 }  // namespace rocking::python

@@ -248,3 +248,23 @@ def test_friction_puts_the_studies_on_the_sliding_model(tmp_path):
         rq.spectrum(r, alpha=0.1, friction=0.4, restitution=0.9)
     with pytest.raises(ValueError, match=r"^friction: the friction coefficient must be in \(0, 1e6\] \(got 0\)"):
         rq.fragility([r], alpha=0.1, p=2, friction=0)
+
+
+def test_imperfect_blocks_start_where_they_stand_and_lift(tmp_path):
+    # imperfection={...} as the command line's flags (issue 41): a spectrum with
+    # fc and no p_min starts where collapse's scan starts (the blocks that stand);
+    # a leaning block's IDA starts where it lifts, (alpha - lean)/alpha, as
+    # rocking fragility's per-block q_start; both equal to the command line's.
+    r = rq.record_synth(stochastic=3, dt=0.01, duration=15)
+    path = tmp_path / "s.txt"
+    np.savetxt(path, np.asarray(r.accel), fmt="%.17g")
+    s = rq.spectrum(r, alpha=0.1, points=4, imperfection={"fc": 1})
+    c = cli("spectrum", path, "--unit", "m/s2", "--dt", r.dt, "--alpha", 0.1, "--points", 4, "--fc", 1)
+    first = cli("collapse", path, "--unit", "m/s2", "--dt", r.dt, "--alpha", 0.1, "--fc", 1)
+    assert s["grid"]["p_min"] == c["grid"]["p_min"] == first["p"] > 0.3
+    f = rq.fragility([r], alpha=0.15, p=3, points=15, imperfection={"lean": 0.05})
+    c = cli("fragility", path, "--unit", "m/s2", "--dt", r.dt, "--alpha", 0.15, "--p", 3, "--points", 15, "--lean", 0.05)
+    assert f["blocks"][0]["q_start"] == c["blocks"][0]["q_start"]
+    assert abs(f["blocks"][0]["q_start"] - 0.1 / 0.15) < 1e-15
+    with pytest.raises(ValueError, match="crushes its base"):
+        rq.spectrum(r, alpha=0.1, points=4, p_min=0.3, imperfection={"fc": 1})

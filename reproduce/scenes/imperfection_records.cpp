@@ -23,6 +23,7 @@
 #include "records/record.hpp"
 #include "records_analysis.hpp"
 #include "studies/eq27_at_scale.hpp"
+#include "studies/eq27_of_block.hpp"
 #include "studies/ida.hpp"
 
 namespace rocking::scenes::imperfection_scene {
@@ -88,16 +89,6 @@ int verdict(const studies::IdaPoint& point, bool ill, const Gap& gap, double q27
     return studies::non_conservative(point, q27) ? 1 : 0;
 }
 
-// Eq. 27 toward each corner of the block the IDA ran (records::model_of), the
-// smaller, over the perfect block's alpha g: the imperfect closed form.
-double eq27_toward_corners(double alpha, double p, const studies::IdaOptions& o, double to) {
-    const dynamics::Model m = records::model_of(alpha, p, o.model);
-    const CornerOfBlock plus{m.block.alpha, m.block.p};
-    const CornerOfBlock minus = m.symmetric() ? plus : CornerOfBlock{m.minus.alpha, m.minus.p};
-    static const PulseTrain train = repeated_case(2, 6);
-    return imperfect_collapse(train, to, plus, minus).pga_g() / alpha;
-}
-
 }  // namespace
 
 void run_records(SceneContext& ctx) {
@@ -135,13 +126,15 @@ void run_records(SceneContext& ctx) {
     pt.note("model", "linearised eq. 3 on each corner with its own alpha and p, each corner's restitution from the "
                      "geometry (Housner's on the perfect block), overturning at any time (free rocking included)");
     pt.note("solver", "exact solver (the record kernel for a symmetric block, the general path for an asymmetric one); " +
-                          o0.describe_grid() + "; q = PGA / (alpha g) with the perfect block's alpha, the record scaled");
+                          o0.describe_grid() + "; an imperfect block's grid from where it lifts, q = min over its corners of "
+                          "alpha_sigma/alpha when below 1 (IdaOptions::q_start); q = PGA / (alpha g) with the perfect "
+                          "block's alpha, the record scaled");
     pt.note("check", o0.describe_checks());
     pt.note("inputs", inputs);
     pt.note("columns", "as fragility_points.csv: outcome collapsed (first collapse found) or censored (none up to "
                        "q_max: q_censored); q_collapse / q_safe: the first collapse's bracket where the check finds it "
                        "well conditioned, q_ill_*: where the probe (input x 1 +- 1e-13) flips an outcome; a first "
-                       "collapse at the grid's start has q_collapse = q_min and no bracket; intervals: the number of "
+                       "collapse at the grid's start has q_collapse = the block's q_start and no bracket; intervals: the number of "
                        "overturning intervals up to q_max; check: the first bracket's verdict; q_gap_safe..collapse: "
                        "for an ill-conditioned one, the grid points around it (safe below, overturning above), "
                        "between which rounding places it");
@@ -196,7 +189,7 @@ void run_records(SceneContext& ctx) {
                 for (int k = 0; k < studies::kHalfPeriods; ++k) {
                     const double to = recs[r].to[k];
                     const int nominal = verdict(ida.point, ill, gap, q2_n6(ida.p * to));
-                    const int corners = verdict(ida.point, ill, gap, eq27_toward_corners(ida.alpha, ida.p, o, to));
+                    const int corners = verdict(ida.point, ill, gap, studies::eq27_of_block(ida.alpha, ida.p, o.model, to).q);
                     c.nominal[k] += nominal == 1;
                     c.undecided[k] += nominal == -1;
                     if (nominal == 1) c.rec_nominal[k].insert(r);

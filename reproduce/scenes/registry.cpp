@@ -80,7 +80,8 @@ const std::vector<Scene>& all_scenes() {
          "each corner's restitution from the geometry; closed forms without impact, collapse theta(t_fin) = the "
          "corner's alpha; records: overturning at any time",
          "closed forms: qfactor::imperfect_collapse ((S2) per corner, exact up to rounding); records: the fragility "
-         "scene's IDA (exact solver on 100 + 99 log-spaced q 1-20, first collapse bisected to 1e-6, probed x 1 +- "
+         "scene's IDA (exact solver on 100 + 99 log-spaced q from where each block lifts, min(1, alpha_sigma/alpha), "
+         "to 20, first collapse bisected to 1e-6, probed x 1 +- "
          "1e-13 and checked by GSL rk8pd at rtol 1e-13) on its four blocks",
          "", run_imperfection},
         {"sliding", "Sliding (issue 41): the paper's claims on a base with Coulomb friction mu = 0.8, 0.6, 0.4: "

@@ -85,6 +85,10 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
                         "does not hold there (rocking q --case 2 --pulses 6 --x %s says where)\n", four(r.x).c_str(),
                         r.eq27_passes_alpha ? "takes theta past alpha" : "brings the block down to the ground",
                         four(r.x).c_str());
+        if (o.model.imperfection.any())
+            std::printf("  eq. 27 on the imperfect block: toward each corner, q2_n6(p_sigma to_5) alpha_sigma/alpha, the "
+                        "smaller (toward theta %s 0) = %s; as printed, at the nominal alpha and p, q2_n6(x) = %s\n",
+                        r.eq27_side > 0 ? ">" : "<", four(r.q_eq27).c_str(), four(r.q_eq27_as_printed).c_str());
         std::printf("  input: %s\n", names[k].c_str());
         std::printf("  %s: PGA = %s g, to_5 = pi PGV/PGA = %s s; x = p to_5 = %s; q from eq. 27 = %s; the "
                     "input's q = PGA/(alpha g) = %s\n", floor.empty() ? "record" : "floor motion",
@@ -126,13 +130,17 @@ void print_json(const std::vector<std::string>& files, const std::vector<std::st
     js << "{\"alpha\": " << json_number(given.alpha) << ", \"p\": " << json_number(given.block.p) << ", "
        << block_json(given) << ", \"model\": " << json_string(o.describe()) << ", \"width\": " << json_number(o.width)
        << ", \"input\": " << json_string(floor.empty() ? std::string("each record as recorded: the ground's motion") : floor)
-       << ", \"check\": \"eq. 27: the record's q below q2_n6(p to_5)\", \"records\": [";
+       << ", \"check\": " << json_string(o.describe_check());
+    if (o.model.imperfection.any())
+        js << ", " << imperfection_json(o.model.imperfection, given.block, o.model.housner_restitution ? NAN : o.model.restitution);
+    js << ", \"records\": [";
     for (std::size_t k = 0; k < files.size(); ++k) {
         const studies::RecordAssessment& r = s.records[k];
         js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"name\": " << json_string(names[k])
            << ", \"pga_g\": "
            << json_number(r.motion.pga / dynamics::kGravity) << ", \"to5\": " << json_number(r.motion.to5)
            << ", \"x\": " << json_number(r.x) << ", \"q_eq27\": " << json_number(r.q_eq27)
+           << ", \"q_eq27_as_printed\": " << json_number(r.q_eq27_as_printed) << ", \"eq27_side\": " << r.eq27_side
            << ", \"q_record\": " << json_number(r.q_record) << ", \"ratio\": " << json_number(r.ratio)
            << ", \"margin\": " << json_number(r.margin) << ", \"passes\": " << (r.passes ? "true" : "false")
            << ", \"eq27_passes_alpha_before_t_fin\": " << (r.eq27_passes_alpha ? "true" : "false")

@@ -19,6 +19,26 @@
 
 namespace rocking::cli {
 
+namespace {
+
+// The run of the same block under the same model: every flag the search
+// read, --dt being simulate's --record-dt.
+std::string simulate_command(const std::string& path, const Args& a) {
+    // Quoted for the shell where the path needs it.
+    const bool plain = path.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789._/+-") ==
+                       std::string::npos;
+    std::string quoted = "'";
+    for (char c : path) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    std::string text = "rocking simulate --record " + (plain ? path : quoted + "'");
+    for (const char* f : {"--thickness", "--height", "--model", "--solver", "--criterion", "--restitution", "--rtol", "--atol", "--unit", "--floor",
+                          "--friction"})
+        if (a.values.count(f)) text += std::string(" ") + f + " " + a.values.at(f);
+    if (a.values.count("--dt")) text += " --record-dt " + a.values.at("--dt");
+    return text + imperfection_flags_text(a);
+}
+
+}  // namespace
+
 int cmd_collapse(int argc, char** argv) {
     using namespace rocking::dynamics;
     const std::string path =
@@ -71,6 +91,12 @@ int cmd_collapse(int argc, char** argv) {
                   << ", \"below_range\": " << (c.below_range() ? "true" : "false") << ", \"simulations\": " << c.simulations
                   << ", \"search\": " << json_string(o.describe());
         if (given) std::cout << ", \"block_p\": " << json_number(given->block.p) << ", " << block_json(*given);
+        // At the p found, each corner of the block that overturned; without one, the imperfections given.
+        if (o.imperfection.any())
+            std::cout << ", "
+                      << (c.found ? imperfection_json(o.imperfection, Block::from_p(c.p, alpha),
+                                                      o.housner_restitution ? NAN : o.restitution)
+                                  : imperfection_inputs_json(o.imperfection));
         std::cout << "}\n";
     } else {
         if (c.below_range())
@@ -101,10 +127,8 @@ int cmd_collapse(int argc, char** argv) {
         }
         std::printf("  %s; %d simulations\n", o.describe().c_str(), c.simulations);
         if (given)
-            std::printf("  the block: %s; whether this record overturns it at its own p: rocking simulate --record "
-                        "FILE --thickness %s --height %s\n",
-                        describe_block(*given).c_str(), significant(given->thickness, 6).c_str(),
-                        significant(given->height, 6).c_str());
+            std::printf("  the block: %s; whether this record overturns it at its own p: %s\n",
+                        describe_block(*given).c_str(), simulate_command(path, a).c_str());
     }
     return 0;
 }

@@ -132,6 +132,14 @@ Command command_from(int argc, char** argv, bool mpi) {
                                                "--seed", "--unit", "--dt", "--floor", "--restitution", "--friction", "--lean", "--out-of-plumb", "--fc", "--density", "--jobs", "--output",
                                                "--method", "--width", "--robust-width", "--png"});
     c.study = options_from(c.args);
+    // With --fc the tallest blocks crush: without --p-min the grid starts where every alpha's stand.
+    if (!c.args.values.count("--p-min")) {
+        studies::Eq27Grid& g = c.study.grid;
+        g.p_min = std::fmax(g.p_min, dynamics::lowest_standing_p(g.alphas, c.study.ida.model.imperfection));
+        if (!(g.p_max > g.p_min))
+            throw UsageError("--fc: the blocks of these alphas stand only above p = " + g7(g.p_min) +
+                             " rad/s, at or above --p-max (" + g7(g.p_max) + " rad/s)");
+    }
     c.blocks = c.study.grid.blocks();
     if (c.files.size() > 1000) throw UsageError("at most 1000 files");
     check_outputs(c.args, {"--output", "--png"}, c.files);

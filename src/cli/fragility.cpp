@@ -183,7 +183,7 @@ std::string empirical_text(const BlockFragility& f) {
 }
 
 std::string grid_note(const studies::FragilityStudyOptions& o) {
-    return o.ida.describe_grid() + "; q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold; " +
+    return o.ida.describe_grid() + "; " + o.ida.describe_q() + "; " +
            o.ida.describe_checks();
 }
 
@@ -302,8 +302,15 @@ void print_json(const std::vector<std::string>& files, const studies::FragilityS
     for (std::size_t b = 0; b < study.size(); ++b) {
         const BlockFragility& f = study[b];
         js << (b ? ", " : "") << "{\"alpha\": " << json_number(f.block.alpha) << ", \"p\": " << json_number(f.block.p)
-           << (f.block.built.empty() ? "" : ", \"built\": " + json_string(f.block.built))
-           << ", \"records\": [";
+           << (f.block.built.empty() ? "" : ", \"built\": " + json_string(f.block.built));
+        // An imperfect block's grid may start below q_min, where it lifts.
+        if (o.ida.model.imperfection.any()) {
+            const double start = o.ida.q_start(f.block.alpha, f.block.p);
+            js << ", \"q_start\": " << json_number(start);
+            if (refined(o))
+                js << ", \"stripe_half_width\": " << json_number(studies::stripe_half_width(start, o.ida.q_max, o.ida.points));
+        }
+        js << ", \"records\": [";
         for (std::size_t k = 0; k < files.size(); ++k) {
             const Ida& ida = f.idas[k];
             js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"sha256\": "

@@ -64,7 +64,8 @@ Beyond the paper's block (issue 41), on simulate and every study, stated in each
 --fc MPA            the masonry's compressive strength: the pivots set back by half the
                     compressed zone (NTC 2018 eq. 7.8.2: 0.85 fc under the block's own weight,
                     --density KG/M3, default 1800); a base that crushes is refused
-The imperfections combine; none goes with --friction. Angles within (-pi/4, pi/4).
+The imperfections combine (IMPERFECT in the usage: [--lean RAD] [--out-of-plumb RAD] [--fc MPA
+[--density KG/M3]]); none goes with --friction. Angles within (-pi/4, pi/4).
 )";
 
 // A text of the help without the line break it starts with in the source.
@@ -161,6 +162,8 @@ std::string overview() {
     std::vector<const HelpEntry*> all;
     for (const HelpEntry& e : help_entries()) all.push_back(&e);
     return synopsis_block(all) +
+           "\nIMPERFECT = [--lean RAD] [--out-of-plumb RAD] [--fc MPA [--density KG/M3]]: an imperfect block\n"
+           "(not with --friction; 'rocking help simulate', Beyond the paper's block).\n"
            "\nEach command's options, with units and defaults, and the definitions it uses (alpha, p, q, the\n"
            "model, the records): 'rocking COMMAND --help', -h or 'rocking help COMMAND', e.g.\n"
            "'rocking assess --help', 'rocking record floor --help'. Every command but batch takes --json.\n"

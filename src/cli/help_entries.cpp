@@ -42,7 +42,7 @@ collapse q theta grows like e^(x t/to): the rows stop where it leaves the double
 const char* kSimulate = R"(
 rocking simulate INPUT BLOCK [--paper] [--model M] [--solver S] [--rtol R] [--atol A]
                  [--criterion C] [--restitution E|housner] [--output FILE [--dt DT]]
-                 [--friction MU | --lean RAD --out-of-plumb RAD --fc MPA --density KG/M3] [--json]
+                 [--friction MU | IMPERFECT] [--json]
 )";
 const char* kSimulateDetails = R"(
 One block under a pulse train, a one-sine pulse or a record, with impacts, the free rocking
@@ -156,7 +156,7 @@ The other commands take the same floor with --floor T1,G[,zeta], without the fil
 
 const char* kCollapse = R"(
 rocking collapse FILE (--alpha A | --thickness B (--height H | --half-height h)) [--model M]
-                 [--solver S] [--rtol R] [--atol A] [--criterion C] [--restitution E|housner | --friction MU]
+                 [--solver S] [--rtol R] [--atol A] [--criterion C] [--restitution E|housner | --friction MU] [IMPERFECT]
                  [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--json]
 )";
 const char* kCollapseDetails = R"(
@@ -185,7 +185,7 @@ spectrum finds every interval).
 const char* kAssess = R"(
 rocking assess FILE... (--thickness B (--height H | --half-height h)
                        | --alpha A (--height H | --half-height h | --p P))
-               [--width W] [--restitution E|housner | --friction MU] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
+               [--width W] [--restitution E|housner | --friction MU] [IMPERFECT] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
                [--png PNG] [--json]
 )";
 const char* kAssessDetails = R"(
@@ -233,7 +233,7 @@ A record given twice (the same samples, whatever the path) is refused: it would 
 const char* kSpectrum = R"(
 rocking spectrum FILE [--alpha A[,A...]] [--mark BxH[,BxH...]] [--p-min P] [--p-max P]
                  [--points N] [--method grid|refine [--width W] [--robust-width R]]
-                 [--restitution E|housner | --friction MU] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
+                 [--restitution E|housner | --friction MU] [IMPERFECT] [--floor T1,G[,zeta]] [--unit U [--dt DT]]
                  [--jobs N] [--output CSV] [--png PNG] [--json] [--rows FILE [--resume]]
                  [--quiet]
 mpirun -np K rocking spectrum FILE --alpha A[,A...] ... [--rows FILE [--resume]]
@@ -278,7 +278,7 @@ missed.
 
 const char* kFragility = R"(
 rocking fragility FILE... (--alpha A[,A...] --p P[,P...] | --block BxH[,BxH...])
-                  [--q-max Q] [--points N] [--bootstrap K --seed S] [--restitution E|housner | --friction MU]
+                  [--q-max Q] [--points N] [--bootstrap K --seed S] [--restitution E|housner | --friction MU] [IMPERFECT]
                   [--method grid|refine [--width W] [--robust-width R]]
                   [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--jobs N] [--output CSV]
                   [--fits CSV] [--nrml XML] [--png PNG] [--json] [--rows FILE [--resume]] [--quiet]
@@ -331,7 +331,7 @@ given twice (the same samples, whatever the path) is refused.
 const char* kEq27 = R"(
 rocking eq27 FILE... [--alpha A[,A...]] [--p-min P] [--p-max P] [--p-points N] [--q-max Q]
              [--method grid|refine [--width W] [--robust-width R]] [--bootstrap K --seed S]
-             [--restitution E|housner | --friction MU] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--jobs N]
+             [--restitution E|housner | --friction MU] [IMPERFECT] [--floor T1,G[,zeta]] [--unit U [--dt DT]] [--jobs N]
              [--output CSV] [--png PNG] [--json] [--quiet]
 mpirun -np K rocking eq27 FILE... [--alpha A,...] ...
 )";

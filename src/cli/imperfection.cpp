@@ -45,17 +45,36 @@ dynamics::Model imperfect_model_option(const Args& a, dynamics::Equation equatio
     }
 }
 
+std::string imperfection_flags_text(const Args& a) {
+    std::string text;
+    for (const std::string& f : imperfection_flags())
+        if (a.values.count(f)) text += " " + f + " " + a.values.at(f);
+    return text;
+}
+
+namespace {
+
+// Its keys as the inputs' (Python's imperfection={...}, the batch columns): fc in MPa.
+std::string inputs_json(const dynamics::Imperfection& imp) {
+    return "\"lean\": " + json_number(imp.lean) + ", \"out_of_plumb\": " + json_number(imp.out_of_plumb) +
+           ", \"fc\": " + json_number(imp.fc / 1e6) + ", \"density\": " + json_number(imp.density);
+}
+
+}  // namespace
+
 std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution) {
     const dynamics::ImperfectGeometry g = dynamics::imperfect_geometry(base, imp);
     auto corner = [&](const dynamics::CornerGeometry& k) {
         return "{\"alpha\": " + json_number(k.alpha) + ", \"p\": " + json_number(k.p) + ", \"R\": " + json_number(k.R) +
                ", \"restitution_onto\": " + json_number(std::isnan(restitution) ? k.restitution_onto : restitution) + "}";
     };
-    // Its keys as the inputs' (Python's imperfection={...}, the batch columns): fc in MPa.
-    return "\"imperfection\": {\"lean\": " + json_number(imp.lean) + ", \"out_of_plumb\": " + json_number(imp.out_of_plumb) +
-           ", \"fc\": " + json_number(imp.fc / 1e6) + ", \"density\": " + json_number(imp.density) +
-           ", \"sigma0_kpa\": " + json_number(g.sigma0 / 1e3) + ", \"setback_m\": " + json_number(g.setback) +
-           ", \"corner_plus\": " + corner(g.plus) + ", \"corner_minus\": " + corner(g.minus) + "}";
+    return "\"imperfection\": {" + inputs_json(imp) + ", \"sigma0_kpa\": " + json_number(g.sigma0 / 1e3) +
+           ", \"setback_m\": " + json_number(g.setback) + ", \"corner_plus\": " + corner(g.plus) +
+           ", \"corner_minus\": " + corner(g.minus) + "}";
+}
+
+std::string imperfection_inputs_json(const dynamics::Imperfection& imp) {
+    return "\"imperfection\": {" + inputs_json(imp) + "}";
 }
 
 }  // namespace rocking::cli

@@ -23,6 +23,10 @@ const std::vector<std::string>& imperfection_flags();
 // --density > 0 kg/m3 and only with --fc; not with --friction.
 dynamics::Imperfection imperfection_option(const Args& a);
 
+// The imperfection flags as given (" --lean 0.01 --fc 2"), or "", for a
+// command line the output suggests.
+std::string imperfection_flags_text(const Args& a);
+
 // Into a search's model (every block of the search takes them).
 void imperfection_into(const Args& a, records::CollapseOptions& model);
 
@@ -37,5 +41,9 @@ dynamics::Model imperfect_model_option(const Args& a, dynamics::Equation equatio
 // setback and its stress.
 // restitution: NaN (each corner's own) or the factor given on both.
 std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution);
+
+// The same member with the imperfections alone, for a search over blocks of
+// many sizes (the corners of a setback change with the size).
+std::string imperfection_inputs_json(const dynamics::Imperfection& imp);
 
 }  // namespace rocking::cli

@@ -268,7 +268,11 @@ PulseTrain train_from(const Args& a, std::string& equation) {
         try {
             return parse_train(a.values.at("--train"));
         } catch (const std::invalid_argument& e) {
-            throw UsageError(std::string("--train: ") + e.what());
+            // The mirror image of a leaning block leans the other way.
+            const bool leans = (a.values.count("--lean") || a.values.count("--out-of-plumb")) &&
+                               std::string(e.what()).find("first pulse must be positive") != std::string::npos;
+            throw UsageError(std::string("--train: ") + e.what() +
+                             (leans ? "; flip the signs of --lean and --out-of-plumb with it" : ""));
         }
     }
     const int which = integer("--case", a.values.at("--case"), 1, 5);
@@ -521,6 +525,12 @@ records::Record load_record(const std::string& path, const Args& a, const std::s
     } catch (const std::invalid_argument& e) {
         throw UsageError("--floor " + a.values.at("--floor") + " on " + path + ": " + e.what());
     }
+}
+
+std::string rows_note(double dt, double t_fin, double last_t) {
+    return "t = k dt for k = 0, 1, ... while the run lasts (dt = " + significant(dt, 6) + " s; the input to t_fin = " +
+           significant(t_fin, 6) + " s, then the free rocking to rest, a fall or its limit); the last row at t = " +
+           significant(last_t, 6) + " s";
 }
 
 }  // namespace rocking::cli

@@ -107,6 +107,10 @@ void refuse_unresolvable_run(double p, double duration, const Args& a, const std
 void write_record_samples(harness::AtomicFile& out, const records::Record& r);
 // table written to path (atomically), a failure named as --output's.
 void write_output(const harness::Table& table, const std::string& path);
+
+// simulate --output's note on its rows: every dt while the run lasts, so a
+// dt above the run's length leaves the row at t = 0 alone; the last row's t.
+std::string rows_note(double dt, double t_fin, double last_t);
 PulseTrain train_from(const Args& a, std::string& equation);
 double x_from(const Args& a);
 // Four decimals (%.4f); %.4e at or above 1e9 and below 1e-3 (not 0), where

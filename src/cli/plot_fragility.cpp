@@ -65,7 +65,8 @@ int censored_of(const BlockFragility& f) {
 std::vector<std::vector<double>> curve_rows(const BlockFragility& f, const studies::FragilityStudyOptions& o) {
     std::vector<std::vector<double>> rows;
     for (int i = 0; i < kCurvePoints; ++i) {
-        const double q = o.ida.q_min * std::pow(o.ida.q_max / o.ida.q_min, static_cast<double>(i) / (kCurvePoints - 1));
+        const double lo = o.ida.q_start(f.block.alpha, f.block.p);  // where the block's grid started
+        const double q = lo * std::pow(o.ida.q_max / lo, static_cast<double>(i) / (kCurvePoints - 1));
         std::vector<double> row{q, f.fitted ? studies::overturning_probability(f.fit, q) : 0.0, 0.0, 0.0, 0.0, 0.0};
         if (f.fitted && f.bootstrapped) {
             double lo = 1, hi = 0;
@@ -174,12 +175,15 @@ std::string script(const std::string& output, const std::vector<std::string>& fi
     const std::vector<std::string> lines = wrapped(caption(o, study), width / 7);
     const int footer = 24 + 16 * static_cast<int>(lines.size());
     const Figure fig{width, kHeader + rows * kPanelHeight + footer};
+    // From the lowest block's grid start: an imperfect block's lies below q_min.
+    double q_lo = o.ida.q_min;
+    for (const BlockFragility& f : study) q_lo = std::min(q_lo, o.ida.q_start(f.block.alpha, f.block.p));
     std::ostringstream gp;
     gp << fig.terminal(output) << "set termoption noenhanced\n"
        << "set multiplot title " << gp_text("Fragility of " + std::to_string(study.size()) + " block(s) over " +
                                            std::to_string(files.size()) + " record(s)") << "\n"
-       << "set logscale x\nset grid\nset xrange [" << gp_number(o.ida.q_min) << ":" << gp_number(o.ida.q_max) << "]\n"
-       << log_tics("x", o.ida.q_min, o.ida.q_max) << "set yrange [0:1.04]\nset ytics 0.2\nset format x '%g'\nset xlabel 'q = PGA/(α g)'\n"
+       << "set logscale x\nset grid\nset xrange [" << gp_number(q_lo) << ":" << gp_number(o.ida.q_max) << "]\n"
+       << log_tics("x", q_lo, o.ida.q_max) << "set yrange [0:1.04]\nset ytics 0.2\nset format x '%g'\nset xlabel 'q = PGA/(α g)'\n"
        << "set ylabel 'P(overturn | q)'\n";
     for (std::size_t k = 0; k < study.size(); ++k) {
         const int column = static_cast<int>(k) % columns, row = static_cast<int>(k) / columns;

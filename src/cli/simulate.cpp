@@ -196,6 +196,7 @@ int cmd_simulate(int argc, char** argv) {
         table.note("input", input->describe());
         table.note("solver", solver_name(options.solver.kind) + tolerance);
         table.note("criterion", criterion_name(criterion));
+        table.note("rows", rows_note(options.record_dt, r.t_fin, r.samples.empty() ? 0.0 : r.samples.back().t));
         for (const Sample& s : r.samples)
             table.row().add(s.t).add(s.theta / alpha).add(s.omega / (alpha * model.block.p));
         write_output(table, a.values.at("--output"));

@@ -62,6 +62,7 @@ int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::Gr
         table.note("input", input.describe());
         table.note("solver", o.describe() + "; the rows read on its dense output (the steps' interpolant)");
         table.note("criterion", criterion_name(criterion));
+        table.note("rows", rows_note(record_dt, r.t_fin, r.samples.empty() ? 0.0 : r.samples.back().t));
         for (const sliding::SlidingSample& s : r.samples)
             table.row().add(s.t).add(s.theta / alpha).add(s.omega / (alpha * p)).add(s.slip).add(s.slip_rate)
                 .add(regime_name(s.regime));

@@ -363,6 +363,13 @@ Command command_from(int argc, char** argv, bool mpi) {
         if (c.alphas.size() > 20) throw UsageError("--alpha and --mark: at most 20 alphas in all");
     }
     c.grid = grid_from(a);
+    // With --fc the tallest blocks crush: without --p-min the range starts where every alpha's stand.
+    if (!a.values.count("--p-min")) {
+        c.grid.p_min = std::fmax(c.grid.p_min, dynamics::lowest_standing_p(c.alphas, c.grid.model.imperfection));
+        if (!(c.grid.p_max > c.grid.p_min))
+            throw UsageError("--fc: the blocks of these alphas stand only above p = " + g7(c.grid.p_min) +
+                             " rad/s, at or above --p-max (" + g7(c.grid.p_max) + " rad/s)");
+    }
     for (const studies::BlockShape& b : c.marks) {
         const std::string why = studies::why_not_markable(b, c.grid);
         if (!why.empty()) throw UsageError("--mark " + b.built + ": " + why + " (--p-min, --p-max)");

@@ -134,6 +134,12 @@ double lowest_standing_p(double alpha, const Imperfection& imp) {
     return hi;
 }
 
+double lowest_standing_p(const std::vector<double>& alphas, const Imperfection& imp) {
+    double p = 0.0;
+    for (double alpha : alphas) p = std::fmax(p, lowest_standing_p(alpha, imp));
+    return p;
+}
+
 ImperfectGeometry imperfect_geometry(const Block& base, const Imperfection& imp) {
     const double R = base.R > 0 ? base.R : 3.0 * kGravity / (4.0 * base.p * base.p);
     return imperfect_geometry(R * std::sin(base.alpha), R * std::cos(base.alpha), imp);

@@ -29,6 +29,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <cmath>
 
@@ -89,6 +90,11 @@ double crushing_p(double alpha, const Imperfection& imperfection);
 // relative above the limit: where a search over p starts.  0 for a block
 // that stands at every p, INFINITY for one that stands at none up to 1000 rad/s.
 double lowest_standing_p(double alpha, const Imperfection& imperfection);
+
+// The p from which every block of these slendernesses stands (the largest
+// of their lowest_standing_p): where a range over p shared by them starts
+// when the caller gives no start of its own.
+double lowest_standing_p(const std::vector<double>& alphas, const Imperfection& imperfection);
 
 // The same for a symmetric block `base` given by its alpha and R, or its p,
 // which gives R = 3 g / (4 p^2) (eq. 4) and the half-dimensions R sin alpha,

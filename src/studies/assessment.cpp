@@ -9,14 +9,17 @@
 #include "pulse/pulse_train.hpp"
 #include "qfactor/superposition.hpp"
 #include "records/collapse.hpp"
+#include "studies/eq27_of_block.hpp"
 
 namespace rocking::studies {
 
 std::string AssessOptions::describe() const {
     IdaOptions ida;
     ida.model = model;
-    char range[200];
-    std::snprintf(range, sizeof range, "q in [1, %g] (or to twice the record's q, at most 1e4)", q_max);
+    char range[300];
+    std::snprintf(range, sizeof range, "q in [1, %g] (or to twice the record's q, at most 1e4)%s", q_max,
+                  model.imperfection.any() ? "; from the block's lowest corner's uplift, min alpha_sigma/alpha, where below 1"
+                                           : "");
     char p_range[200];
     std::snprintf(p_range, sizeof p_range, "p in [%g, %g] rad/s (or wider, to hold the block's p%s)", p_min, p_max,
                   model.imperfection.fc > 0 ? "; from above the blocks that crush under their own weight" : "");
@@ -25,6 +28,12 @@ std::string AssessOptions::describe() const {
     return ida.describe_model() + "; the scale factors from the IDA over " + range +
            " and the nearest overturning blocks from the spectrum over " + p_range +
            ", both by the refine search at w = " + w + " (islands narrower than w may be missed)";
+}
+
+std::string AssessOptions::describe_check() const {
+    return model.imperfection.any()
+               ? "eq. 27 toward each corner: the record's q below min over sigma of q2_n6(p_sigma to_5) alpha_sigma/alpha"
+               : "eq. 27: the record's q below q2_n6(p to_5)";
 }
 
 double AssessOptions::ida_q_max(double q_record) const { return std::min(1e4, std::max(q_max, 2 * q_record)); }
@@ -67,8 +76,11 @@ RecordAssessment assess_record(const dynamics::SampledInput& input, const record
     const Refusal refused = refusal_of(input, m, block);
     if (refused.blame != Refusal::Blame::none) throw std::invalid_argument(refused.why);
     a.x = block.p * m.to5;
-    a.q_eq27 = q2_n6(a.x);
-    const Excursion e = collapse_excursion(repeated_case(2, 6), a.x);
+    const Eq27OfBlock q27 = eq27_of_block(block.alpha, block.p, o.model, m.to5);
+    a.q_eq27 = q27.q;
+    a.q_eq27_as_printed = q27.q_as_printed;
+    a.eq27_side = q27.side;
+    const Excursion& e = q27.excursion;
     a.eq27_passes_alpha = e.onset && e.passes_alpha();
     a.eq27_strikes = !e.stays_positive();
     a.q_record = m.pga / (block.alpha * dynamics::kGravity);

@@ -3,7 +3,8 @@
 // itself says of the same block and record, each a number with its method:
 //   - eq. 27: x = p to_5 (to_5 = pi PGV/PGA, eq. 31), q_27 = q2_n6(x) (eq. 27),
 //     the record's q = PGA/(alpha g); ratio q/q_27 and margin 1 - q/q_27
-//     (positive: the record's q lies below eq. 27's, the check passes);
+//     (positive: the record's q lies below eq. 27's, the check passes); an
+//     imperfect block's q_27 toward each corner (studies/eq27_of_block.hpp);
 //   - the run on the record as recorded: peak |theta|/alpha and overturning
 //     (linearised eq. 3, exact solver, Housner's restitution, the free
 //     rocking after the input followed: Table 1's model);
@@ -38,6 +39,8 @@ struct AssessOptions {
     // The IDA's upper q for a record of this q: q_max, or twice the record's
     // q where higher, at most 1e4.
     double ida_q_max(double q_record) const;
+    // The check, in words: eq. 27 as printed, or toward each corner of an imperfect block.
+    std::string describe_check() const;
     // The spectrum's: the model, [p_min, p_max] widened to hold the block's p
     // with a factor 1.5 to spare (within [0.01, 1000] rad/s), and the refine
     // search at width.
@@ -50,6 +53,11 @@ struct RecordAssessment {
     records::PeakMotion motion;
     double x = 0, q_eq27 = 0, q_record = 0, ratio = 0, margin = 0;
     bool passes = false;  // q_record < q_eq27
+    // An imperfect block's q_eq27 is eq. 27 toward each corner, the smaller
+    // (studies/eq27_of_block.hpp); beside it the paper's, at the nominal
+    // alpha and p, and the corner it overturns toward (+1 or -1).
+    double q_eq27_as_printed = 0;
+    int eq27_side = +1;
     // Where eq. 27's own closed form stops holding at this x (its train, case
     // 2 with 6 pulses, at its collapse q: qfactor/superposition.hpp): theta
     // passes alpha before t_fin (from x = 0.8 on), or the block strikes the

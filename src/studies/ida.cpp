@@ -37,6 +37,13 @@ std::string IdaOptions::describe_grid() const {
                       "%d q log-spaced from %g to %g (x%.6g), no offset grid; boundaries bisected to %g relative; "
                       "islands narrower than a step may be missed",
                       points, q_min, q_max, r, rel_tol);
+    // Where an imperfect block lifts below q_min its grid starts there (q_start).
+    if (model.imperfection.any()) {
+        char start[40];
+        std::snprintf(start, sizeof start, "%g", q_min);
+        return std::string(text) + "; an imperfect block's grid from where it lifts, q = min over its corners of "
+                                   "alpha_sigma/alpha, when below " + start + " (each block's q_start)";
+    }
     return text;
 }
 
@@ -231,10 +238,29 @@ Ida refined_ida(const GroundInput& input, double alpha, double p, const IdaOptio
 
 }  // namespace
 
-Ida incremental_dynamic_analysis(const GroundInput& input, double alpha, double p, const IdaOptions& o) {
-    check_options(input, alpha, p, o);
-    if (o.method == IdaOptions::Method::refine) return refined_ida(input, alpha, p, o);
+double lowest_lift_q(double alpha, double p, const records::CollapseOptions& model) {
+    if (!model.imperfection.any()) return 1.0;
+    return std::fmin(1.0, records::model_of(alpha, p, model).alpha_min() / alpha);
+}
+
+double IdaOptions::q_start(double alpha, double p) const { return std::fmin(q_min, lowest_lift_q(alpha, p, model)); }
+
+std::string IdaOptions::describe_q() const {
+    if (!model.imperfection.any()) return "q = PGA/(alpha g), 1 where the record reaches the linearised uplift threshold";
+    return "q = PGA/(alpha g) with the nominal alpha";
+}
+
+Ida incremental_dynamic_analysis(const GroundInput& input, double alpha, double p, const IdaOptions& given) {
+    check_options(input, alpha, p, given);
+    IdaOptions o = given;
+    o.q_min = given.q_start(alpha, p);
+    if (o.method == IdaOptions::Method::refine) {
+        Ida ida = refined_ida(input, alpha, p, o);
+        ida.q_start = o.q_min;
+        return ida;
+    }
     Ida ida;
+    ida.q_start = o.q_min;
     ida.alpha = alpha;
     ida.p = p;
     ida.q_input = input.peak() / alpha;
@@ -286,7 +312,8 @@ void fit_stripe_set(StripeFit& s, const std::vector<Ida>& idas, const std::vecto
         for (const IdaInterval& in : ida.intervals) set.push_back(Span{in.from, in.to, -1, -1});
         sets.push_back(std::move(set));
     }
-    s.shares = stripe_shares(sets, o.ida.q_min, o.ida.q_max, o.ida.points);
+    // The block's own grid (IdaOptions::q_start): every IDA of it started there.
+    s.shares = stripe_shares(sets, idas.front().q_start, o.ida.q_max, o.ida.points);
     StripeShares drawn = s.shares;
     drawn.share = in_draw_order(s.shares.share, order);
     s.stripes = stripes_of(drawn);

@@ -37,6 +37,12 @@ struct IdaOptions {
     // q = 1 is where the input just reaches alpha g, the linearised uplift
     // threshold: below it the block does not lift on the linearised equation.
     double q_min = 1.0, q_max = 20.0;
+    // Where the grid of the block (alpha, p) starts: q_min, or lower where an
+    // imperfect block lifts below it (lowest_lift_q), so that no first
+    // collapse below q = 1 passes unseen.  Per block: a shared start would
+    // take every block's grid down to the weakest's (a setback near
+    // crushing lifts at q ~ 1e-13).
+    double q_start(double alpha, double p) const;
     int points = 100;          // log-spaced from q_min to q_max, both included
     bool offset_grid = true;   // a second grid, half a step in log q from the first
     double rel_tol = 1e-6;     // boundaries bisected until (q_hi - q_lo) / q_hi <= rel_tol
@@ -61,6 +67,8 @@ struct IdaOptions {
     // output and a rows file's resume check carry it.  Empty: the records.
     std::string input_note;
     std::string describe_grid() const;
+    // What q is and where the grid starts, in words.
+    std::string describe_q() const;
     std::string describe_model() const;
     std::string describe_checks() const;
     // The refine method's width, guarantee and robust width, in words.
@@ -87,6 +95,7 @@ using IdaBand = Band;
 struct Ida {
     double alpha = 0, p = 0;
     double q_input = 0;                   // the input's own q, unscaled
+    double q_start = 1;                   // where the grid started (IdaOptions::q_start)
     std::vector<IdaGridPoint> points;     // both grids, increasing q
     std::vector<IdaInterval> intervals;   // increasing q
     // The first collapse q (the lowest interval's start), or q_max censored.
@@ -115,7 +124,8 @@ struct Ida {
 // Throws std::invalid_argument for alpha not in (0, pi/4), p not finite and > 0,
 // an input that never moves (peak 0), points < 2, q_min not > 0, q_max not
 // > q_min, rel_tol not in [1e-15, 0.1], width not in (0, 0.1],
-// robust_width not > 0, and whatever simulate() throws.
+// robust_width not > 0, and whatever simulate() throws.  The grid runs from
+// options.q_start(alpha, p): an imperfect block's from where it lifts.
 Ida incremental_dynamic_analysis(const dynamics::GroundInput& input, double alpha, double p, const IdaOptions& options);
 
 struct BlockShape {
@@ -125,6 +135,14 @@ struct BlockShape {
     BlockShape(double alpha_ = 0, double p_ = 0, std::string built_ = {})
         : alpha(alpha_), p(p_), built(std::move(built_)) {}
 };
+
+// The lowest q = PGA/(alpha g) at which the block (alpha, p) lifts, alpha
+// the nominal: 1 for the paper's block (eq. 3's threshold alpha g); an
+// imperfect block's lowest corner, min over sigma of alpha_sigma/alpha (a
+// lean psi: (alpha - psi)/alpha; a setback lowers both corners).  The full
+// equations lift at tan alpha_sigma g, above it: nothing below lifts.
+double lowest_lift_q(double alpha, double p, const records::CollapseOptions& model);
+
 
 struct FragilityStudyOptions {
     IdaOptions ida{};

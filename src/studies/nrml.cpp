@@ -63,7 +63,8 @@ std::string description(const FragilityStudyOptions& o, const std::vector<std::s
         "masonry structures, Buildings 2025), under PGA in g: one function per block of slenderness alpha (rad) and "
         "frequency parameter p (rad/s), its id rocking_alpha_A_p_P. Each is the lognormal maximum-likelihood fit, "
         "censored records kept, of the intensity q = PGA/(alpha g) at which each of " +
-        std::to_string(records.size()) + " records, scaled in amplitude from q = " + g6(o.ida.q_min) + " to " +
+        std::to_string(records.size()) + " records, scaled in amplitude from q = " + g6(o.ida.q_min) +
+        (o.ida.model.imperfection.any() ? " (an imperfect block from where it lifts, if lower: q_start)" : "") + " to " +
         g6(o.ida.q_max) + " (incremental dynamic analysis), ";
     text += refined(o) ? "first overturns the block, every island of overturning wider than " + g6(o.ida.width) +
                              " in ln q found (the refine method's fit on the first overturning, the conservative one "
@@ -72,8 +73,8 @@ std::string description(const FragilityStudyOptions& o, const std::vector<std::s
                        : "first overturns the block on the IDA's grid (its first collapse; islands of overturning "
                          "narrower than half a grid step may lie below it)";
     text += ". The PGA's median is theta = median q times alpha; mean = theta exp(beta^2/2) and stddev = mean "
-            "sqrt(exp(beta^2) - 1) are those of the PGA itself, not of its logarithm. Valid from PGA = alpha q_min "
-            "(below it no block lifts: noDamageLimit) to alpha q_max, the range the analysis scanned; above maxIML "
+            "sqrt(exp(beta^2) - 1) are those of the PGA itself, not of its logarithm. Valid from PGA = alpha q_start "
+            "(q_min, or where an imperfect block lifts if lower; below it no block lifts: noDamageLimit) to alpha q_max, the range the analysis scanned; above maxIML "
             "the engine holds the probability at its value there. Model: " +
             o.ida.describe_model() + ". Records:";
     for (std::size_t k = 0; k < records.size(); ++k) text += (k ? "; " : " ") + records[k];
@@ -161,7 +162,7 @@ NrmlModel fragility_nrml(const std::vector<BlockFragility>& study, const Fragili
         }
         const double theta = f.fit.median * b.alpha;
         const LognormalMoments m = lognormal_moments(theta, f.fit.beta);
-        const double lowest = b.alpha * o.ida.q_min, highest = b.alpha * o.ida.q_max;
+        const double lowest = b.alpha * o.ida.q_start(b.alpha, b.p), highest = b.alpha * o.ida.q_max;
         std::string note = block_text(b) + ": median q " + g6(f.fit.median) + ", beta " + g6(f.fit.beta) +
                            ", so theta = " + g6(theta) + " g; " + std::to_string(f.fit.collapsed) + " records overturned, " +
                            std::to_string(f.fit.censored) + " censored at q = " + g6(o.ida.q_max);

@@ -51,11 +51,12 @@ struct NrmlModel {
 // block's fit (the first overturning's under the refine method, the
 // conservative one of its three; the grid's first collapse otherwise) as
 // theta = median alpha g (N1) and (N2), valid on the PGA the IDA scanned,
-// minIML = alpha q_min to maxIML = alpha q_max (the engine holds a PGA above
+// minIML = alpha q_start (IdaOptions::q_start: q_min, or lower where an
+// imperfect block lifts) to maxIML = alpha q_max (the engine holds a PGA above
 // maxIML at maxIML, and so the probability at its value there, which the
-// function's comment states), with noDamageLimit = alpha q_min (no block
-// lifts below q = 1, the linearised threshold; q_min is 1 on every front
-// end).  A block without a fit is a comment saying why, and a line of
+// function's comment states), with noDamageLimit = alpha q_start (no block
+// lifts below it: q = 1 is the linearised threshold, and q_min is 1 on every
+// front end).  A block without a fit is a comment saying why, and a line of
 // `unfitted`.  `records` name the study's records, as its front end lists
 // them.  Every number in %.17g, which reads back to the same double.
 NrmlModel fragility_nrml(const std::vector<BlockFragility>& study, const FragilityStudyOptions& options,
