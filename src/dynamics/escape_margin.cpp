@@ -125,6 +125,10 @@ FlightMargins::FlightMargins(const Model& model, const RestOfInput& rest, double
     : model_(model), rest_(rest), scale_(scale), slopes_(slopes) {
     if (model.equation != Equation::linearised)
         throw std::invalid_argument("FlightMargins: the escape margin is eq. 3's (the linearised equation)");
+    // An imperfect block's flights would each need their own corner's alpha,
+    // p and J (docs/imperfect.md, "Solvers"): not derived here.
+    if (!model.symmetric())
+        throw std::invalid_argument("FlightMargins: the escape margin is the symmetric block's (Model::minus unset)");
     if (model.block.p != rest.p()) throw std::invalid_argument("FlightMargins: the RestOfInput is at another p");
     if (slopes && !rest.has_past()) throw std::invalid_argument("FlightMargins: the slopes need the RestOfInput's L");
 }

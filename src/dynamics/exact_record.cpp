@@ -12,13 +12,11 @@ namespace rocking::dynamics {
 bool record_kernel_applies(const Model& model, const GroundInput& input, const SimulationOptions& options) {
     if (options.solver.kind != SolverKind::exact || !options.solver.record_kernel) return false;
     if (model.equation != Equation::linearised || options.record_dt > 0.0) return false;
-    // An imperfect block runs the general path: the kernel's bounds and
-    // increments are written for one alpha and p.
-    if (!model.symmetric()) return false;
     const auto* sampled = dynamic_cast<const SampledInput*>(&input);
     // Longer pieces are split by ExactStepper (max_step_p); the kernel keeps
-    // to pieces it takes whole, as the general path does.
-    return sampled != nullptr && model.block.p * sampled->dt() <= options.solver.max_step_p;
+    // to pieces it takes whole, as the general path does, on either corner
+    // of an imperfect block (p_max: the faster one's).
+    return sampled != nullptr && model.p_max() * sampled->dt() <= options.solver.max_step_p;
 }
 
 namespace {
@@ -27,25 +25,57 @@ using closed_piece::Bounce;
 using closed_piece::Closed;
 using closed_piece::series;
 
+// What the kernel needs of the corner rocked on, fixed for a run: its
+// slenderness and pulsation, and the constants of a whole record piece on
+// it, cosh p dt - 1, sinh p dt and (sinh p dt - p dt) / p (the increments
+// of the closed form, Closed), with p sinh p dt (the quiet loop's product).
+template <class Real>
+struct CornerConstants {
+    Real alpha, p, inv_p, h_free, k1_dt, s_dt, q_dt, ps_dt;
+
+    CornerConstants(double alpha_, double p_, Real dt, double max_step_p) : alpha(alpha_), p(p_) {
+        inv_p = 1.0 / p;
+        h_free = max_step_p / p;  // step of the free rocking (ground at rest)
+        Real ch1_dt, sh1_dt;
+        series(p * dt * p * dt, ch1_dt, sh1_dt);
+        k1_dt = p * dt * p * dt * ch1_dt;
+        s_dt = p * dt * (1 + p * dt * p * dt * sh1_dt);
+        q_dt = dt * p * dt * p * dt * sh1_dt;
+        ps_dt = p * s_dt;
+    }
+};
+
+// The two corners of a block (docs/imperfect.md): on(sigma) is the corner
+// rocked on while sgn theta = sigma.  kImperfect false: one set, the
+// symmetric block's, and on() compiles to it (no test of sigma).
+template <class Real, bool kImperfect>
+struct Corners {
+    CornerConstants<Real> plus, minus;
+
+    Corners(const Model& model, Real dt, double max_step_p)
+        : plus(model.block.alpha, model.block.p, dt, max_step_p),
+          minus(model.alpha_on(-1), model.p_on(-1), dt, max_step_p) {}
+    const CornerConstants<Real>& on(int sigma) const {
+        if constexpr (kImperfect) return sigma > 0 ? plus : minus;
+        else return plus;
+    }
+};
+
 // kObserved: observer is told of each flight's start (FlightStart); without
-// it, the instantiation holds none of that code.
-template <class Real, bool kObserved = false>
+// it, the instantiation holds none of that code.  kImperfect: the block's
+// corners differ (Model::minus set): each flight takes the constants of the
+// corner it rocks on (Corners), an impact the restitution of the corner it
+// lands on (rules::impact), and the run keeps the largest theta on each
+// side, which the criteria measure against their own side's alpha.
+template <class Real, bool kImperfect, bool kObserved = false>
 SimulationResult run_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options,
                             FlightObserver* observer = nullptr) {
-    const Real alpha = model.block.alpha, p = model.block.p;
     const std::vector<double>& a = input.samples();
-    const Real dt = input.dt(), inv_dt = 1.0 / dt, inv_p = 1.0 / p;
+    const Real dt = input.dt(), inv_dt = 1.0 / dt;
     const Real t_fin = input.t_end();
-    const Real h_free = options.solver.max_step_p / p;  // step of the free rocking (ground at rest)
-    // A whole piece's constants: cosh p dt - 1, sinh p dt and
-    // (sinh p dt - p dt) / p (the increments of the closed form, Closed).
-    Real ch1_dt, sh1_dt;
-    series(p * dt * p * dt, ch1_dt, sh1_dt);
-    const Real k1_dt = p * dt * p * dt * ch1_dt, s_dt = p * dt * (1 + p * dt * p * dt * sh1_dt),
-               q_dt = dt * p * dt * p * dt * sh1_dt;
-    // The product the quiet loop below takes on every piece: p sinh p dt.
-    const Real ps_dt = p * s_dt;
-    const Real noise = 1e-12 * alpha;  // the general path's "rose" rule (simulate.cpp)
+    const Corners<Real, kImperfect> corners(model, dt, options.solver.max_step_p);
+    // The general path's "rose" rule (simulate.cpp), on the smaller alpha.
+    const Real noise = 1e-12 * Real(model.alpha_min());
     const Real rest = options.rest_velocity;
 
     SimulationResult result = rules::new_result(options, t_fin);
@@ -56,9 +86,25 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     bool done = false;
     std::size_t k = 0;  // the record piece holding t, while t < t_fin
     Real max_theta = 0;  // largest |theta| on [0, t_fin]
+    // kImperfect: the largest theta and -theta on [0, t_fin].
+    Real peak_plus = 0, peak_minus = 0;
 
     auto note_theta = [&](Real when, Real value) {
-        if (when <= t_fin) max_theta = std::max(max_theta, std::fabs(value));
+        if (when <= t_fin) {
+            max_theta = std::max(max_theta, std::fabs(value));
+            if constexpr (kImperfect) {
+                if (value > 0) peak_plus = std::max(peak_plus, value);
+                else peak_minus = std::max(peak_minus, -value);
+            }
+        }
+    };
+    // The largest sigma theta so far on side sigma: what an extremum there
+    // must pass to change the run's peaks (the symmetric block's, the
+    // largest |theta|; an imperfect block's, its side's, measured against
+    // that side's alpha by the criteria).
+    auto largest_on = [&](int s) -> Real {
+        if constexpr (kImperfect) return s > 0 ? peak_plus : peak_minus;
+        else return max_theta;
     };
     // A flight starts from the run's state (after an impact: unless it rests).
     auto flight_starts = [&]() {
@@ -95,8 +141,9 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     // other sign.  Out of line: inlined, its root finder cost the quiet loop
     // below registers (9,000 more instructions on Norcia's 1,037 quiet pieces).
     auto theta_at_extremum = [&](Real theta0, Real omega0, Real C, Real W, Real om1) __attribute__((noinline)) {
-        const Closed<Real> f{p, theta0, omega0, C, W};
-        return f.extremum({theta0, omega0, C}, 0, dt, om1, f.omega_noise(dt, k1_dt)).q.theta;
+        const CornerConstants<Real>& c = corners.on(sigma);
+        const Closed<Real> f{c.p, theta0, omega0, C, W};
+        return f.extremum({theta0, omega0, C}, 0, dt, om1, f.omega_noise(dt, c.k1_dt)).q.theta;
     };
     // Where the tangents at the ends of an arc of sigma theta meet, from
     // (0, s0) with slope w0 and (u, s1) with slope -w1 (w0, w1 > 0): above
@@ -105,8 +152,9 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         return s0 + w0 * ((s1 - s0 + w1 * u) / (w0 + w1));
     };
     // The level that sigma theta, rising from s, must stay below for nothing
-    // to happen: the first alpha while it is to come, the fall angle.
+    // to happen: the first alpha (its side's) while it is to come, the fall angle.
     auto upper_from = [&](Real s) -> Real {
+        const Real alpha = corners.on(sigma).alpha;
         return std::isnan(result.t_first_alpha) && s < alpha ? std::min(alpha, Real(options.overturn_angle))
                                                              : Real(options.overturn_angle);
     };
@@ -134,13 +182,16 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         // (Norcia: 17.6 -> 17.0 us; impact times within 3.6e-15 s, ulp(t)).
         // (The loop and the shortcut below run only while the state is
         // inside the piece it starts in, as it is here when either runs.)
+        // Each rebound flies on the corner just landed on (sigma after the
+        // impact), with its own alpha and p.
         const bool inside = !run.resting && t < t_fin && t < dt * (k + 1);
         Rest piece = inside ? rest_of_piece() : Rest{0, 0, 0};
-        Real lin_b = piece.a0 - sigma * alpha;
+        Real lin_b = piece.a0 - sigma * corners.on(sigma).alpha;
         while (!run.resting && t < t_fin && t < dt * (k + 1)) {
-            const Real u_max = std::min(piece.u1, Real(0.1) * inv_p);
+            const CornerConstants<Real>& c = corners.on(sigma);
+            const Real u_max = std::min(piece.u1, Real(0.1) * c.inv_p);
             if (!(sigma * lin_b < 0)) break;
-            const typename Closed<Real>::Found landing = Bounce<Real>{p, omega, lin_b, piece.c1}.landing(u_max);
+            const typename Closed<Real>::Found landing = Bounce<Real>{c.p, omega, lin_b, piece.c1}.landing(u_max);
             const Real u_land = landing.u;
             if (std::isnan(u_land)) break;
             const typename Closed<Real>::Point& land = landing.q;
@@ -148,14 +199,14 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             if (!(sigma * land.curvature < 0 && sigma * om_land < 0)) break;
             // On the concave arc theta <= omega u and theta <= |omega_land| (u_land - u).
             const Real w0 = std::fabs(omega), w1 = std::fabs(om_land);
-            if (!(w0 * w1 * u_land < max_theta * (w0 + w1))) break;
+            if (!(w0 * w1 * u_land < largest_on(sigma) * (w0 + w1))) break;
             ++result.steps;
             const Real t_land = t + u_land;
             rules::impact(run, result, model, options, t_land, om_land, rest);
             flight_starts();
             // The next bounce's lin (sigma is the new corner's) with the move
             // added last: one product and an add after u_land, not two adds.
-            lin_b = (piece.a0 - sigma * alpha) + piece.c1 * u_land;
+            lin_b = (piece.a0 - sigma * corners.on(sigma).alpha) + piece.c1 * u_land;
             piece.a0 += piece.c1 * u_land;
             piece.u1 -= u_land;
         }
@@ -166,14 +217,15 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
         // tangents at the ends (tangents_meet) keep its top below the largest
         // |theta| so far, as in the loop above.
         if (!run.resting && t < t_fin && t < dt * (k + 1)) {
-            lin_b = piece.a0 - sigma * alpha;
+            const CornerConstants<Real>& c = corners.on(sigma);
+            lin_b = piece.a0 - sigma * c.alpha;
             if (!(sigma * lin_b < 0)) return;
-            const Closed<Real> f{p, 0, omega, lin_b, omega + piece.c1};
+            const Closed<Real> f{c.p, 0, omega, lin_b, omega + piece.c1};
             const typename Closed<Real>::Point end = f.at(piece.u1);
             const Real s1 = sigma * end.theta, w0 = sigma * omega, w1 = -sigma * end.omega;
             if (!(sigma * end.curvature < 0 && s1 > noise && w0 > 0)) return;
             const Real top = w1 > 0 ? tangents_meet(0, w0, s1, w1, piece.u1) : s1;
-            if (!(top < max_theta * Real(1 - 1e-9))) return;
+            if (!(top < largest_on(sigma) * Real(1 - 1e-9))) return;
             ++result.steps;
             t = dt * (k + 1);
             theta = end.theta;
@@ -195,7 +247,8 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     // start.
     auto quiet_pieces = [&]() {
         if (!(dt * k <= t && t < dt * (k + 1))) k = input.piece_index(t);
-        const Real sa = sigma * alpha;
+        const CornerConstants<Real>& c = corners.on(sigma);
+        const Real sa = sigma * c.alpha, k1_dt = c.k1_dt, q_dt = c.q_dt, ps_dt = c.ps_dt;
         const Real upper = upper_from(sigma * theta);
         const std::size_t k0 = k;
         Real peak = 0.0;
@@ -235,7 +288,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
                     const Real v = tangents_meet(s0, w0, s1, w1, dt);
                     if (sg * C < 0.0) {
                         if (!(v < upper * Real(1 - 1e-9))) break;
-                        if (!(v < std::max(peak, max_theta) * Real(1 - 1e-9))) {
+                        if (!(v < std::max(peak, largest_on(sigma)) * Real(1 - 1e-9))) {
                             peak = std::max(peak, sg * theta_at_extremum(th0, om0, C, W, om1));
                         }
                     } else if (!(v > 2 * noise)) {
@@ -256,6 +309,7 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
             t = dt * k;
             rose = true;
             max_theta = std::max(max_theta, peak);
+            if constexpr (kImperfect) (sigma > 0 ? peak_plus : peak_minus) = std::max(largest_on(sigma), peak);
             result.steps += static_cast<long>(k - k0);
         }
     };
@@ -264,6 +318,8 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     // of the free rocking after the input) by its closed form, and its
     // events; true when one ends the segment.
     auto piece_events = [&](Real t_stop) -> bool {
+        const CornerConstants<Real>& corner = corners.on(sigma);
+        const Real alpha = corner.alpha, p = corner.p, h_free = corner.h_free;
         Real te, a0, c1;
         Real u1;
         if (t < t_fin) {
@@ -431,23 +487,30 @@ SimulationResult run_kernel(const Model& model, const SampledInput& input, const
     }
     rules::decide_by_energy(run, result, model, options, t_fin);
     result.max_abs_theta_input = static_cast<double>(max_theta);
+    if constexpr (kImperfect) {
+        result.peak_plus_input = static_cast<double>(peak_plus);
+        result.peak_minus_input = static_cast<double>(peak_minus);
+    }
     return result;
 }
 
 }  // namespace
 
 SimulationResult simulate_record_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options) {
-    return run_kernel<double>(model, input, options);
+    return model.symmetric() ? run_kernel<double, false>(model, input, options)
+                             : run_kernel<double, true>(model, input, options);
 }
 
 SimulationResult simulate_record_kernel(const Model& model, const SampledInput& input, const SimulationOptions& options,
                                         FlightObserver& observer) {
-    return run_kernel<double, true>(model, input, options, &observer);
+    return model.symmetric() ? run_kernel<double, false, true>(model, input, options, &observer)
+                             : run_kernel<double, true, true>(model, input, options, &observer);
 }
 
 SimulationResult simulate_record_kernel_extended(const Model& model, const SampledInput& input,
                                                 const SimulationOptions& options) {
-    return run_kernel<long double>(model, input, options);
+    return model.symmetric() ? run_kernel<long double, false>(model, input, options)
+                             : run_kernel<long double, true>(model, input, options);
 }
 
 }  // namespace rocking::dynamics

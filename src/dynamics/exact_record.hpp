@@ -28,8 +28,13 @@
 namespace rocking::dynamics {
 
 // True when simulate() hands the run to the record kernel: exact solver with
-// options.solver.record_kernel on, linearised equation, a symmetric block, a
-// SampledInput whose p dt <= 0.5, and no theta(t) record asked for (record_dt <= 0).
+// options.solver.record_kernel on, linearised equation, a SampledInput whose
+// p dt <= 0.5 (an imperfect block: on its faster corner), and no theta(t)
+// record asked for (record_dt <= 0).  An imperfect block (docs/imperfect.md)
+// runs it with each corner's alpha and p on the flights rocking on it, the
+// restitution of the corner landed on, each side's uplift threshold, the
+// largest theta on each side (peak_plus_input, peak_minus_input) and the
+// general path's free-rocking rule (Model::may_overturn).
 bool record_kernel_applies(const Model& model, const GroundInput& input, const SimulationOptions& options);
 
 // The run itself (callers normally go through simulate()).
