@@ -28,6 +28,10 @@ PACKAGES += python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pyte
 # pdftotext and pdffonts, with which ctest report_text reads the report as a reader's search does.
 PACKAGES += poppler-utils
 
+# Maintained libraries in place of hand-written code (issue 42): SHA-256 from OpenSSL's
+# libcrypto, the manifest's RFC 4180 CSV from libcsv.
+PACKAGES += libssl-dev libcsv-dev
+
 # Siconos (nonsmooth mechanics) for /usr/bin/python3: tools/siconos_block.py, the second method
 # against which ctest sliding_siconos checks the sliding-rocking engine (issue 41).
 PACKAGES += python3-siconos
