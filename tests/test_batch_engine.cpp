@@ -118,6 +118,7 @@ TEST(BatchEngine, CsvCellsAreReadAsRfc4180WithSpacesAroundDropped) {
     EXPECT_EQ(split_csv_line(""), (V{""}));
     EXPECT_THROW(split_csv_line("a,\"b"), std::invalid_argument);
     EXPECT_THROW(split_csv_line("\"b\"c,d"), std::invalid_argument);
+    EXPECT_THROW(split_csv_line("a\"b,c"), std::invalid_argument);  // RFC 4180: no quote in an unquoted cell
     for (const std::string cell : {"plain", "with, comma", "with \"quote\"", " lead", "", "q=2"})
         EXPECT_EQ(split_csv_line(csv_cell(cell) + ",x"), (V{cell, "x"})) << cell;
 }
