@@ -32,6 +32,9 @@ PACKAGES += poppler-utils
 # libcrypto, the manifest's RFC 4180 CSV from libcsv.
 PACKAGES += libssl-dev libcsv-dev
 
+# pip install . into a virtual environment (pyproject.toml, setup.py; ctest pip_install).
+PACKAGES += python3-venv python3-pip python3-setuptools
+
 # Siconos (nonsmooth mechanics) for /usr/bin/python3: tools/siconos_block.py, the second method
 # against which ctest sliding_siconos checks the sliding-rocking engine (issue 41).
 PACKAGES += python3-siconos
