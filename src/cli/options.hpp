@@ -138,5 +138,6 @@ int cmd_spectrum(int argc, char** argv);
 int cmd_fragility(int argc, char** argv);
 int cmd_eq27(int argc, char** argv);
 int cmd_batch(int argc, char** argv);
+int cmd_batch_join(int argc, char** argv);
 
 }  // namespace rocking::cli
