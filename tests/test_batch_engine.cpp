@@ -644,11 +644,13 @@ public:
     int size() const override { return 1; }
     int agree(int status) override { return status; }
     std::string broadcast(const std::string& text) override { return text; }
-    void run(std::size_t first, std::size_t n, int, std::size_t, const JobFunction& job, const DeliverRow& deliver,
+    void run(std::size_t first, std::size_t n, int, std::size_t, const JobFunction& job, const DeliverChunk& deliver,
              const std::string&) override {
         for (std::size_t i = first; i < n; ++i) {
-            JobRow row = job(i);
-            deliver(i, row);
+            RowChunk chunk;
+            chunk.first = i;
+            chunk.add(job(i));
+            deliver(chunk);
         }
     }
 };
