@@ -10,7 +10,6 @@
 
 #include "batch/pool.hpp"
 #include "cli/options.hpp"
-#include "cli/json_text.hpp"
 
 #include "records/synthetic.hpp"
 
@@ -350,12 +349,6 @@ records::HalfPeriods half_periods_of(const records::Record& r, const std::string
                                  " overflows a double; its samples are too large to measure (scale the record down)");
     return h;
 }
-
-// Until every document is a value (issue 42): a string's and a number's
-// text as json_text prints them.
-std::string json_string(const std::string& s) { return json_text(Json(s)); }
-
-std::string json_number(double v) { return json_text(Json(v)); }
 
 // A record file by content; --unit (and, for one column, the sampling step
 // under dt_flag) reads a plain-text one, and leaves an ESM or AT2 file, which
