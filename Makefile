@@ -29,8 +29,9 @@ PACKAGES += python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pyte
 PACKAGES += poppler-utils
 
 # Maintained libraries in place of hand-written code (issue 42): SHA-256 from OpenSSL's
-# libcrypto, the manifest's RFC 4180 CSV from libcsv.
-PACKAGES += libssl-dev libcsv-dev
+# libcrypto, the manifest's RFC 4180 CSV from libcsv, the command line's JSON documents as
+# nlohmann::ordered_json values (src/cli/json_text.hpp).
+PACKAGES += libssl-dev libcsv-dev nlohmann-json3-dev
 
 # pip install . into a virtual environment (pyproject.toml, setup.py; ctest pip_install).
 PACKAGES += python3-venv python3-pip python3-setuptools
