@@ -28,6 +28,14 @@ PACKAGES += python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pyte
 # pdftotext and pdffonts, with which ctest report_text reads the report as a reader's search does.
 PACKAGES += poppler-utils
 
+# Maintained libraries in place of hand-written code (issue 42): SHA-256 from OpenSSL's
+# libcrypto, the manifest's RFC 4180 CSV from libcsv, the command line's JSON documents as
+# nlohmann::ordered_json values (src/cli/json_text.hpp).
+PACKAGES += libssl-dev libcsv-dev nlohmann-json3-dev
+
+# pip install . into a virtual environment (pyproject.toml, setup.py; ctest pip_install).
+PACKAGES += python3-venv python3-pip python3-setuptools
+
 # Siconos (nonsmooth mechanics) for /usr/bin/python3: tools/siconos_block.py, the second method
 # against which ctest sliding_siconos checks the sliding-rocking engine (issue 41).
 PACKAGES += python3-siconos

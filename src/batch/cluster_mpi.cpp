@@ -1,10 +1,15 @@
 // The cluster over MPI (cluster.hpp).  The protocol, on MPI_COMM_WORLD:
-//   a rank other than 0 sends kRows to rank 0: the rows of the chunk it was
-//     given (none for its first two), which is also its request for another;
+//   a rank other than 0 sends kRows to rank 0: the chunk of rows it was
+//     given, packed (none for its first two), with the chunk size it would
+//     like next; that is also its request for another chunk;
 //   rank 0 answers each with kChunk: {first job, count}, or count 0 to stop.
 // Rank 0 answers a request at once when the window has room, and later
 // otherwise; its main thread alone calls MPI (MPI_THREAD_FUNNELED), polling
-// for requests and for its own threads' rows in turn.
+// for requests and for its own threads' chunks in turn.  Rows travel and
+// wait a chunk at a time: rank 0's cost is a chunk's (one message, one place
+// in the order, one append to the file) plus the copy of its bytes, and a
+// chunk is as many jobs as a rank runs in about kChunkSeconds, so that cheap
+// jobs come in large chunks and costly ones one by one.
 #include <mpi.h>
 
 #include <algorithm>
@@ -30,39 +35,43 @@ namespace {
 constexpr int kRows = 11, kChunk = 12;
 // Requests each rank keeps in flight (each kRows message is one).
 constexpr int kInFlight = 2;
-// The largest chunk a rank is given: the last chunks of a batch must be small
-// so that no rank is left with a long tail of jobs while the others wait.
-constexpr std::size_t kMaxChunk = 32;
+// The time a chunk should take a rank, and the bounds of its size: long enough
+// that a chunk's fixed costs vanish beside its jobs, short enough that a kill
+// loses little and no rank is left with a long tail while the others wait.
+constexpr double kChunkSeconds = 0.02;
+constexpr std::size_t kMaxChunk = 4096, kFirstChunk = 4;
 
-void append_bytes(std::string& out, const void* data, std::size_t size) {
-    out.append(static_cast<const char*>(data), size);
+// The chunk size that takes about kChunkSeconds at `seconds` for `jobs` jobs.
+std::size_t wanted_after(std::size_t jobs, double seconds) {
+    if (jobs == 0) return kFirstChunk;
+    const double each = std::max(seconds / static_cast<double>(jobs), 1e-9);
+    return static_cast<std::size_t>(std::clamp(kChunkSeconds / each, 1.0, static_cast<double>(kMaxChunk)));
 }
 
-// index, failed, length, text; one after the other.
-std::string pack(std::size_t first, std::vector<JobRow>& rows) {
+// {first, count, failed, text bytes, wanted}, the lengths, the text.
+std::string pack(const RowChunk& chunk, std::size_t wanted) {
+    const std::uint64_t head[5] = {chunk.first, chunk.count(), chunk.failed, chunk.text.size(), wanted};
     std::string out;
-    for (std::size_t k = 0; k < rows.size(); ++k) {
-        const std::uint64_t index = first + k, length = rows[k].text.size();
-        const std::uint8_t failed = rows[k].failed;
-        append_bytes(out, &index, sizeof index);
-        append_bytes(out, &failed, sizeof failed);
-        append_bytes(out, &length, sizeof length);
-        out += rows[k].text;
-    }
+    out.reserve(sizeof head + chunk.count() * sizeof(std::uint32_t) + chunk.text.size());
+    out.append(reinterpret_cast<const char*>(head), sizeof head);
+    out.append(reinterpret_cast<const char*>(chunk.lengths.data()), chunk.count() * sizeof(std::uint32_t));
+    out += chunk.text;
     return out;
 }
 
-template <class Add>
-void unpack(const std::vector<char>& in, Add add) {
-    for (std::size_t at = 0; at < in.size();) {
-        std::uint64_t index, length;
-        std::uint8_t failed;
-        std::memcpy(&index, in.data() + at, sizeof index), at += sizeof index;
-        std::memcpy(&failed, in.data() + at, sizeof failed), at += sizeof failed;
-        std::memcpy(&length, in.data() + at, sizeof length), at += sizeof length;
-        add(static_cast<std::size_t>(index), JobRow{std::string(in.data() + at, length), failed != 0});
-        at += length;
-    }
+// The chunk in `in` (none when it holds only a request) and the size wanted next.
+std::size_t unpack(const std::vector<char>& in, RowChunk& chunk) {
+    std::uint64_t head[5] = {0, 0, 0, 0, kFirstChunk};
+    if (in.size() < sizeof head) return kFirstChunk;
+    std::memcpy(head, in.data(), sizeof head);
+    chunk.first = head[0];
+    chunk.failed = head[2];
+    chunk.lengths.resize(head[1]);
+    const char* at = in.data() + sizeof head;
+    std::memcpy(chunk.lengths.data(), at, head[1] * sizeof(std::uint32_t));
+    at += head[1] * sizeof(std::uint32_t);
+    chunk.text.assign(at, head[3]);
+    return head[4];
 }
 
 // A receive that sleeps between its polls: a blocking MPI_Recv spins a core,
@@ -105,7 +114,7 @@ public:
     }
 
     void run(std::size_t first, std::size_t n, int threads, std::size_t window, const JobFunction& job,
-             const DeliverRow& deliver, const std::string& command) override {
+             const DeliverChunk& deliver, const std::string& command) override {
         // Once the chunks go out no rank can leave alone: the others would wait for it forever.
         try {
             if (rank_ != 0) follow(threads, job);
@@ -122,55 +131,66 @@ private:
     // way, and it never waits for rank 0 between chunks.
     void follow(int threads, const JobFunction& job) {
         for (int k = 0; k < kInFlight; ++k) MPI_Send(nullptr, 0, MPI_CHAR, 0, kRows, MPI_COMM_WORLD);
-        std::vector<JobRow> rows;
         for (int outstanding = kInFlight; outstanding > 0;) {
-            std::uint64_t chunk[2] = {0, 0};
-            patient_receive(chunk, 2, MPI_UINT64_T, 0, kChunk);
-            if (chunk[1] == 0) {  // no more jobs: one request fewer in flight
+            std::uint64_t given[2] = {0, 0};
+            patient_receive(given, 2, MPI_UINT64_T, 0, kChunk);
+            if (given[1] == 0) {  // no more jobs: one request fewer in flight
                 --outstanding;
                 continue;
             }
-            rows.assign(chunk[1], JobRow{});
+            const auto began = std::chrono::steady_clock::now();
+            RowChunk chunk;
+            chunk.first = given[0];
+            chunk.lengths.reserve(given[1]);
             run_ordered<JobRow>(
-                chunk[1], PoolOptions{threads}, [&](std::size_t k) { return job(chunk[0] + k); },
-                [&](std::size_t k, JobRow& row) { rows[k] = std::move(row); });
-            const std::string packed = pack(chunk[0], rows);
+                given[1], PoolOptions{threads}, [&](std::size_t k) { return job(given[0] + k); },
+                [&](std::size_t, JobRow& row) { chunk.add(row); });
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+            // Its threads ran the chunk together: a chunk of `threads` times the jobs takes the same time.
+            const std::string packed = pack(chunk, wanted_after(given[1], seconds) * static_cast<std::size_t>(threads));
             MPI_Send(packed.data(), static_cast<int>(packed.size()), MPI_CHAR, 0, kRows, MPI_COMM_WORLD);
         }
     }
 
     void lead(std::size_t first, std::size_t n, int threads, std::size_t window, const JobFunction& job,
-              const DeliverRow& deliver) {
+              const DeliverChunk& deliver) {
         std::mutex mutex;
         std::condition_variable arrived, room;
         std::size_t next = first, delivered = first;
-        std::map<std::size_t, JobRow> ready;  // rows waiting for their turn
+        std::map<std::size_t, RowChunk> ready;  // chunks waiting for their turn, by their first job
         bool stop = false;
         const std::size_t ranks = static_cast<std::size_t>(size_), workers = ranks - 1;
 
-        // A guided chunk: a share of what is left, so that the chunks shrink towards the end.
-        auto take = [&](std::size_t& from) {  // under the lock; 0 when none may be taken now
+        // A guided chunk: a share of what is left, so that the chunks shrink towards
+        // the end, at most what the rank asked for.
+        auto take = [&](std::size_t& from, std::size_t wanted) {  // under the lock; 0 when none may be taken now
             if (next >= n || next >= delivered + window) return std::size_t{0};
             const std::size_t share = (n - next) / (2 * (ranks + threads));
-            const std::size_t count = std::min({std::max<std::size_t>(share, 1), kMaxChunk, delivered + window - next});
+            const std::size_t count =
+                std::min({std::max<std::size_t>(share, 1), std::max<std::size_t>(wanted, 1), delivered + window - next});
             from = next;
             next += count;
             return count;
         };
         // Rank 0's own threads take chunks as the others do, without messages.
         auto work = [&] {
+            std::size_t wanted = kFirstChunk;
             for (;;) {
                 std::size_t from = 0, count = 0;
                 {
                     std::unique_lock<std::mutex> lock(mutex);
                     room.wait(lock, [&] { return stop || next >= n || next < delivered + window; });
                     if (stop || next >= n) return;
-                    count = take(from);
+                    count = take(from, wanted);
                 }
-                std::vector<JobRow> rows;
-                for (std::size_t i = from; i < from + count; ++i) rows.push_back(job(i));
+                const auto began = std::chrono::steady_clock::now();
+                RowChunk chunk;
+                chunk.first = from;
+                chunk.lengths.reserve(count);
+                for (std::size_t i = from; i < from + count; ++i) chunk.add(job(i));
+                wanted = wanted_after(count, std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count());
                 std::lock_guard<std::mutex> lock(mutex);
-                for (std::size_t k = 0; k < count; ++k) ready.emplace(from + k, std::move(rows[k]));
+                ready.emplace(from, std::move(chunk));
                 arrived.notify_one();
             }
         };
@@ -191,7 +211,7 @@ private:
         } joiner{pool, mutex, stop, room};
         start_threads(pool, static_cast<std::size_t>(threads), work);
 
-        std::deque<int> waiting;  // ranks that asked for work
+        std::deque<std::pair<int, std::size_t>> waiting;  // ranks that asked for work, and how many jobs
         std::size_t stopped = 0;
         std::vector<char> buffer;
         // Every rank ends once each of its requests in flight has been answered "stop".
@@ -205,21 +225,25 @@ private:
                 MPI_Get_count(&status, MPI_CHAR, &count);
                 buffer.resize(static_cast<std::size_t>(count));
                 MPI_Recv(buffer.data(), count, MPI_CHAR, status.MPI_SOURCE, kRows, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-                std::lock_guard<std::mutex> lock(mutex);
-                unpack(buffer, [&](std::size_t i, JobRow row) { ready.emplace(i, std::move(row)); });
-                waiting.push_back(status.MPI_SOURCE);
+                RowChunk chunk;
+                const std::size_t wanted = unpack(buffer, chunk);
+                if (chunk.count() > 0) {
+                    std::lock_guard<std::mutex> lock(mutex);
+                    ready.emplace(chunk.first, std::move(chunk));
+                }
+                waiting.emplace_back(status.MPI_SOURCE, wanted);
                 busy = true;
             }
             for (std::size_t k = waiting.size(); k > 0; --k) {
-                const int to = waiting.front();
+                const auto [to, wanted] = waiting.front();
                 waiting.pop_front();
                 std::uint64_t chunk[2] = {0, 0};
                 {
                     std::lock_guard<std::mutex> lock(mutex);
                     std::size_t from = 0;
-                    const std::size_t count = take(from);
+                    const std::size_t count = take(from, wanted);
                     if (count == 0 && next < n) {
-                        waiting.push_back(to);  // the window is full: it waits for room
+                        waiting.emplace_back(to, wanted);  // the window is full: it waits for room
                         continue;
                     }
                     chunk[0] = from, chunk[1] = count;
@@ -229,18 +253,17 @@ private:
                 busy = true;
             }
             for (;;) {
-                JobRow row;
-                std::size_t i;
+                RowChunk chunk;
                 {
                     std::lock_guard<std::mutex> lock(mutex);
                     auto it = ready.find(delivered);
                     if (it == ready.end()) break;
-                    row = std::move(it->second);
+                    chunk = std::move(it->second);
                     ready.erase(it);
-                    i = delivered++;
+                    delivered += chunk.count();
                 }
                 room.notify_all();
-                deliver(i, row);
+                deliver(chunk);
                 busy = true;
             }
             if (!busy) {

@@ -194,20 +194,23 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
     // every row passes through, the bound on how many rows a second a batch takes.
     const double cpu_before = thread_cpu_seconds();
     std::size_t done = 0, failed = 0;
-    const DeliverRow deliver = [&](std::size_t i, JobRow& row) {
-        ++done, failed += row.failed;
-        if (file) file->append(row.text, row.failed);
-        else options.collect(i, row.text);
+    const DeliverChunk deliver = [&](RowChunk& chunk) {
+        done += chunk.count(), failed += chunk.failed;
+        if (file) file->append(chunk);
+        else chunk.each([&](std::size_t i, std::string_view row) { options.collect(i, std::string(row)); });
         progress.update(first + done, file ? file->failed() : failed);
     };
     if (ranks) {
+        // Room for about four of the largest chunks (cluster_mpi.cpp: 4096 cheap jobs) a rank and
+        // thread, at most 2^20 rows out of order (about 200 MB of rows of 200 bytes).
+        const std::size_t takers = threads + static_cast<std::size_t>(ranks->size());
         const std::size_t window =
-            options.window ? options.window : 64 * (threads + static_cast<std::size_t>(ranks->size()));
+            options.window ? options.window : std::max<std::size_t>(64 * takers, std::min<std::size_t>(16384 * takers, 1 << 20));
         // A row that cannot be written (a full disk) ends every rank by MPI_Abort: the
         // files go first when they keep no row, as on threads.
-        const DeliverRow deliver_or_discard = [&](std::size_t i, JobRow& row) {
+        const DeliverChunk deliver_or_discard = [&](RowChunk& chunk) {
             try {
-                deliver(i, row);
+                deliver(chunk);
             } catch (...) {
                 if (file) file->discard_unless_rows_kept();
                 throw;
@@ -219,17 +222,16 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
         // The window in chunks: at most `window` rows held, or the pool's 64 chunks a thread.
         const std::size_t window = options.window ? std::max<std::size_t>(1, options.window / kMaxChunk) : 0;
         try {
-            run_ordered<std::vector<JobRow>>(
+            run_ordered<RowChunk>(
                 starts.size() - 1, PoolOptions{static_cast<int>(threads), window},
                 [&](std::size_t c) {
-                    std::vector<JobRow> rows;
-                    rows.reserve(starts[c + 1] - starts[c]);
-                    for (std::size_t i = starts[c]; i < starts[c + 1]; ++i) rows.push_back(plan.run(i));
-                    return rows;
+                    RowChunk chunk;
+                    chunk.first = starts[c];
+                    chunk.lengths.reserve(starts[c + 1] - starts[c]);
+                    for (std::size_t i = starts[c]; i < starts[c + 1]; ++i) chunk.add(plan.run(i));
+                    return chunk;
                 },
-                [&](std::size_t c, std::vector<JobRow>& rows) {
-                    for (std::size_t k = 0; k < rows.size(); ++k) deliver(starts[c] + k, rows[k]);
-                });
+                [&](std::size_t, RowChunk& chunk) { deliver(chunk); });
         } catch (...) {
             // Threads that cannot start, a row that cannot be written: no state of a run that keeps no row.
             if (file) file->discard_unless_rows_kept();

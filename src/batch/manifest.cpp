@@ -31,80 +31,7 @@ std::string absolute(const std::string& folder) {
     return p;
 }
 
-// Where a carriage return stands outside a quoted cell in `row` (its CRLF's
-// CR already cut off), or npos.  Such a CR is a line end of a file written
-// with CR alone (classic Mac OS), which RFC 4180 does not know: read as a
-// character of the cells, the whole file was one header row ("the header
-// names column 'r.AT2' twice").  Inside quotes it is the cell's.
-std::size_t bare_carriage_return(std::string_view row) {
-    bool quoted = false;
-    for (std::size_t at = 0; at < row.size(); ++at) {
-        if (row[at] == '"') quoted = !quoted;  // "" inside a quoted cell toggles twice
-        else if (row[at] == '\r' && !quoted) return at;
-    }
-    return std::string_view::npos;
-}
-
 }  // namespace
-
-CsvRecordEnd csv_record_end(std::string_view text, std::size_t at) {
-    CsvRecordEnd r;
-    for (;;) {  // one cell a turn
-        while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
-        if (at < text.size() && text[at] == '"') {
-            const int opened = r.newlines;
-            for (++at;; ++at) {
-                if (at >= text.size()) {
-                    r.closed = false;
-                    r.quote_line = opened;
-                    r.end = text.size();
-                    return r;
-                }
-                if (text[at] == '\n') ++r.newlines;
-                if (text[at] == '"') {
-                    if (at + 1 < text.size() && text[at + 1] == '"') ++at;
-                    else break;
-                }
-            }
-            ++at;  // the closing quote; what follows up to the comma is split_csv_line's to refuse
-        }
-        while (at < text.size() && text[at] != ',' && text[at] != '\n') ++at;
-        if (at >= text.size() || text[at] == '\n') {
-            r.end = at;
-            return r;
-        }
-        ++at;  // the comma
-    }
-}
-
-std::vector<std::string> split_csv_line(std::string_view line) {
-    std::vector<std::string> cells;
-    std::size_t i = 0;
-    for (;;) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-        std::string cell;
-        if (i < line.size() && line[i] == '"') {
-            ++i;
-            for (;;) {
-                if (i >= line.size()) throw std::invalid_argument("an unterminated quote");
-                if (line[i] == '"') {
-                    if (i + 1 < line.size() && line[i + 1] == '"') cell += '"', i += 2;
-                    else break;
-                } else cell += line[i++];
-            }
-            ++i;  // the closing quote
-            while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-            if (i < line.size() && line[i] != ',') throw std::invalid_argument("text after a closing quote");
-        } else {
-            const std::size_t end = std::min(line.find(',', i), line.size());
-            cell = std::string(trimmed(line.substr(i, end - i)));
-            i = end;
-        }
-        cells.push_back(std::move(cell));
-        if (i >= line.size()) return cells;
-        ++i;  // the comma
-    }
-}
 
 std::string csv_cell(const std::string& cell) {
     const bool quote = cell.find_first_of(",\"\n\r") != std::string::npos ||
@@ -179,8 +106,8 @@ Manifest Manifest::parse(std::string text, const std::string& path, const Folder
         std::size_t length = end.end - at;
         if (length > 0 && m.text_[at + length - 1] == '\r') --length;
         const std::string_view row(m.text_.data() + at, length);
-        if (const std::size_t cr = bare_carriage_return(row); cr != std::string_view::npos)
-            throw ManifestError(path + ":" + std::to_string(line + std::count(row.begin(), row.begin() + cr, '\n')) +
+        if (end.bare_cr)
+            throw ManifestError(path + ":" + std::to_string(line + end.newlines) +
                                 ": a carriage return (CR) with no line feed after it, outside quotes: lines ending "
                                 "with CR alone (as classic Mac OS wrote them) are not read as line ends (RFC 4180 "
                                 "ends a row with CRLF or LF); convert them, e.g. tr '\\r' '\\n' <in.csv >out.csv");

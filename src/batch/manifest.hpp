@@ -76,18 +76,22 @@ private:
 // Where the CSV row starting at `at` ends: the line break outside quotes, or
 // the text's end; `newlines` counts the line breaks inside its quoted cells.
 // Not closed: a quoted cell runs to the end, opened `quote_line` lines below
-// the row's first.
+// the row's first.  bare_cr: the row ended at a carriage return outside
+// quotes with no line feed after it, on line `newlines` below its first
+// (the rest of that line is not read).  By libcsv (batch/csv.cpp).
 struct CsvRecordEnd {
     std::size_t end = 0;
     int newlines = 0;
     bool closed = true;
     int quote_line = 0;
+    bool bare_cr = false;
 };
 CsvRecordEnd csv_record_end(std::string_view text, std::size_t at);
 
 // The cells of one CSV row (its quoted cells may hold line breaks), spaces
-// around each dropped; throws std::invalid_argument on an unterminated quote
-// or text after a closing one.
+// around each dropped; throws std::invalid_argument on an unterminated quote,
+// text after a closing one or a quote inside an unquoted cell (libcsv's
+// strict mode).
 std::vector<std::string> split_csv_line(std::string_view line);
 // A cell as CSV writes it: quoted when it holds a comma, a quote, a line
 // break or spaces at either end (which reading would drop).

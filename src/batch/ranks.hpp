@@ -81,14 +81,14 @@ public:
     // Collective: rank 0's text on every rank.
     virtual std::string broadcast(const std::string& text) = 0;
     // Collective.  Rank 0: jobs first .. n - 1 handed out in chunks to the
-    // ranks that ask, `threads` of its own taking them one by one too, and
-    // every row to deliver() in the jobs' order, at most `window` rows held.
+    // ranks that ask, `threads` of its own taking chunks too, and every
+    // chunk's rows to deliver() in the jobs' order, at most `window` rows held.
     // The other ranks: the chunks they are given, on `threads` threads, until
     // told to stop (deliver is not called there).  A failure on any rank
     // (deliver throwing, a thread that cannot start) aborts every rank, its
     // message printed after `command` ("rocking fragility").
     virtual void run(std::size_t first, std::size_t n, int threads, std::size_t window, const JobFunction& job,
-                     const DeliverRow& deliver, const std::string& command) = 0;
+                     const DeliverChunk& deliver, const std::string& command) = 0;
 };
 
 }  // namespace rocking::batch

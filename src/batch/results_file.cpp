@@ -279,6 +279,29 @@ void ResultsFile::append(const std::string& row, bool failed) {
     if (held_.size() >= options_.flush_bytes || since >= options_.flush_seconds) flush_locked();
 }
 
+void ResultsFile::append(const RowChunk& chunk) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_flush_).count();
+    if (since < options_.flush_seconds && held_.size() + chunk.text.size() < options_.flush_bytes) {
+        held_ += chunk.text;  // no flush due inside the chunk: it goes whole
+        done_ += chunk.count();
+        failed_ += chunk.failed;
+        return;
+    }
+    // A flush is due inside the chunk: row by row, as append(row) would, so that
+    // the held bytes stay within flush_bytes and a flush after each row
+    // (flush_seconds 0) is one after each row.
+    std::size_t at = 0;
+    for (const std::uint32_t entry : chunk.lengths) {
+        held_.append(chunk.text, at, RowChunk::length(entry));
+        at += RowChunk::length(entry);
+        ++done_;
+        failed_ += RowChunk::failed_row(entry);
+        const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_flush_).count();
+        if (held_.size() >= options_.flush_bytes || now >= options_.flush_seconds) flush_locked();
+    }
+}
+
 void ResultsFile::flush() {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!finished_ && !complete_) flush_locked();

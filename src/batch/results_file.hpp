@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/job_row.hpp"
 #include "batch/sha256.hpp"
 
 namespace rocking::batch {
@@ -96,6 +97,8 @@ public:
     bool complete() const { return complete_; }
     // Job done()'s row (its text without the newline), and whether it failed.
     void append(const std::string& row, bool failed);
+    // The rows of jobs done() .. done() + chunk.count() - 1, at once.
+    void append(const RowChunk& chunk);
     // The rows held reach the file, synced, and the state counts them.
     void flush();
     // Every job written: the end line, and the file moves to its path.

@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "cli/geometry.hpp"
 #include "cli/help.hpp"
 #include "cli/imperfection.hpp"
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
@@ -119,55 +119,69 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
     }
 }
 
-std::string first_json(const studies::IdaPoint& at, double scale, double to) {
-    return "{\"found\": " + std::string(at.collapsed ? "true" : "false") + ", \"q\": " + json_number(at.q) +
-           ", \"scale\": " + json_number(scale) + (at.collapsed ? ", \"interval_to\": " + json_number(to) : std::string()) + "}";
+Json first_json(const studies::IdaPoint& at, double scale, double to) {
+    Json o{{"found", at.collapsed}, {"q", at.q}, {"scale", scale}};
+    if (at.collapsed) o["interval_to"] = to;
+    return o;
+}
+
+Json record_json(const std::string& file, const std::string& name, const studies::RecordAssessment& r) {
+    Json o;
+    o["file"] = file;
+    o["name"] = name;
+    o["pga_g"] = r.motion.pga / dynamics::kGravity;
+    o["to5"] = r.motion.to5;
+    o["x"] = r.x;
+    o["q_eq27"] = r.q_eq27;
+    o["q_eq27_as_printed"] = r.q_eq27_as_printed;
+    o["eq27_side"] = r.eq27_side;
+    o["q_record"] = r.q_record;
+    o["ratio"] = r.ratio;
+    o["margin"] = r.margin;
+    o["passes"] = r.passes;
+    o["eq27_passes_alpha_before_t_fin"] = r.eq27_passes_alpha;
+    o["eq27_impact_before_t_fin"] = r.eq27_strikes;
+    o["overturns"] = r.overturns;
+    o["fell_during_input"] = r.fell_during_input;
+    o["peak_theta_over_alpha"] = r.peak_theta_over_alpha;
+    o["first_overturning"] = first_json(r.ida.first_overturning, r.scale_first_overturning, r.first_overturning_to);
+    o["first_robust_collapse"] = first_json(r.ida.first_robust_collapse, r.scale_first_robust, r.first_robust_to);
+    o["change_below"] = nearest_json(r.mark.below, r.mark.height_below);
+    o["change_above"] = nearest_json(r.mark.above, r.mark.height_above);
+    o["change_below_far"] = nearest_json(r.mark.below_far, studies::far_height(r.mark, r.mark.below_far));
+    o["change_above_far"] = nearest_json(r.mark.above_far, studies::far_height(r.mark, r.mark.above_far));
+    o["in_spectrum_set"] = r.mark.in_set;
+    o["guaranteed"] = std::isfinite(r.ida.unguaranteed_from) ? "below q = " + significant(r.ida.unguaranteed_from, 17)
+                                                             : std::string("over the whole search");
+    o["survivors_below"] = nearest_json(r.mark.survivors_below, r.mark.height_survivors_below);
+    o["survivors_above"] = nearest_json(r.mark.survivors_above, r.mark.height_survivors_above);
+    if (r.has_probability) o["probability"] = r.probability;
+    return o;
 }
 
 void print_json(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
                 const studies::Assessment& s, const studies::AssessOptions& o, const std::string& floor) {
-    std::ostringstream js;
-    js << "{\"alpha\": " << json_number(given.alpha) << ", \"p\": " << json_number(given.block.p) << ", "
-       << block_json(given) << ", \"model\": " << json_string(o.describe()) << ", \"width\": " << json_number(o.width)
-       << ", \"input\": " << json_string(floor.empty() ? std::string("each record as recorded: the ground's motion") : floor)
-       << ", \"check\": " << json_string(o.describe_check());
+    Json js;
+    js["alpha"] = given.alpha;
+    js["p"] = given.block.p;
+    add_block(js, given);
+    js["model"] = o.describe();
+    js["width"] = o.width;
+    js["input"] = floor.empty() ? std::string("each record as recorded: the ground's motion") : floor;
+    js["check"] = o.describe_check();
     if (o.model.imperfection.any())
-        js << ", " << imperfection_json(o.model.imperfection, given.block, o.model.housner_restitution ? NAN : o.model.restitution);
-    js << ", \"records\": [";
-    for (std::size_t k = 0; k < files.size(); ++k) {
-        const studies::RecordAssessment& r = s.records[k];
-        js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"name\": " << json_string(names[k])
-           << ", \"pga_g\": "
-           << json_number(r.motion.pga / dynamics::kGravity) << ", \"to5\": " << json_number(r.motion.to5)
-           << ", \"x\": " << json_number(r.x) << ", \"q_eq27\": " << json_number(r.q_eq27)
-           << ", \"q_eq27_as_printed\": " << json_number(r.q_eq27_as_printed) << ", \"eq27_side\": " << r.eq27_side
-           << ", \"q_record\": " << json_number(r.q_record) << ", \"ratio\": " << json_number(r.ratio)
-           << ", \"margin\": " << json_number(r.margin) << ", \"passes\": " << (r.passes ? "true" : "false")
-           << ", \"eq27_passes_alpha_before_t_fin\": " << (r.eq27_passes_alpha ? "true" : "false")
-           << ", \"eq27_impact_before_t_fin\": " << (r.eq27_strikes ? "true" : "false")
-           << ", \"overturns\": " << (r.overturns ? "true" : "false")
-           << ", \"fell_during_input\": " << (r.fell_during_input ? "true" : "false")
-           << ", \"peak_theta_over_alpha\": " << json_number(r.peak_theta_over_alpha)
-           << ", \"first_overturning\": " << first_json(r.ida.first_overturning, r.scale_first_overturning, r.first_overturning_to)
-           << ", \"first_robust_collapse\": " << first_json(r.ida.first_robust_collapse, r.scale_first_robust, r.first_robust_to)
-           << ", \"change_below\": " << nearest_json(r.mark.below, r.mark.height_below)
-           << ", \"change_above\": " << nearest_json(r.mark.above, r.mark.height_above)
-           << ", \"change_below_far\": " << nearest_json(r.mark.below_far, studies::far_height(r.mark, r.mark.below_far))
-           << ", \"change_above_far\": " << nearest_json(r.mark.above_far, studies::far_height(r.mark, r.mark.above_far))
-           << ", \"in_spectrum_set\": " << (r.mark.in_set ? "true" : "false")
-           << ", \"guaranteed\": " << (std::isfinite(r.ida.unguaranteed_from)
-                                            ? json_string("below q = " + significant(r.ida.unguaranteed_from, 17))
-                                            : std::string("\"over the whole search\""))
-           << ", \"survivors_below\": " << nearest_json(r.mark.survivors_below, r.mark.height_survivors_below)
-           << ", \"survivors_above\": " << nearest_json(r.mark.survivors_above, r.mark.height_survivors_above);
-        if (r.has_probability) js << ", \"probability\": " << json_number(r.probability);
-        js << "}";
+        js["imperfection"] =
+            imperfection_json(o.model.imperfection, given.block, o.model.housner_restitution ? NAN : o.model.restitution);
+    Json& records = js["records"] = Json::array();
+    for (std::size_t k = 0; k < files.size(); ++k) records.push_back(record_json(files[k], names[k], s.records[k]));
+    Json& fragility = js["fragility"] = {{"fitted", s.fitted}};
+    if (s.fitted) {
+        fragility["median"] = s.fit.median;
+        fragility["beta"] = s.fit.beta;
+    } else {
+        fragility["no_fit"] = s.no_fit;
     }
-    js << "], \"fragility\": {\"fitted\": " << (s.fitted ? "true" : "false");
-    if (s.fitted) js << ", \"median\": " << json_number(s.fit.median) << ", \"beta\": " << json_number(s.fit.beta);
-    else js << ", \"no_fit\": " << json_string(s.no_fit);
-    js << "}}\n";
-    std::cout << js.str();
+    std::cout << json_text(js) << "\n";
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "batch/manifest.hpp"
 #include "batch/pool.hpp"
 #include "batch/results_file.hpp"
+#include "batch/shard.hpp"
 #include "cli/cluster_front.hpp"
 #include "cli/help.hpp"
 #include "cli/options.hpp"
@@ -30,6 +31,7 @@ constexpr int kSomeJobsFailed = 3;
 struct Options {
     std::string manifest;
     batch::EngineOptions engine;
+    std::optional<batch::Shard> shard;
 };
 
 Options options_from(int argc, char** argv, bool mpi) {
@@ -37,8 +39,18 @@ Options options_from(int argc, char** argv, bool mpi) {
     std::vector<char*> args = without_engine_switches(argc, argv, o.engine.resume, o.engine.quiet);
     const int count = static_cast<int>(args.size());
     o.manifest = file_argument(count, args.data(), 2, usage_line("batch"));
-    const Args a = parse(count, args.data(), 3, {"--jobs", "--output"});
+    const Args a = parse(count, args.data(), 3, {"--jobs", "--output", "--shard"});
     if (a.json) throw UsageError("--json: the results of a batch are CSV (docs/batch.md)");
+    if (a.values.count("--shard")) {
+        try {
+            o.shard = batch::parse_shard(a.values.at("--shard"));
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--shard: ") + e.what());
+        }
+        if (mpi) throw UsageError("--shard is for clusters without MPI: under mpirun the ranks share the whole batch");
+        if (!a.values.count("--output"))
+            throw UsageError("--shard needs --output FILE: rocking batch join assembles the shards' files");
+    }
     if (a.values.count("--output")) {
         o.engine.output = a.values.at("--output");
         if (o.engine.output.empty()) throw UsageError("--output: an empty file name");
@@ -64,6 +76,7 @@ void check_output(const std::string& output, const batch::Manifest& manifest,
 }  // namespace
 
 int cmd_batch(int argc, char** argv) {
+    if (argc > 2 && std::string(argv[2]) == "join") return cmd_batch_join(argc, argv);
     const bool mpi = batch::launched_by_mpirun();
     Options o;
     parse_on_every_rank([&] { o = options_from(argc, argv, mpi); });
@@ -80,6 +93,7 @@ int cmd_batch(int argc, char** argv) {
         const std::vector<jobs::NamedRecord> named = jobs::named_records(*manifest);
         if (!ranks || ranks->rank() == 0) check_output(o.engine.output, *manifest, named);
         plan = jobs::make_plan(*manifest, records, named);
+        if (o.shard) plan = batch::shard_plan(plan, *o.shard);
     } catch (const std::exception&) {
         failure = std::current_exception();
     }

@@ -12,6 +12,7 @@
 #include "cli/geometry.hpp"
 #include "cli/help.hpp"
 #include "cli/imperfection.hpp"
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "records/collapse.hpp"
 #include "harness/table.hpp"
@@ -84,20 +85,26 @@ int cmd_collapse(int argc, char** argv) {
     refuse_unresolvable_run(o.p_max, input.t_end(), a, {"--dt"}, path);
     const records::CollapseResult c = records::smallest_collapse_p(input, alpha, o);
     if (a.json) {
-        std::cout << "{\"file\": " << json_string(path) << ", \"alpha\": " << json_number(alpha)
-                  << ", \"found\": " << (c.found ? "true" : "false")
-                  << ", \"p\": " << (c.found ? json_number(c.p) : std::string("null"))
-                  << ", \"p_safe\": " << (c.found && !c.below_range() ? json_number(c.p_safe) : std::string("null"))
-                  << ", \"below_range\": " << (c.below_range() ? "true" : "false") << ", \"simulations\": " << c.simulations
-                  << ", \"search\": " << json_string(o.describe());
-        if (given) std::cout << ", \"block_p\": " << json_number(given->block.p) << ", " << block_json(*given);
+        Json j;
+        j["file"] = path;
+        j["alpha"] = alpha;
+        j["found"] = c.found;
+        // null where nothing was found, or (p_safe) found at the search's lowest p (below_range).
+        j["p"] = c.found ? Json(c.p) : Json(nullptr);
+        j["p_safe"] = c.found && !c.below_range() ? Json(c.p_safe) : Json(nullptr);
+        j["below_range"] = c.below_range();
+        j["simulations"] = c.simulations;
+        j["search"] = o.describe();
+        if (given) {
+            j["block_p"] = given->block.p;
+            add_block(j, *given);
+        }
         // At the p found, each corner of the block that overturned; without one, the imperfections given.
         if (o.imperfection.any())
-            std::cout << ", "
-                      << (c.found ? imperfection_json(o.imperfection, Block::from_p(c.p, alpha),
-                                                      o.housner_restitution ? NAN : o.restitution)
-                                  : imperfection_inputs_json(o.imperfection));
-        std::cout << "}\n";
+            j["imperfection"] = c.found ? imperfection_json(o.imperfection, Block::from_p(c.p, alpha),
+                                                            o.housner_restitution ? NAN : o.restitution)
+                                        : imperfection_inputs_json(o.imperfection);
+        std::cout << json_text(j) << "\n";
     } else {
         if (c.below_range())
             std::printf("p <= %.6f rad/s: %s overturns the block (alpha = %g) already at the search's lowest "

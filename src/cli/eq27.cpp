@@ -14,7 +14,6 @@
 #include <exception>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -25,6 +24,7 @@
 #include "cli/distinct_inputs.hpp"
 #include "cli/help.hpp"
 #include "cli/imperfection.hpp"
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "harness/table.hpp"
@@ -293,76 +293,78 @@ void print_text(const std::vector<std::string>& files, const studies::Eq27Option
     }
 }
 
-std::string counts_json(const std::array<int, kHalfPeriods>& counts) {
-    std::string text = "[";
-    for (int k = 0; k < kHalfPeriods; ++k) text += (k ? ", " : "") + std::to_string(counts[k]);
-    return text + "]";
-}
-
-// A study's censored count, shares, each record's counts and the map, as JSON members.
-std::string study_json(const std::vector<std::string>& files, const Eq27Study& s) {
-    std::ostringstream js;
-    js << "\"censored\": " << s.censored << ", \"shares\": [";
+// A study's censored count, shares, each record's counts and the map, as members of o.
+void add_study(Json& o, const std::vector<std::string>& files, const Eq27Study& s) {
+    o["censored"] = s.censored;
+    Json& shares = o["shares"] = Json::array();
     for (int k = 0; k < kHalfPeriods; ++k) {
         const studies::Eq27Share& sh = s.shares[k];
-        js << (k ? ", " : "") << "{\"k\": " << k + 1 << ", \"non_conservative\": " << sh.non_conservative
-           << ", \"cases\": " << sh.cases << ", \"share\": " << json_number(sh.share) << ", \"bootstrap\": "
-           << (bootstrapped(s) ? "[" + json_number(sh.bootstrap.lo) + ", " + json_number(sh.bootstrap.hi) + "]"
-                               : std::string("null"))
-           << ", \"wilson\": [" << json_number(sh.wilson.lo) << ", " << json_number(sh.wilson.hi)
-           << "], \"records_with_any\": " << sh.records_with_any << ", \"records\": " << sh.records
-           << ", \"blocks_with_any\": " << blocks_hit(s, k) << "}";
+        // Without a bootstrap, null: the document's bootstrap_run and bootstrap_note say why.
+        shares.push_back({{"k", k + 1},
+                          {"non_conservative", sh.non_conservative},
+                          {"cases", sh.cases},
+                          {"share", sh.share},
+                          {"bootstrap", bootstrapped(s) ? Json::array({sh.bootstrap.lo, sh.bootstrap.hi}) : Json(nullptr)},
+                          {"wilson", Json::array({sh.wilson.lo, sh.wilson.hi})},
+                          {"records_with_any", sh.records_with_any},
+                          {"records", sh.records},
+                          {"blocks_with_any", blocks_hit(s, k)}});
     }
     // Each record's non-conservative cases per k: what the bootstrap resamples.
     std::vector<std::array<int, kHalfPeriods>> by_record(s.records, std::array<int, kHalfPeriods>{});
     for (const studies::Eq27Case& c : s.cases)
         for (int k = 0; k < kHalfPeriods; ++k) by_record[c.record][k] += c.non_conservative[k];
-    js << "], \"by_record\": [";
+    Json& records = o["by_record"] = Json::array();
     for (std::size_t r = 0; r < by_record.size(); ++r)
-        js << (r ? ", " : "") << "{\"file\": " << json_string(files[r]) << ", \"sha256\": "
-           << json_string(s.identities[r]) << ", \"non_conservative\": " << counts_json(by_record[r]) << "}";
-    js << "], \"map\": [";
-    for (std::size_t b = 0; b < s.map.size(); ++b) {
-        const studies::Eq27Cell& c = s.map[b];
-        js << (b ? ", " : "") << "{\"alpha\": " << json_number(c.block.alpha) << ", \"p\": " << json_number(c.block.p)
-           << ", \"records\": " << c.records << ", \"censored\": " << c.censored
-           << ", \"non_conservative\": " << counts_json(c.non_conservative) << "}";
-    }
-    js << "]";
-    return js.str();
+        records.push_back({{"file", files[r]}, {"sha256", s.identities[r]}, {"non_conservative", by_record[r]}});
+    Json& map = o["map"] = Json::array();
+    for (const studies::Eq27Cell& c : s.map)
+        map.push_back({{"alpha", c.block.alpha},
+                       {"p", c.block.p},
+                       {"records", c.records},
+                       {"censored", c.censored},
+                       {"non_conservative", c.non_conservative}});
 }
 
 void print_json(const std::vector<std::string>& files, const studies::Eq27Options& o, const Eq27ByCapacity& by) {
     const Eq27Study& s = by.first_overturning;
-    std::ostringstream js;
-    js << "{\"model\": " << json_string(o.ida.describe_model()) << ", \"ida\": " << json_string(o.ida.describe_grid())
-       << ", \"q_max\": " << json_number(o.ida.q_max);
-    if (refined(o))
-        js << ", \"method\": \"refine\", \"width\": " << json_number(o.ida.width)
-           << ", \"robust_width\": " << json_number(o.ida.robust_width)
-           << ", \"refine_note\": " << json_string(studies::eq27_refine_note(o.ida));
-    js << ", \"blocks\": " << json_string(o.grid.describe())
-       << ", \"verdict\": " << json_string(kEq27Verdict) << ", \"wilson\": {\"level\": " << json_number(s.level)
-       << ", \"note\": " << json_string(kEq27WilsonNote) << "}, \"bootstrap_run\": " << (bootstrapped(s) ? "true" : "false")
-       << ", \"bootstrap\": ";
-    if (bootstrapped(s))
-        js << "{\"over\": \"records\", \"resamples\": " << s.bootstrap.resamples << ", \"seed\": " << s.bootstrap.seed
-           << ", \"level\": " << json_number(s.bootstrap.level) << "}";
-    else js << "null, \"bootstrap_note\": " << json_string(kEq27NoBootstrap);
-    js << ", \"records\": " << s.records << ", \"files\": [";
-    for (std::size_t i = 0; i < files.size(); ++i) js << (i ? ", " : "") << json_string(files[i]);
-    js << "], \"cases\": " << s.cases.size() << ", ";
+    Json js;
+    js["model"] = o.ida.describe_model();
+    js["ida"] = o.ida.describe_grid();
+    js["q_max"] = o.ida.q_max;
+    if (refined(o)) {
+        js["method"] = "refine";
+        js["width"] = o.ida.width;
+        js["robust_width"] = o.ida.robust_width;
+        js["refine_note"] = studies::eq27_refine_note(o.ida);
+    }
+    js["blocks"] = o.grid.describe();
+    js["verdict"] = kEq27Verdict;
+    js["wilson"] = {{"level", s.level}, {"note", kEq27WilsonNote}};
+    js["bootstrap_run"] = bootstrapped(s);
+    if (bootstrapped(s)) {
+        js["bootstrap"] = {{"over", "records"}, {"resamples", s.bootstrap.resamples}, {"seed", s.bootstrap.seed},
+                           {"level", s.bootstrap.level}};
+    } else {
+        js["bootstrap"] = nullptr;
+        js["bootstrap_note"] = kEq27NoBootstrap;
+    }
+    js["records"] = s.records;
+    js["files"] = files;
+    js["cases"] = s.cases.size();
     // The refine method: the members as the grid's under the first overturning
     // (the IDA's point, either method), the robust collapse's in an object.
-    if (refined(o))
-        js << "\"capacity\": " << json_string(kFirstOverturning.key)
-           << ", \"capacity_note\": " << json_string(kFirstOverturning.note) << ", ";
-    js << study_json(files, s);
-    if (refined(o))
-        js << ", " << json_string(kRobustCollapse.key) << ": {\"capacity_note\": " << json_string(kRobustCollapse.note)
-           << ", " << study_json(files, by.first_robust_collapse) << "}";
-    js << "}\n";
-    std::cout << js.str();
+    if (refined(o)) {
+        js["capacity"] = kFirstOverturning.key;
+        js["capacity_note"] = kFirstOverturning.note;
+    }
+    add_study(js, files, s);
+    if (refined(o)) {
+        Json robust = {{"capacity_note", kRobustCollapse.note}};
+        add_study(robust, files, by.first_robust_collapse);
+        js[kRobustCollapse.key] = robust;
+    }
+    std::cout << json_text(js) << "\n";
 }
 
 void write_csv(const std::string& csv, const std::vector<std::string>& files, const studies::Eq27Options& o,

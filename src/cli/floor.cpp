@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/help.hpp"
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "harness/atomic_file.hpp"
 #include "harness/table.hpp"
@@ -71,18 +72,23 @@ void print_summary(const std::string& path, const records::Record& ground, const
     const double ratio = pga_g > 0 ? pga_f / pga_g : NAN;  // a ground at rest has no ratio
     const double end = std::stod(floor.header.at("end_amplitude_m_s2"));
     if (json) {
-        std::cout << "{\"file\": " << json_string(path) << ", \"ground_name\": " << json_string(ground.name)
-                  << ", \"ground_format\": " << json_string(ground.format) << ", \"name\": " << json_string(floor.name)
-                  << ", \"format\": " << json_string(floor.format) << ", \"samples\": " << floor.accel.size()
-                  << ", \"dt\": " << json_number(floor.dt) << ", \"model\": {\"T1_s\": " << json_number(m.T1)
-                  << ", \"zeta\": " << json_number(m.zeta) << ", \"G\": " << json_number(m.G)
-                  << "}, \"method\": " << json_string(floor.header.at("method"))
-                  << ", \"ground_pga_ms2\": " << json_number(pga_g) << ", \"floor_pga_ms2\": " << json_number(pga_f)
-                  << ", \"pga_ratio\": " << json_number(ratio) << ", \"end_amplitude_ms2\": " << json_number(end)
-                  << ", \"warnings\": [";
-        bool first = true;
-        for (const std::string& w : records::warnings_of(floor)) std::cout << (first ? "" : ", ") << json_string(w), first = false;
-        std::cout << "], \"output\": " << (output.empty() ? "null" : json_string(output)) << "}\n";
+        Json o;
+        o["file"] = path;
+        o["ground_name"] = ground.name;
+        o["ground_format"] = ground.format;
+        o["name"] = floor.name;
+        o["format"] = floor.format;
+        o["samples"] = floor.accel.size();
+        o["dt"] = floor.dt;
+        o["model"] = {{"T1_s", m.T1}, {"zeta", m.zeta}, {"G", m.G}};
+        o["method"] = floor.header.at("method");
+        o["ground_pga_ms2"] = pga_g;
+        o["floor_pga_ms2"] = pga_f;
+        o["pga_ratio"] = ratio;  // null for a ground at rest
+        o["end_amplitude_ms2"] = end;
+        o["warnings"] = records::warnings_of(floor);
+        o["output"] = output.empty() ? Json(nullptr) : Json(output);
+        std::cout << json_text(o) << "\n";
         return;
     }
     std::printf("floor of %s (%s): %zu samples, dt = %g s, %.2f s\n", ground.name.c_str(), ground.format.c_str(),

@@ -9,7 +9,6 @@
 #include <exception>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -23,6 +22,7 @@
 #include "cli/help.hpp"
 #include "cli/nrml_output.hpp"
 #include "cli/imperfection.hpp"
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
@@ -216,134 +216,131 @@ void print_text(const std::vector<std::string>& files, const studies::FragilityS
     }
 }
 
-std::string bracket_json(bool has, const studies::Bracket& b) {
-    if (!has) return "null";
-    return "{\"q_safe\": " + json_number(b.safe) + ", \"q_collapse\": " + json_number(b.collapse) + "}";
+Json bracket_json(bool has, const studies::Bracket& b) {
+    if (!has) return nullptr;
+    return {{"q_safe", b.safe}, {"q_collapse", b.collapse}};
 }
 
-std::string range_json(const studies::Range& r) { return "[" + json_number(r.lo) + ", " + json_number(r.hi) + "]"; }
+Json range_json(const studies::Range& r) { return Json::array({r.lo, r.hi}); }
 
-std::string bootstrap_json(bool bootstrapped, const studies::BootstrapInterval& b) {
-    if (!bootstrapped) return "null";
-    return "{\"resamples\": " + std::to_string(b.resamples) + ", \"seed\": " + std::to_string(b.seed) +
-           ", \"level\": " + json_number(b.level) + ", \"median\": " + range_json(b.median) +
-           ", \"beta\": " + range_json(b.beta) + "}";
+Json bootstrap_json(bool bootstrapped, const studies::BootstrapInterval& b) {
+    if (!bootstrapped) return nullptr;
+    return {{"resamples", b.resamples}, {"seed", b.seed}, {"level", b.level},
+            {"median", range_json(b.median)}, {"beta", range_json(b.beta)}};
 }
 
-std::string lognormal_json(const studies::LognormalFragility& fit, bool bootstrapped,
-                           const studies::BootstrapInterval& interval) {
-    return "{\"median\": " + json_number(fit.median) + ", \"beta\": " + json_number(fit.beta) +
-           ", \"collapsed\": " + std::to_string(fit.collapsed) + ", \"censored\": " + std::to_string(fit.censored) +
-           ", \"bootstrap\": " + bootstrap_json(bootstrapped, interval) + "}";
+Json lognormal_json(const studies::LognormalFragility& fit, bool bootstrapped, const studies::BootstrapInterval& interval) {
+    return {{"median", fit.median}, {"beta", fit.beta}, {"collapsed", fit.collapsed}, {"censored", fit.censored},
+            {"bootstrap", bootstrap_json(bootstrapped, interval)}};
 }
 
-std::string fit_json(const BlockFragility& f) {
-    return f.fitted ? lognormal_json(f.fit, f.bootstrapped, f.interval) : "null";
-}
+// A capacity's fit, or null beside its no_fit (the reason).
+Json fit_json(const BlockFragility& f) { return f.fitted ? lognormal_json(f.fit, f.bootstrapped, f.interval) : nullptr; }
 
-std::string no_fit_json(bool fitted, const std::string& why) { return fitted ? "null" : json_string(why); }
+Json no_fit_json(bool fitted, const std::string& why) { return fitted ? Json(nullptr) : Json(why); }
 
 // The refine method's three fits, each named by its capacity, and the stripes (issue 39, item 3).
-std::string three_ways_json(const BlockFragility& f) {
+void add_three_ways(Json& o, const BlockFragility& f) {
     const studies::CapacityFit& r = f.robust;
     const studies::StripeFit& s = f.stripes;
-    std::string text = ", \"fits\": {\"first_overturning\": {\"fit\": " + fit_json(f) +
-                       ", \"no_fit\": " + no_fit_json(f.fitted, f.no_fit) + "}, \"first_robust_collapse\": {\"fit\": " +
-                       (r.fitted ? lognormal_json(r.fit, r.bootstrapped, r.interval) : "null") +
-                       ", \"no_fit\": " + no_fit_json(r.fitted, r.no_fit) + "}, \"stripes\": {\"fit\": ";
+    Json stripe_fit = nullptr;
     if (s.fitted)
-        text += "{\"median\": " + json_number(s.fit.median) + ", \"beta\": " + json_number(s.fit.beta) +
-                ", \"stripes\": " + std::to_string(s.stripes.size()) + ", \"records\": " +
-                std::to_string(s.shares.share.size()) + ", \"bootstrap\": " + bootstrap_json(s.bootstrapped, s.interval) + "}";
-    else
-        text += "null";
-    text += ", \"no_fit\": " + no_fit_json(s.fitted, s.no_fit) + "}}, \"stripes\": [";
+        stripe_fit = {{"median", s.fit.median}, {"beta", s.fit.beta}, {"stripes", s.stripes.size()},
+                      {"records", s.shares.share.size()}, {"bootstrap", bootstrap_json(s.bootstrapped, s.interval)}};
+    o["fits"] = {
+        {"first_overturning", {{"fit", fit_json(f)}, {"no_fit", no_fit_json(f.fitted, f.no_fit)}}},
+        {"first_robust_collapse",
+         {{"fit", r.fitted ? lognormal_json(r.fit, r.bootstrapped, r.interval) : Json(nullptr)},
+          {"no_fit", no_fit_json(r.fitted, r.no_fit)}}},
+        {"stripes", {{"fit", stripe_fit}, {"no_fit", no_fit_json(s.fitted, s.no_fit)}}}};
+    Json& stripes = o["stripes"] = Json::array();
     for (std::size_t j = 0; j < s.stripes.size(); ++j)
-        text += std::string(j ? ", " : "") + "{\"q\": " + json_number(s.stripes[j].q) + ", \"from\": " +
-                json_number(s.shares.from[j]) + ", \"to\": " + json_number(s.shares.to[j]) +
-                ", \"share\": " + json_number(s.stripes[j].overturned / s.stripes[j].records) + "}";
-    return text + "]";
+        stripes.push_back({{"q", s.stripes[j].q}, {"from", s.shares.from[j]}, {"to", s.shares.to[j]},
+                           {"share", s.stripes[j].overturned / s.stripes[j].records}});
 }
 
-std::string point_json(const studies::IdaPoint& p) {
-    return "{\"q\": " + json_number(p.q) + ", \"collapsed\": " + (p.collapsed ? "true" : "false");
+// A point's members; its object may take more (refine's bracket and check).
+Json point_json(const studies::IdaPoint& p) { return {{"q", p.q}, {"collapsed", p.collapsed}}; }
+
+Json check_json(const studies::IdaInterval& in) {
+    return {{"confirmation", studies::confirmation_name(in.lower_check.confirmation)}, {"detail", in.lower_check.detail}};
 }
 
 // The refine method's fields of a record (issue 39): first_overturning with
 // its bracket and check, first_robust_collapse, every band's overturned share.
-std::string refine_json(const Ida& ida) {
+void add_refined(Json& o, const Ida& ida) {
     const bool bracketed = ida.first_overturning.collapsed && ida.intervals.front().has_lower;
-    std::string text = ", \"first_overturning\": " + point_json(ida.first_overturning) +
-                       ", \"bracket\": " + bracket_json(bracketed, bracketed ? ida.intervals.front().lower : studies::Bracket{}) +
-                       ", \"check\": " +
-                       (bracketed ? "{\"confirmation\": " +
-                                        json_string(studies::confirmation_name(ida.intervals.front().lower_check.confirmation)) +
-                                        ", \"detail\": " + json_string(ida.intervals.front().lower_check.detail) + "}"
-                                  : std::string("null")) +
-                       "}, \"first_robust_collapse\": " + point_json(ida.first_robust_collapse) + "}, \"bands\": " + bands_json(ida.bands);
-    return text + ", \"method\": \"refine\", \"samples\": " + std::to_string(ida.samples) +
-           ", \"accepted\": " + std::to_string(ida.accepted) + ", \"at_width\": " + std::to_string(ida.at_width) +
-           ", \"with_margins\": " + (ida.with_margins ? "true" : "false") +
-           ", \"unguaranteed_from\": " + json_number(ida.unguaranteed_from);
+    Json first = point_json(ida.first_overturning);
+    first["bracket"] = bracket_json(bracketed, bracketed ? ida.intervals.front().lower : studies::Bracket{});
+    first["check"] = bracketed ? check_json(ida.intervals.front()) : Json(nullptr);
+    o["first_overturning"] = first;
+    o["first_robust_collapse"] = point_json(ida.first_robust_collapse);
+    o["bands"] = bands_json(ida.bands);
+    o["method"] = "refine";
+    o["samples"] = ida.samples;
+    o["accepted"] = ida.accepted;
+    o["at_width"] = ida.at_width;
+    o["with_margins"] = ida.with_margins;
+    o["unguaranteed_from"] = ida.unguaranteed_from;
+}
+
+Json record_json(const std::string& file, const std::string& identity, const Ida& ida, bool refine) {
+    Json o;
+    o["file"] = file;
+    o["sha256"] = identity;
+    o["q_input"] = ida.q_input;
+    o["q"] = ida.point.q;
+    o["collapsed"] = ida.point.collapsed;
+    o["point_check"] = ida.point.collapsed && ida.intervals.front().has_lower ? check_json(ida.intervals.front()) : Json(nullptr);
+    o["simulations"] = ida.simulations;
+    o["check_simulations"] = ida.check_simulations;
+    Json& intervals = o["intervals"] = Json::array();
+    for (const IdaInterval& in : ida.intervals)
+        intervals.push_back({{"from", in.from}, {"to", in.to}, {"lower", bracket_json(in.has_lower, in.lower)},
+                             {"upper", bracket_json(in.has_upper, in.upper)}});
+    if (refine) add_refined(o, ida);
+    return o;
+}
+
+Json fragility_block_json(const std::vector<std::string>& files, const studies::FragilityStudyOptions& o, const BlockFragility& f) {
+    Json js;
+    js["alpha"] = f.block.alpha;
+    js["p"] = f.block.p;
+    if (!f.block.built.empty()) js["built"] = f.block.built;
+    // An imperfect block's grid may start below q_min, where it lifts.
+    if (o.ida.model.imperfection.any()) {
+        const double start = o.ida.q_start(f.block.alpha, f.block.p);
+        js["q_start"] = start;
+        if (refined(o)) js["stripe_half_width"] = studies::stripe_half_width(start, o.ida.q_max, o.ida.points);
+    }
+    Json& records = js["records"] = Json::array();
+    for (std::size_t k = 0; k < files.size(); ++k)
+        records.push_back(record_json(files[k], f.identities[k], f.idas[k], refined(o)));
+    js["fit"] = fit_json(f);
+    js["no_fit"] = no_fit_json(f.fitted, f.no_fit);
+    Json& empirical = js["empirical"] = Json::array();
+    for (const auto& point : f.empirical) empirical.push_back({{"q", point.q}, {"share", point.share}});
+    if (f.three_ways) add_three_ways(js, f);
+    return js;
 }
 
 void print_json(const std::vector<std::string>& files, const studies::FragilityStudyOptions& o,
                 const std::vector<BlockFragility>& study) {
-    std::ostringstream js;
-    js << "{\"model\": " << json_string(o.ida.describe_model()) << ", \"grid\": {\"q_min\": " << json_number(o.ida.q_min)
-       << ", \"q_max\": " << json_number(o.ida.q_max) << ", \"points\": " << o.ida.points
-       << ", \"rel_tol\": " << json_number(o.ida.rel_tol) << ", \"note\": " << json_string(grid_note(o));
-    if (refined(o))
-        js << ", \"method\": \"refine\", \"width\": " << json_number(o.ida.width)
-           << ", \"robust_width\": " << json_number(o.ida.robust_width) << ", \"fit_capacity\": \"first_overturning\""
-           << ", \"stripe_half_width\": " << json_number(studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points))
-           << ", \"refine_note\": " << json_string(o.describe_fits());
-    js << "}, \"blocks\": [";
-    for (std::size_t b = 0; b < study.size(); ++b) {
-        const BlockFragility& f = study[b];
-        js << (b ? ", " : "") << "{\"alpha\": " << json_number(f.block.alpha) << ", \"p\": " << json_number(f.block.p)
-           << (f.block.built.empty() ? "" : ", \"built\": " + json_string(f.block.built));
-        // An imperfect block's grid may start below q_min, where it lifts.
-        if (o.ida.model.imperfection.any()) {
-            const double start = o.ida.q_start(f.block.alpha, f.block.p);
-            js << ", \"q_start\": " << json_number(start);
-            if (refined(o))
-                js << ", \"stripe_half_width\": " << json_number(studies::stripe_half_width(start, o.ida.q_max, o.ida.points));
-        }
-        js << ", \"records\": [";
-        for (std::size_t k = 0; k < files.size(); ++k) {
-            const Ida& ida = f.idas[k];
-            js << (k ? ", " : "") << "{\"file\": " << json_string(files[k]) << ", \"sha256\": "
-               << json_string(f.identities[k]) << ", \"q_input\": " << json_number(ida.q_input)
-               << ", \"q\": " << json_number(ida.point.q) << ", \"collapsed\": " << (ida.point.collapsed ? "true" : "false")
-               << ", \"point_check\": "
-               << (ida.point.collapsed && ida.intervals.front().has_lower
-                       ? "{\"confirmation\": " + json_string(studies::confirmation_name(ida.intervals.front().lower_check.confirmation)) +
-                             ", \"detail\": " + json_string(ida.intervals.front().lower_check.detail) + "}"
-                       : std::string("null"))
-               << ", \"simulations\": " << ida.simulations << ", \"check_simulations\": " << ida.check_simulations
-               << ", \"intervals\": [";
-            for (std::size_t i = 0; i < ida.intervals.size(); ++i) {
-                const IdaInterval& in = ida.intervals[i];
-                js << (i ? ", " : "") << "{\"from\": " << json_number(in.from) << ", \"to\": " << json_number(in.to)
-                   << ", \"lower\": " << bracket_json(in.has_lower, in.lower)
-                   << ", \"upper\": " << bracket_json(in.has_upper, in.upper) << "}";
-            }
-            js << "]";
-            if (refined(o)) js << refine_json(ida);
-            js << "}";
-        }
-        js << "], \"fit\": " << fit_json(f) << ", \"no_fit\": " << (f.fitted ? "null" : json_string(f.no_fit))
-           << ", \"empirical\": [";
-        for (std::size_t i = 0; i < f.empirical.size(); ++i)
-            js << (i ? ", " : "") << "{\"q\": " << json_number(f.empirical[i].q)
-               << ", \"share\": " << json_number(f.empirical[i].share) << "}";
-        js << "]";
-        if (f.three_ways) js << three_ways_json(f);
-        js << "}";
+    Json js;
+    js["model"] = o.ida.describe_model();
+    Json& grid = js["grid"] = {{"q_min", o.ida.q_min}, {"q_max", o.ida.q_max}, {"points", o.ida.points},
+                               {"rel_tol", o.ida.rel_tol}, {"note", grid_note(o)}};
+    if (refined(o)) {
+        grid["method"] = "refine";
+        grid["width"] = o.ida.width;
+        grid["robust_width"] = o.ida.robust_width;
+        grid["fit_capacity"] = "first_overturning";
+        grid["stripe_half_width"] = studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points);
+        grid["refine_note"] = o.describe_fits();
     }
-    js << "]}\n";
-    std::cout << js.str();
+    Json& blocks = js["blocks"] = Json::array();
+    for (const BlockFragility& f : study) blocks.push_back(fragility_block_json(files, o, f));
+    std::cout << json_text(js) << "\n";
 }
 
 void write_csv(const std::string& csv, const std::vector<std::string>& files, const studies::FragilityStudyOptions& o,

@@ -49,12 +49,12 @@ std::vector<studies::BlockShape> study_blocks(const Args& a, const std::string& 
     }
 }
 
-std::string block_json(const GivenBlock& b) {
+void add_block(Json& o, const GivenBlock& b) {
     const bool sized = b.sized();
-    return std::string("\"given\": \"") + dynamics::given_name(b) + "\", \"thickness\": " +
-           (sized ? json_number(b.thickness) : std::string("null")) +
-           ", \"height\": " + (sized ? json_number(b.height) : std::string("null")) +
-           ", \"R\": " + (sized ? json_number(b.block.R) : std::string("null"));
+    o["given"] = dynamics::given_name(b);
+    o["thickness"] = sized ? Json(b.thickness) : Json(nullptr);
+    o["height"] = sized ? Json(b.height) : Json(nullptr);
+    o["R"] = sized ? Json(b.block.R) : Json(nullptr);
 }
 
 }  // namespace rocking::cli

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "dynamics/block_geometry.hpp"
 #include "studies/ida.hpp"
@@ -26,9 +27,9 @@ GivenBlock block_option(const Args& a);
 // each p in (0.01, 1000) rad/s); --block is refused beside --alpha or --p.
 std::vector<studies::BlockShape> study_blocks(const Args& a, const std::string& flag = "--block");
 
-// The JSON members of the block's geometry, without braces: "given":
-// "dimensions", "alpha and height" or "alpha and p", then "thickness",
-// "height" and "R" in m (null where it is "alpha and p": the size is not known).
-std::string block_json(const GivenBlock& b);
+// The block's geometry as members of o: "given": "dimensions", "alpha and
+// height" or "alpha and p", then "thickness", "height" and "R" in m (null
+// where it is "alpha and p": the size is not known).
+void add_block(Json& o, const GivenBlock& b);
 
 }  // namespace rocking::cli

@@ -367,6 +367,8 @@ alpha or a record given twice (the same samples, whatever the path) is refused.
 
 const char* kBatch = R"(
 rocking batch MANIFEST [--jobs N] [--output FILE] [--resume] [--quiet]
+rocking batch MANIFEST --shard I/N --output FILE [--jobs N] [--resume] [--quiet]
+rocking batch join SHARD... --output FILE
 mpirun -np K rocking batch MANIFEST --output FILE [--resume]
 )";
 const char* kBatchDetails = R"(
@@ -398,6 +400,10 @@ lines are skipped; an empty cell takes the default of the command that runs that
   --resume          completes an interrupted --output FILE (Ctrl-C, SIGTERM, a kill), refusing a
                     changed manifest
   --quiet           no progress on standard error
+  --shard I/N       run only the I-th of N consecutive parts of the jobs (a scheduler's job array:
+                    one shard a task), into its own FILE, resumable; not under mpirun
+  join SHARD...     the results of one run from the N shards' complete files, in any order:
+                    the same bytes as a run without --shard (--output FILE, required)
   (--json is refused: the results of a batch are CSV.)
 )";
 

@@ -55,26 +55,26 @@ std::string imperfection_flags_text(const Args& a) {
 namespace {
 
 // Its keys as the inputs' (Python's imperfection={...}, the batch columns): fc in MPa.
-std::string inputs_json(const dynamics::Imperfection& imp) {
-    return "\"lean\": " + json_number(imp.lean) + ", \"out_of_plumb\": " + json_number(imp.out_of_plumb) +
-           ", \"fc\": " + json_number(imp.fc / 1e6) + ", \"density\": " + json_number(imp.density);
+Json inputs_json(const dynamics::Imperfection& imp) {
+    return {{"lean", imp.lean}, {"out_of_plumb", imp.out_of_plumb}, {"fc", imp.fc / 1e6}, {"density", imp.density}};
 }
 
 }  // namespace
 
-std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution) {
+Json imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution) {
     const dynamics::ImperfectGeometry g = dynamics::imperfect_geometry(base, imp);
     auto corner = [&](const dynamics::CornerGeometry& k) {
-        return "{\"alpha\": " + json_number(k.alpha) + ", \"p\": " + json_number(k.p) + ", \"R\": " + json_number(k.R) +
-               ", \"restitution_onto\": " + json_number(std::isnan(restitution) ? k.restitution_onto : restitution) + "}";
+        return Json{{"alpha", k.alpha}, {"p", k.p}, {"R", k.R},
+                    {"restitution_onto", std::isnan(restitution) ? k.restitution_onto : restitution}};
     };
-    return "\"imperfection\": {" + inputs_json(imp) + ", \"sigma0_kpa\": " + json_number(g.sigma0 / 1e3) +
-           ", \"setback_m\": " + json_number(g.setback) + ", \"corner_plus\": " + corner(g.plus) +
-           ", \"corner_minus\": " + corner(g.minus) + "}";
+    Json o = inputs_json(imp);
+    o["sigma0_kpa"] = g.sigma0 / 1e3;
+    o["setback_m"] = g.setback;
+    o["corner_plus"] = corner(g.plus);
+    o["corner_minus"] = corner(g.minus);
+    return o;
 }
 
-std::string imperfection_inputs_json(const dynamics::Imperfection& imp) {
-    return "\"imperfection\": {" + inputs_json(imp) + "}";
-}
+Json imperfection_inputs_json(const dynamics::Imperfection& imp) { return inputs_json(imp); }
 
 }  // namespace rocking::cli

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "dynamics/block_geometry.hpp"
 #include "dynamics/imperfect_block.hpp"
@@ -36,14 +37,14 @@ void imperfection_into(const Args& a, records::CollapseOptions& model);
 dynamics::Model imperfect_model_option(const Args& a, dynamics::Equation equation, const dynamics::GivenBlock& given,
                                        double restitution);
 
-// The JSON member "imperfection": {...} for these imperfections on the
+// The JSON member "imperfection"'s value for these imperfections on the
 // block (alpha, p): each corner's alpha, p, R and restitution onto it, the
 // setback and its stress.
 // restitution: NaN (each corner's own) or the factor given on both.
-std::string imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution);
+Json imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution);
 
 // The same member with the imperfections alone, for a search over blocks of
 // many sizes (the corners of a setback change with the size).
-std::string imperfection_inputs_json(const dynamics::Imperfection& imp);
+Json imperfection_inputs_json(const dynamics::Imperfection& imp);
 
 }  // namespace rocking::cli

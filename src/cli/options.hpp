@@ -1,5 +1,5 @@
-// The command line's shared pieces: options, their errors, the inputs they
-// name, and JSON text.  Each subcommand is one file (q.cpp, response.cpp, ...)
+// The command line's shared pieces: options, their errors and the inputs they
+// name (JSON: json_text.hpp).  Each subcommand is one file (q.cpp, response.cpp, ...)
 // over the library; main.cpp only dispatches.
 #pragma once
 
@@ -121,8 +121,6 @@ std::string significant(double v, int n);
 records::HalfPeriods half_periods_of(const records::Record& r, const std::string& path);
 // Refuses, naming the file, a record whose velocity (sum of |a| dt) overflows a double.
 void refuse_overflowing_velocity(const records::Record& r, const std::string& path);
-std::string json_string(const std::string& s);
-std::string json_number(double v);
 records::Record load_record(const std::string& path, const Args& a, const std::string& dt_flag = "--dt");
 
 // The subcommands, one file each; argv[1] is the subcommand's name.
@@ -138,5 +136,6 @@ int cmd_spectrum(int argc, char** argv);
 int cmd_fragility(int argc, char** argv);
 int cmd_eq27(int argc, char** argv);
 int cmd_batch(int argc, char** argv);
+int cmd_batch_join(int argc, char** argv);
 
 }  // namespace rocking::cli

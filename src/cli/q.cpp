@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "cli/validity.hpp"
 #include "harness/table.hpp"
@@ -22,11 +23,16 @@ int cmd_q(int argc, char** argv) {
     const QFactor r = q_factor(train, x);
     const Excursion e = collapse_excursion(train, x);
     if (a.json) {
-        std::cout << "{\"input\": " << json_string(train.name()) << ", \"pulses\": " << train.size()
-                  << ", \"x\": " << json_number(x) << ", \"q\": " << json_number(r.q)
-                  << ", \"condition\": " << json_number(r.condition)
-                  << ", \"equation\": " << json_string(equation) << ", \"model\": " << json_string(kModel)
-                  << json_validity(e) << "}\n";
+        Json o;
+        o["input"] = train.name();
+        o["pulses"] = train.size();
+        o["x"] = x;
+        o["q"] = r.q;
+        o["condition"] = r.condition;
+        o["equation"] = equation;
+        o["model"] = kModel;
+        add_validity(o, e);
+        std::cout << json_text(o) << "\n";
     } else {
         std::printf("q = %.10g\n", r.q);
         std::printf("  input %s (%zu pulses, t_fin = %g to), x = p*to = %g, %s\n", train.name().c_str(), train.size(),

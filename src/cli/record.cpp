@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/help.hpp"
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "harness/table.hpp"
 
@@ -27,17 +28,22 @@ int cmd_record(int argc, char** argv) {
     const records::Record r = load_record(path, a);
     const records::HalfPeriods h = half_periods_of(r, path);
     if (a.json) {
-        std::cout << "{\"file\": " << json_string(path) << ", \"format\": " << json_string(r.format)
-                  << ", \"name\": " << json_string(r.name) << ", \"samples\": " << r.accel.size()
-                  << ", \"dt\": " << json_number(r.dt) << ", \"pga_ms2\": " << json_number(h.pga)
-                  << ", \"pgv_ms\": " << json_number(h.pgv) << ", \"amax_ms\": " << json_number(h.amax)
-                  << ", \"to\": [";
-        for (int k = 0; k < 11; ++k) std::cout << (k ? ", " : "") << json_number(h.to[k]);
-        std::cout << "], \"to_at_band_edge\": [";
-        for (int k = 0, listed = 0; k < 4; ++k)
-            if (h.cwt_at_band_edge[k]) std::cout << (listed++ ? ", " : "") << 8 + k;
-        std::cout << "], \"cwt_band_hz\": [" << json_number(h.cwt_band_hz[0]) << ", "
-                  << json_number(h.cwt_band_hz[1]) << "]}\n";
+        Json o;
+        o["file"] = path;
+        o["format"] = r.format;
+        o["name"] = r.name;
+        o["samples"] = r.accel.size();
+        o["dt"] = r.dt;
+        o["pga_ms2"] = h.pga;
+        o["pgv_ms"] = h.pgv;
+        o["amax_ms"] = h.amax;
+        Json& to = o["to"] = Json::array();
+        for (int k = 0; k < 11; ++k) to.push_back(h.to[k]);
+        Json& at_edge = o["to_at_band_edge"] = Json::array();  // which of to_8..to_11
+        for (int k = 0; k < 4; ++k)
+            if (h.cwt_at_band_edge[k]) at_edge.push_back(8 + k);
+        o["cwt_band_hz"] = Json::array({h.cwt_band_hz[0], h.cwt_band_hz[1]});
+        std::cout << json_text(o) << "\n";
     } else {
         std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,
                     r.duration());

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "cli/validity.hpp"
 #include "harness/table.hpp"
@@ -40,29 +41,29 @@ int cmd_response(int argc, char** argv) {
     const double t_end = last < steps ? train.t_fin() * (last + 1) / steps : NAN;
     const std::string why = "theta/alpha leaves the double range (beyond 1.8e308) on the linearised equation";
     if (a.json) {
-        std::cout << "{\"input\": " << json_string(train.name()) << ", \"x\": " << json_number(x)
-                  << ", \"q\": " << json_number(q) << ", \"at_collapse_q\": " << (at_collapse ? "true" : "false")
-                  << ", \"model\": " << json_string(kModel) << json_validity(e)
-                  << ", \"rows_complete\": " << (last < steps ? "false" : "true") << ", \"rows_end_at\": "
-                  << (last < steps ? json_number(t_end) : std::string("null"))
-                  << ", \"rows_end_reason\": " << (last < steps ? json_string(why) : std::string("null"))
-                  << ", \"samples\": [";
-    } else {
-        std::printf("# %s, x = %g, q = %.10g%s; %s\n", train.name().c_str(), x, q,
-                    at_collapse ? " (the collapse q, evaluated exactly)" : "", kModel);
-        print_validity(e, "# ");
-        if (last < steps) std::printf("# rows end before t/to = %.6g: %s\n", t_end, why.c_str());
-        std::printf("# t/to,theta/alpha,theta'/(alpha p)\n");
+        Json o;
+        o["input"] = train.name();
+        o["x"] = x;
+        o["q"] = q;
+        o["at_collapse_q"] = at_collapse;
+        o["model"] = kModel;
+        add_validity(o, e);
+        o["rows_complete"] = last == steps;
+        o["rows_end_at"] = last < steps ? Json(t_end) : Json(nullptr);
+        o["rows_end_reason"] = last < steps ? Json(why) : Json(nullptr);
+        Json& samples = o["samples"] = Json::array();
+        for (int k = 0; k <= last; ++k)
+            samples.push_back(Json::array({train.t_fin() * k / steps, rows[k].phi, rows[k].dphi}));
+        std::cout << json_text(o) << "\n";
+        return 0;
     }
-    for (int k = 0; k <= last; ++k) {
-        const double tau = train.t_fin() * k / steps;
-        const ResponseState& s = rows[k];
-        if (a.json)
-            std::cout << (k ? ", " : "") << "[" << json_number(tau) << ", " << json_number(s.phi)
-                      << ", " << json_number(s.dphi) << "]";
-        else std::printf("%.6g,%.12g,%.12g\n", tau, s.phi, s.dphi);
-    }
-    if (a.json) std::cout << "]}\n";
+    std::printf("# %s, x = %g, q = %.10g%s; %s\n", train.name().c_str(), x, q,
+                at_collapse ? " (the collapse q, evaluated exactly)" : "", kModel);
+    print_validity(e, "# ");
+    if (last < steps) std::printf("# rows end before t/to = %.6g: %s\n", t_end, why.c_str());
+    std::printf("# t/to,theta/alpha,theta'/(alpha p)\n");
+    for (int k = 0; k <= last; ++k)
+        std::printf("%.6g,%.12g,%.12g\n", train.t_fin() * k / steps, rows[k].phi, rows[k].dphi);
     return 0;
 }
 

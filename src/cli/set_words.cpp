@@ -31,17 +31,14 @@ std::string bands_summary(const std::vector<studies::Band>& bands, const char* v
     return text + "; each band's share in --json and --output";
 }
 
-std::string bands_json(const std::vector<studies::Band>& bands) {
-    std::string text = "[";
-    for (std::size_t i = 0; i < bands.size(); ++i)
-        text += std::string(i ? ", " : "") + "{\"from\": " + json_number(bands[i].from) +
-                ", \"to\": " + json_number(bands[i].to) + ", \"share\": " + json_number(bands[i].share) + "}";
-    return text + "]";
+Json bands_json(const std::vector<studies::Band>& bands) {
+    Json list = Json::array();
+    for (const studies::Band& b : bands) list.push_back({{"from", b.from}, {"to", b.to}, {"share", b.share}});
+    return list;
 }
 
-std::string nearest_json(const studies::SpectrumFirst& f, double height) {
-    return f.found ? "{\"found\": true, \"p\": " + json_number(f.p) + ", \"height\": " + json_number(height) + "}"
-                   : std::string("{\"found\": false}");
+Json nearest_json(const studies::SpectrumFirst& f, double height) {
+    return f.found ? Json{{"found", true}, {"p", f.p}, {"height", height}} : Json{{"found", false}};
 }
 
 }  // namespace rocking::cli

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/json_text.hpp"
 #include "studies/overturning_set.hpp"
 #include "studies/spectrum.hpp"
 
@@ -18,10 +19,10 @@ std::string bands_text(const std::vector<studies::Band>& bands);
 std::string bands_summary(const std::vector<studies::Band>& bands, const char* variable);
 
 // [{"from": f, "to": t, "share": s}, ...] for every band, zeros included.
-std::string bands_json(const std::vector<studies::Band>& bands);
+Json bands_json(const std::vector<studies::Band>& bands);
 
 // A p of the set beside a marked block, with the height of the block of its
 // alpha there: {"found": true, "p": p, "height": h}, or {"found": false}.
-std::string nearest_json(const studies::SpectrumFirst& f, double height);
+Json nearest_json(const studies::SpectrumFirst& f, double height);
 
 }  // namespace rocking::cli

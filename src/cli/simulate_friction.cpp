@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/geometry.hpp"
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "cli/simulate_friction.hpp"
 #include "dynamics/sliding/sliding_simulate.hpp"
@@ -71,31 +72,39 @@ int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::Gr
     const bool collapse = r.collapse(criterion, alpha);
     auto regime_time = [&](Regime k) { return r.time_in[static_cast<int>(k)]; };
     if (a.json) {
-        auto b = [](bool v) { return v ? "true" : "false"; };
-        std::cout << "{\"model\": " << json_string(model_text(mu, criterion, o.rtol)) << ", \"friction\": " << json_number(mu)
-                  << ", \"alpha\": " << json_number(alpha) << ", \"p\": " << json_number(p)
-                  << ", \"R_from_p\": " << json_number(block.R) << ", " << block_json(given)
-                  << ", \"input\": " << json_string(input.describe()) << ", \"solver\": " << json_string(o.describe())
-                  << ", \"rtol\": " << json_number(o.rtol) << ", \"atol_rad\": " << json_number(o.atol_alpha * alpha)
-                  << ", \"criterion\": " << json_string(criterion_name(criterion)) << ", \"collapse\": " << b(collapse)
-                  << ", \"t_fin\": " << json_number(r.t_fin) << ", \"theta_tfin_over_alpha\": "
-                  << (r.overturned_during_input ? "null" : json_number(r.theta_at_tfin / alpha))
-                  << ", \"max_theta_input_over_alpha\": " << json_number(r.max_abs_theta_input / alpha)
-                  << ", \"overturned\": " << b(r.overturned) << ", \"overturned_during_input\": " << b(r.overturned_during_input)
-                  << ", \"t_overturn\": " << (std::isnan(r.t_overturn) ? "null" : json_number(r.t_overturn))
-                  << ", \"impacts\": " << r.impacts << ", \"slipping_impacts\": " << r.slipping_impacts
-                  << ", \"slip_tfin_m\": " << json_number(r.slip_at_tfin) << ", \"max_slip_m\": " << json_number(r.max_abs_slip)
-                  << ", \"final_slip_m\": " << json_number(r.final_slip) << ", \"time_in\": {\"rest\": "
-                  << json_number(regime_time(Regime::rest)) << ", \"slide\": " << json_number(regime_time(Regime::slide))
-                  << ", \"rock\": " << json_number(regime_time(Regime::rock))
-                  << ", \"slide_rock\": " << json_number(regime_time(Regime::slide_rock)) << "}"
-                  << ", \"energy\": {\"input_work\": " << json_number(r.input_work)
-                  << ", \"friction_loss\": " << json_number(r.friction_loss)
-                  << ", \"impact_loss\": " << json_number(r.impact_loss)
-                  << ", \"balance_error_over_gR\": " << json_number(r.balance_error) << "}"
-                  << ", \"collapse_final_rotation\": " << b(r.collapse(Criterion::final_rotation, alpha))
-                  << ", \"collapse_peak_rotation\": " << b(r.collapse(Criterion::peak_rotation, alpha))
-                  << ", \"collapse_overturning\": " << b(r.collapse(Criterion::overturning, alpha)) << "}\n";
+        Json j;
+        j["model"] = model_text(mu, criterion, o.rtol);
+        j["friction"] = mu;
+        j["alpha"] = alpha;
+        j["p"] = p;
+        j["R_from_p"] = block.R;
+        add_block(j, given);
+        j["input"] = input.describe();
+        j["solver"] = o.describe();
+        j["rtol"] = o.rtol;
+        j["atol_rad"] = o.atol_alpha * alpha;
+        j["criterion"] = criterion_name(criterion);
+        j["collapse"] = collapse;
+        j["t_fin"] = r.t_fin;
+        // A block that fell during the input has no theta(t_fin) (overturned_during_input says why).
+        j["theta_tfin_over_alpha"] = r.overturned_during_input ? Json(nullptr) : Json(r.theta_at_tfin / alpha);
+        j["max_theta_input_over_alpha"] = r.max_abs_theta_input / alpha;
+        j["overturned"] = r.overturned;
+        j["overturned_during_input"] = r.overturned_during_input;
+        j["t_overturn"] = r.t_overturn;  // NaN, so null, where it did not overturn or fell by its energy alone
+        j["impacts"] = r.impacts;
+        j["slipping_impacts"] = r.slipping_impacts;
+        j["slip_tfin_m"] = r.slip_at_tfin;
+        j["max_slip_m"] = r.max_abs_slip;
+        j["final_slip_m"] = r.final_slip;
+        j["time_in"] = {{"rest", regime_time(Regime::rest)}, {"slide", regime_time(Regime::slide)},
+                        {"rock", regime_time(Regime::rock)}, {"slide_rock", regime_time(Regime::slide_rock)}};
+        j["energy"] = {{"input_work", r.input_work}, {"friction_loss", r.friction_loss},
+                       {"impact_loss", r.impact_loss}, {"balance_error_over_gR", r.balance_error}};
+        j["collapse_final_rotation"] = r.collapse(Criterion::final_rotation, alpha);
+        j["collapse_peak_rotation"] = r.collapse(Criterion::peak_rotation, alpha);
+        j["collapse_overturning"] = r.collapse(Criterion::overturning, alpha);
+        std::cout << json_text(j) << "\n";
         return 0;
     }
     std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());

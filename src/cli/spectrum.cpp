@@ -22,6 +22,7 @@
 #include "cli/geometry.hpp"
 #include "cli/help.hpp"
 #include "cli/imperfection.hpp"
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
@@ -201,97 +202,114 @@ void print_text(const std::string& path, const records::Record& r, const Spectru
     }
 }
 
-std::string boundary_json(const Interval& in, bool lower) {
+Json boundary_json(const Interval& in, bool lower) {
     const bool has = lower ? in.has_lower : in.has_upper;
-    if (!has) return "null";
+    if (!has) return nullptr;
     const Boundary& b = lower ? in.lower : in.upper;
-    return "{\"p_safe\": " + json_number(b.p_safe) + ", \"p_collapse\": " + json_number(b.p_collapse) +
-           ", \"confirmation\": " + json_string(studies::confirmation_name(b.confirmation)) +
-           ", \"detail\": " + json_string(b.detail) + "}";
+    return {{"p_safe", b.p_safe}, {"p_collapse", b.p_collapse},
+            {"confirmation", studies::confirmation_name(b.confirmation)}, {"detail", b.detail}};
 }
 
-std::string table1_json(const records::CollapseResult& c) {
-    return "{\"found\": " + std::string(c.found ? "true" : "false") +
-           ", \"p\": " + (c.found ? json_number(c.p) : std::string("null")) +
-           ", \"p_safe\": " + (c.found && !c.below_range() ? json_number(c.p_safe) : std::string("null")) +
-           ", \"below_range\": " + (c.below_range() ? "true" : "false") + "}";
+// As rocking collapse prints it: null where nothing was found, or (p_safe) found at the lowest p.
+Json table1_json(const records::CollapseResult& c) {
+    return {{"found", c.found},
+            {"p", c.found ? Json(c.p) : Json(nullptr)},
+            {"p_safe", c.found && !c.below_range() ? Json(c.p_safe) : Json(nullptr)},
+            {"below_range", c.below_range()}};
 }
 
-// The refine method's fields of one alpha (issue 39).
-std::string refine_json(const Spectrum& sp) {
+// The refine method's fields of one alpha (issue 39), into its object o.
+void add_refined(Json& o, const Spectrum& sp) {
     const bool bracketed = sp.first_overturning.found && sp.intervals.front().has_lower;
-    return ", \"first_overturning\": {\"p\": " + json_number(sp.first_overturning.p) +
-           ", \"found\": " + (sp.first_overturning.found ? "true" : "false") +
-           ", \"boundary\": " + (bracketed ? boundary_json(sp.intervals.front(), true) : std::string("null")) +
-           "}, \"first_robust_collapse\": {\"p\": " + json_number(sp.first_robust_collapse.p) +
-           ", \"found\": " + (sp.first_robust_collapse.found ? "true" : "false") + "}, \"bands\": " +
-           bands_json(sp.bands) + ", \"samples\": " + std::to_string(sp.samples) +
-           ", \"accepted\": " + std::to_string(sp.accepted) + ", \"at_width\": " + std::to_string(sp.at_width) +
-           ", \"with_margins\": " + (sp.with_margins ? "true" : "false") +
-           ", \"unguaranteed_from\": " + json_number(sp.unguaranteed_from);
+    o["first_overturning"] = {{"p", sp.first_overturning.p},
+                              {"found", sp.first_overturning.found},
+                              {"boundary", bracketed ? boundary_json(sp.intervals.front(), true) : Json(nullptr)}};
+    o["first_robust_collapse"] = {{"p", sp.first_robust_collapse.p}, {"found", sp.first_robust_collapse.found}};
+    o["bands"] = bands_json(sp.bands);
+    o["samples"] = sp.samples;
+    o["accepted"] = sp.accepted;
+    o["at_width"] = sp.at_width;
+    o["with_margins"] = sp.with_margins;
+    o["unguaranteed_from"] = sp.unguaranteed_from;
+}
+
+Json spectrum_json(const Study& study) {
+    const Spectrum& sp = study.spectrum;
+    Json o;
+    o["alpha"] = sp.alpha;
+    o["lifts"] = sp.lifts;
+    Json& intervals = o["intervals"] = Json::array();
+    for (const Interval& in : sp.intervals)
+        intervals.push_back({{"from", in.from},
+                             {"to", in.to},
+                             {"height_from", studies::height_at_p(sp.alpha, in.from)},
+                             {"height_to", studies::height_at_p(sp.alpha, in.to)},
+                             {"lower", boundary_json(in, true)},
+                             {"upper", boundary_json(in, false)}});
+    if (sp.refined) add_refined(o, sp);
+    o["table1"] = table1_json(study.table1);
+    o["simulations"] = sp.simulations;
+    o["check_simulations"] = sp.check_simulations;
+    Json& points = o["points"] = Json::array();
+    for (const studies::SpectrumPoint& pt : sp.points)
+        points.push_back({{"p", pt.p},
+                          {"grid", studies::grid_kind_name(pt.grid)},
+                          {"max_theta", pt.max_theta},
+                          {"final_rotation", pt.final_rotation},
+                          {"peak_rotation", pt.peak_rotation},
+                          {"overturning", pt.overturning},
+                          {"t_overturn", pt.t_overturn}});  // NaN, so null: t_overturn_null says why
+    return o;
+}
+
+Json mark_json(const studies::SpectrumMark& m) {
+    Json o;
+    o["built"] = m.block.built;
+    o["alpha"] = m.block.alpha;
+    o["p"] = m.block.p;
+    o["height"] = studies::height_at_p(m.block.alpha, m.block.p);
+    o["overturns"] = m.overturns;
+    o["in_set"] = m.in_set;
+    o["change_below"] = nearest_json(m.below, m.height_below);
+    o["change_above"] = nearest_json(m.above, m.height_above);
+    o["change_below_far"] = nearest_json(m.below_far, studies::far_height(m, m.below_far));
+    o["change_above_far"] = nearest_json(m.above_far, studies::far_height(m, m.above_far));
+    o["survivors_below"] = nearest_json(m.survivors_below, m.height_survivors_below);
+    o["survivors_above"] = nearest_json(m.survivors_above, m.height_survivors_above);
+    o["text"] = describe_mark(m);
+    return o;
 }
 
 void print_json(const std::string& path, const records::Record& r, const SpectrumOptions& o,
                 const std::vector<Study>& studies, const std::vector<studies::SpectrumMark>& marks) {
-    std::ostringstream js;
-    js << "{\"file\": " << json_string(path) << ", \"name\": " << json_string(r.name)
-       << ", \"samples\": " << r.accel.size() << ", \"dt\": " << json_number(r.dt)
-       << ", \"pga_g\": " << json_number(r.pga() / dynamics::kGravity) << ", \"model\": " << json_string(o.describe_model())
-       << ", \"grid\": {\"p_min\": " << json_number(o.p_min) << ", \"p_max\": " << json_number(o.p_max)
-       << ", \"points\": " << o.points << ", \"step\": " << json_number(o.step())
-       << ", \"offset_grid\": " << (refined(o) ? "false" : "true") << ", \"islands_missed_below_ratio\": "
-       << json_number(refined(o) ? std::exp(o.width) : std::sqrt(o.step()))
-       << ", \"note\": " << json_string(grid_text(o)) << "}, \"rel_tol\": " << json_number(o.rel_tol)
-       << ", \"refinement\": " << json_string(o.describe_refinement());
-    if (refined(o))
-        js << ", \"method\": \"refine\", \"width\": " << json_number(o.width) << ", \"robust_width\": " << json_number(o.robust_width)
-           << ", \"refine_note\": " << json_string(o.describe_guarantee());
-    js
-       << ", \"t_overturn_null\": \"the block does not overturn, or is taken to overturn by its energy after 200/p of "
-          "free rocking\", \"spectra\": [";
-    for (std::size_t k = 0; k < studies.size(); ++k) {
-        const Spectrum& sp = studies[k].spectrum;
-        js << (k ? ", " : "") << "{\"alpha\": " << json_number(sp.alpha) << ", \"lifts\": " << (sp.lifts ? "true" : "false")
-           << ", \"intervals\": [";
-        for (std::size_t i = 0; i < sp.intervals.size(); ++i) {
-            const Interval& in = sp.intervals[i];
-            js << (i ? ", " : "") << "{\"from\": " << json_number(in.from) << ", \"to\": " << json_number(in.to)
-               << ", \"height_from\": " << json_number(studies::height_at_p(sp.alpha, in.from))
-               << ", \"height_to\": " << json_number(studies::height_at_p(sp.alpha, in.to))
-               << ", \"lower\": " << boundary_json(in, true) << ", \"upper\": " << boundary_json(in, false) << "}";
-        }
-        js << "]";
-        if (sp.refined) js << refine_json(sp);
-        js << ", \"table1\": " << table1_json(studies[k].table1) << ", \"simulations\": " << sp.simulations
-           << ", \"check_simulations\": " << sp.check_simulations << ", \"points\": [";
-        for (std::size_t i = 0; i < sp.points.size(); ++i) {
-            const studies::SpectrumPoint& pt = sp.points[i];
-            js << (i ? ", " : "") << "{\"p\": " << json_number(pt.p) << ", \"grid\": " << json_string(studies::grid_kind_name(pt.grid))
-               << ", \"max_theta\": " << json_number(pt.max_theta)
-               << ", \"final_rotation\": " << (pt.final_rotation ? "true" : "false")
-               << ", \"peak_rotation\": " << (pt.peak_rotation ? "true" : "false")
-               << ", \"overturning\": " << (pt.overturning ? "true" : "false")
-               << ", \"t_overturn\": " << json_number(pt.t_overturn) << "}";
-        }
-        js << "]}";
+    Json js;
+    js["file"] = path;
+    js["name"] = r.name;
+    js["samples"] = r.accel.size();
+    js["dt"] = r.dt;
+    js["pga_g"] = r.pga() / dynamics::kGravity;
+    js["model"] = o.describe_model();
+    js["grid"] = {{"p_min", o.p_min},
+                  {"p_max", o.p_max},
+                  {"points", o.points},
+                  {"step", o.step()},
+                  {"offset_grid", !refined(o)},
+                  {"islands_missed_below_ratio", refined(o) ? std::exp(o.width) : std::sqrt(o.step())},
+                  {"note", grid_text(o)}};
+    js["rel_tol"] = o.rel_tol;
+    js["refinement"] = o.describe_refinement();
+    if (refined(o)) {
+        js["method"] = "refine";
+        js["width"] = o.width;
+        js["robust_width"] = o.robust_width;
+        js["refine_note"] = o.describe_guarantee();
     }
-    js << "], \"marks\": [";
-    for (std::size_t k = 0; k < marks.size(); ++k) {
-        const studies::SpectrumMark& m = marks[k];
-        js << (k ? ", " : "") << "{\"built\": " << json_string(m.block.built) << ", \"alpha\": " << json_number(m.block.alpha)
-           << ", \"p\": " << json_number(m.block.p)
-           << ", \"height\": " << json_number(studies::height_at_p(m.block.alpha, m.block.p))
-           << ", \"overturns\": " << (m.overturns ? "true" : "false") << ", \"in_set\": " << (m.in_set ? "true" : "false")
-           << ", \"change_below\": " << nearest_json(m.below, m.height_below)
-           << ", \"change_above\": " << nearest_json(m.above, m.height_above)
-           << ", \"change_below_far\": " << nearest_json(m.below_far, studies::far_height(m, m.below_far))
-           << ", \"change_above_far\": " << nearest_json(m.above_far, studies::far_height(m, m.above_far))
-           << ", \"survivors_below\": " << nearest_json(m.survivors_below, m.height_survivors_below)
-           << ", \"survivors_above\": " << nearest_json(m.survivors_above, m.height_survivors_above) << ", \"text\": " << json_string(describe_mark(m))
-           << "}";
-    }
-    js << "]}\n";
-    std::cout << js.str();
+    js["t_overturn_null"] = "the block does not overturn, or is taken to overturn by its energy after 200/p of free rocking";
+    Json& spectra = js["spectra"] = Json::array();
+    for (const Study& study : studies) spectra.push_back(spectrum_json(study));
+    Json& marked = js["marks"] = Json::array();
+    for (const studies::SpectrumMark& m : marks) marked.push_back(mark_json(m));
+    std::cout << json_text(js) << "\n";
 }
 
 std::string intervals_note(const Spectrum& sp) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "harness/atomic_file.hpp"
 #include "harness/table.hpp"
@@ -56,9 +57,9 @@ std::string sampling_option(const records::SamplingError& e, bool pulse, const s
 
 // The header's values are %.17g text or words: numbers stay numbers in JSON,
 // written as JSON writes them (".5" or "+1" would not be JSON).
-std::string json_value(const std::string& text) {
+Json json_value(const std::string& text) {
     double v;
-    return numerics::sample_number(text, v) ? json_number(v) : json_string(text);
+    return numerics::sample_number(text, v) ? Json(v) : Json(text);
 }
 
 // '#' lines naming the generator and every parameter, then t,a rows: the plain
@@ -75,20 +76,20 @@ void write_two_columns(const records::Record& r, const std::string& path) {
 
 void print_summary(const records::Record& r, const records::PeakMotion& m, const std::string& output, bool json) {
     if (json) {
-        std::cout << "{\"name\": " << json_string(r.name) << ", \"format\": " << json_string(r.format)
-                  << ", \"samples\": " << r.accel.size() << ", \"dt\": " << json_number(r.dt)
-                  << ", \"pga_ms2\": " << json_number(m.pga) << ", \"pgv_ms\": " << json_number(m.pgv)
-                  << ", \"to5_s\": " << json_number(m.to5) << ", \"parameters\": {";
-        bool first = true;
-        for (const auto& [key, value] : r.header) {
-            if (key == "warning") continue;
-            std::cout << (first ? "" : ", ") << json_string(key) << ": " << json_value(value);
-            first = false;
-        }
-        std::cout << "}, \"warnings\": [";
-        first = true;
-        for (const std::string& w : records::warnings_of(r)) std::cout << (first ? "" : ", ") << json_string(w), first = false;
-        std::cout << "], \"output\": " << (output.empty() ? "null" : json_string(output)) << "}\n";
+        Json o;
+        o["name"] = r.name;
+        o["format"] = r.format;
+        o["samples"] = r.accel.size();
+        o["dt"] = r.dt;
+        o["pga_ms2"] = m.pga;
+        o["pgv_ms"] = m.pgv;
+        o["to5_s"] = m.to5;
+        Json& parameters = o["parameters"] = Json::object();
+        for (const auto& [key, value] : r.header)
+            if (key != "warning") parameters[key] = json_value(value);
+        o["warnings"] = records::warnings_of(r);
+        o["output"] = output.empty() ? Json(nullptr) : Json(output);
+        std::cout << json_text(o) << "\n";
         return;
     }
     std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,

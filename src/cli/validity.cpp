@@ -44,11 +44,11 @@ void print_validity(const Excursion& e, const char* prefix) {
                     prefix, bounded(e.max_phi).c_str(), e.tau_at_max);
 }
 
-std::string json_validity(const Excursion& e) {
-    return std::string(", \"rocking_starts\": ") + (e.onset ? "true" : "false") +
-           ", \"impact_free\": " + (e.stays_positive() ? "true" : "false") +
-           ", \"motion_reverses\": " + (e.min_dphi < 0 ? "true" : "false") +
-           ", \"passes_alpha_before_t_fin\": " + (e.onset && e.passes_alpha() ? "true" : "false");
+void add_validity(Json& o, const Excursion& e) {
+    o["rocking_starts"] = e.onset;
+    o["impact_free"] = e.stays_positive();
+    o["motion_reverses"] = e.min_dphi < 0;
+    o["passes_alpha_before_t_fin"] = e.onset && e.passes_alpha();
 }
 
 }  // namespace rocking::cli
