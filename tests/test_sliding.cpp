@@ -328,11 +328,11 @@ TEST(Sliding, AnImpactCascadeEndsAtRest) {
 // driver ends the cascade at the first impact within 1e-6/p of the last
 // (run_rules.hpp, the micro-bounce rule), the block at rest.  The sliding
 // driver had no such rule and went on to its rest rate (1e-8 alpha p),
-// 110 more impacts here inside 3e-5 s, each a segment of its own (issue 41's
+// 114 more impacts here (530 against 416), each a segment of its own (issue 41's
 // worst cost, NRC 2016-10-26 19:18: 131 impacts against 86, 3.4 times the
-// time); the micro-bounce then laid a stuck block flat with the rotation's
-// share of G's velocity as a slip, which at mu = 1e6 slide-rocked into
-// Painleve's case.
+// time).  Laid flat after a micro-bounce with G's velocity as its slip (the
+// rotation's share h theta'+, as the rest rule keeps it), a stuck block
+// slide-rocked into Painleve's case at mu = 1e6: the base keeps its own.
 TEST(Sliding, AnImpactCascadeEndsAsTheRockingOnlyOne) {
     std::vector<double> a(6051, 0.0);
     for (int k = 0; k <= 50; ++k) a[k] = 0.3;

@@ -33,8 +33,8 @@ struct SlidingOptions {
     bool free_rocking = true;  // follow the block after the input until it rests, falls or 200/p s pass
     double overturn_angle = M_PI / 2;
     double rest_velocity = 1e-9;  // |theta'| below max(rest_velocity, 10 atol) alpha p after an impact, or
-                                  // an impact within 1e-6/p of the last (the rocking-only driver's
-                                  // micro-bounce rule): the block lies flat, and its slip rate below
+                                  // an impact within 1e-6/p of the last at |theta'| < 1e-6 alpha p (the
+                                  // rocking-only driver's micro-bounce rule): the block lies flat, and its slip rate below
                                   // max(rest_velocity, 10 atol) alpha p R is 0
     long max_events = 1000000;    // a guard: beyond it, std::runtime_error (a second of events)
     std::size_t max_impact_times = 1000000;  // impact_times keeps the first ones (8 bytes each)
