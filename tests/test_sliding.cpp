@@ -320,6 +320,61 @@ TEST(Sliding, AnImpactCascadeEndsAtRest) {
     EXPECT_LT(r.balance_error, 1e-7);
 }
 
+// The end of an impact cascade, as the rocking-only driver's.  On a ground
+// at rest, at amplitudes far below alpha (theta'' = -p^2 sin(alpha - theta)
+// ~ -p^2 sin alpha: a projectile's arc), an arc leaving theta = 0 at omega
+// lands 2 omega / (p^2 sin alpha) later at omega, so with Housner's e the
+// intervals are a geometric series, T_{k+1} = e T_k; the rocking-only
+// driver ends the cascade at the first impact within 1e-6/p of the last
+// (run_rules.hpp, the micro-bounce rule), the block at rest.  The sliding
+// driver had no such rule and went on to its rest rate (1e-8 alpha p),
+// 114 more impacts here (530 against 416), each a segment of its own (issue 41's
+// worst cost, NRC 2016-10-26 19:18: 131 impacts against 86, 3.4 times the
+// time).  Laid flat after a micro-bounce with G's velocity as its slip (the
+// rotation's share h theta'+, as the rest rule keeps it), a stuck block
+// slide-rocked into Painleve's case at mu = 1e6: the base keeps its own.
+TEST(Sliding, AnImpactCascadeEndsAsTheRockingOnlyOne) {
+    std::vector<double> a(6051, 0.0);
+    for (int k = 0; k <= 50; ++k) a[k] = 0.3;
+    const SampledInput pulse(a, 0.01, "0.3 g for 0.5 s, then 60 s at rest");
+    const double alpha = 0.15, e = housner_restitution(alpha);
+    Model model;
+    model.equation = Equation::full;
+    model.block = Block::from_p(FrictionBlock{alpha, 8.0, 1e6}.p(), alpha);
+    model.restitution = e;
+    SimulationOptions ro;
+    ro.solver.kind = SolverKind::dopri5;
+    ro.solver.rtol = ro.solver.atol_alpha = SlidingOptions{}.rtol;  // the rest rate, 10 atol alpha p, the same
+    const SimulationResult r = simulate(model, pulse, ro);
+    ASSERT_EQ(r.rests, 1);
+    for (double mu : {1e6, 0.6}) {
+        const FrictionBlock block{alpha, 8.0, mu};
+        const double p = block.p();
+        const SlidingResult s = simulate_sliding(block, pulse, SlidingOptions{});
+        const std::vector<double>& t = s.impact_times;
+        ASSERT_GT(t.size(), 100u) << mu;
+        EXPECT_FALSE(s.slid) << mu;
+        EXPECT_EQ(s.final_slip, 0) << mu;
+        // The tail, from the first interval below 1e-3/p (theta there below
+        // 2e-8 rad: the arc's time off the projectile's by that over tan alpha).
+        std::size_t j = 1;
+        while (j < t.size() && t[j] - t[j - 1] >= 1e-3 / p) ++j;
+        ASSERT_LT(j + 1, t.size()) << mu;
+        const double Tj = t[j] - t[j - 1];
+        for (std::size_t k = j + 1; k < t.size(); ++k)
+            EXPECT_NEAR((t[k] - t[k - 1]) / (Tj * std::pow(e, double(k - j))), 1, 1e-4) << mu << ", impact " << k;
+        // The series' first interval below 1e-6/p is the last impact's.
+        int m = 0;
+        while (Tj * std::pow(e, m) >= 1e-6 / p) ++m;
+        ASSERT_GT(1e-6 / p / (Tj * std::pow(e, m)), 1 + 1e-3) << "too near the rule's threshold to tell";
+        ASSERT_GT(Tj * std::pow(e, m - 1) / (1e-6 / p), 1 + 1e-3) << "too near the rule's threshold to tell";
+        EXPECT_EQ(t.size(), j + 1 + m) << mu;
+        EXPECT_EQ(s.impacts, r.impacts) << mu;
+        ASSERT_EQ(t.size(), r.impact_times.size()) << mu;
+        EXPECT_NEAR(t.back(), r.impact_times.back(), 1e-6) << mu;
+    }
+}
+
 // An event is applied where it has happened.  Located by Newton on the true
 // steps, a slip's start had been taken at the closest approach, at times on
 // the near side, where the stuck corner's friction still held: the slip

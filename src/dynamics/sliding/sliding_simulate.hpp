@@ -32,8 +32,10 @@ struct SlidingOptions {
     double max_step_p = 0.1;   // the longest step, times p: events inside one are few
     bool free_rocking = true;  // follow the block after the input until it rests, falls or 200/p s pass
     double overturn_angle = M_PI / 2;
-    double rest_velocity = 1e-9;  // |theta'| below max(rest_velocity, 10 atol) alpha p after an impact: the
-                                  // block lies flat, and its slip rate below the same times R is 0
+    double rest_velocity = 1e-9;  // |theta'| below max(rest_velocity, 10 atol) alpha p after an impact, or
+                                  // an impact within 1e-6/p of the last at |theta'| < 1e-6 alpha p (the
+                                  // rocking-only driver's micro-bounce rule): the block lies flat, and its slip rate below
+                                  // max(rest_velocity, 10 atol) alpha p R is 0
     long max_events = 1000000;    // a guard: beyond it, std::runtime_error (a second of events)
     std::size_t max_impact_times = 1000000;  // impact_times keeps the first ones (8 bytes each)
     // > 0: keep the state every record_dt seconds, k record_dt up to the
