@@ -30,8 +30,9 @@ PACKAGES += poppler-utils
 
 # Maintained libraries in place of hand-written code (issue 42): SHA-256 from OpenSSL's
 # libcrypto, the manifest's RFC 4180 CSV from libcsv, the command line's JSON documents as
-# nlohmann::ordered_json values (src/cli/json_text.hpp).
-PACKAGES += libssl-dev libcsv-dev nlohmann-json3-dev
+# nlohmann::ordered_json values (src/cli/json_text.hpp), the results' combinable checksum
+# from xxHash (src/batch/row_digest.hpp).
+PACKAGES += libssl-dev libcsv-dev nlohmann-json3-dev libxxhash-dev
 
 # pip install . into a virtual environment (pyproject.toml, setup.py; ctest pip_install).
 PACKAGES += python3-venv python3-pip python3-setuptools

@@ -41,6 +41,26 @@ same "-np 3 with 2 threads a rank = threads" "$tmp/np3j2.csv" "$tmp/threads.csv"
 mpi 2 "$tmp/m.csv" --quiet >"$tmp/np2.stdout" 2>/dev/null
 same "-np 2 on standard output = threads" "$tmp/np2.stdout" "$tmp/threads.csv"
 
+# ---- Who writes the rows: each rank its own, into rank 0's file, unless a rank cannot open
+# that file.  OpenMPI gives each part of the command its own folder (-wdir): with a relative
+# --output, ranks 1 and 2 find another file of the same name (a stale one, as on a node's own
+# disk) and the rows pass through rank 0; the stale file is left as it was.
+says() { grep -c "in $2 chunks written by their ranks and $3 through this thread" "$1"; }
+ROCKING_BATCH_STATS=1 mpi 3 "$tmp/m.csv" --output "$tmp/own.csv" --quiet 2>"$tmp/own.err"
+same "-np 3, each rank writing its own rows = threads" "$tmp/own.csv" "$tmp/threads.csv"
+if grep -q "in [1-9][0-9]* chunks written by their ranks and 0 through this thread" "$tmp/own.err"; then
+    echo "ok: the ranks wrote their own rows, none through rank 0"
+else echo "FAIL: the ranks did not write their own rows: $(grep writing "$tmp/own.err")"; fail=1; fi
+mkdir -p "$tmp/a" "$tmp/b"
+echo stale >"$tmp/b/r.csv.partial"
+ROCKING_BATCH_STATS=1 timeout 300 "$mpiexec" --oversubscribe -np 1 -wdir "$tmp/a" "$rocking" batch "$tmp/m.csv" \
+    --output r.csv --quiet : -np 2 -wdir "$tmp/b" "$rocking" batch "$tmp/m.csv" --output r.csv --quiet 2>"$tmp/ab.err"
+same "ranks that see another file: the rows through rank 0 = threads" "$tmp/a/r.csv" "$tmp/threads.csv"
+if grep -q "in 0 chunks written by their ranks and [1-9][0-9]* through this thread" "$tmp/ab.err"; then
+    echo "ok: ranks that see another file send their rows to rank 0"
+else echo "FAIL: ranks that see another file: $(grep writing "$tmp/ab.err")"; fail=1; fi
+check "the other file is left as it was" "stale" cat "$tmp/b/r.csv.partial"
+
 # ---- Bad rows: the same rows as on threads, the rest run, exit 3 (mpirun passes rank 0's status on).
 printf 'kind,record,unit,record_dt,alpha,p\nsimulate,records/sine1.txt,g,0.01,0.1,2\nsimulate,records/missing.txt,g,0.01,0.1,2\nsimulate,records/sine1.txt,g,0.01,0,2\ncollapse,records/sine1.txt,g,0.01,0.1,\nsimulate,records/sine1.txt,g,0.01,abc,2\n' >"$tmp/bad.csv"
 "$rocking" batch "$tmp/bad.csv" --output "$tmp/bad_threads.csv" --quiet
@@ -96,6 +116,32 @@ for trial in 1 2 3; do
     fi
     mpi 2 "$tmp/long.csv" --output "$out" --resume --quiet 2>/dev/null
     same "SIGKILL ${delay}s after the start, resumed on 2 ranks" "$out" "$tmp/long_threads.csv"
+done
+# SIGKILL to one rank other than 0 (a node lost): mpirun ends the job, and what rank 0's
+# state counts, the chunks each writer synced, resumes to the uninterrupted file.
+rank_pid() {  # mpirun's pid, a rank: that rank's pid, from its environment
+    local p
+    for p in $(ps -o pid= --ppid "$1"); do
+        tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$2" && { echo "$p"; return; }
+    done
+}
+for victim in 1 2; do
+    out="$tmp/rank$victim.csv"
+    "$mpiexec" --oversubscribe -np 3 "$rocking" batch "$tmp/long.csv" --output "$out" --quiet >/dev/null 2>&1 &
+    pid=$!
+    for _ in $(seq 500); do
+        [[ -f $out.partial.state ]] && (( $(awk '{print $5}' "$out.partial.state") > 2 )) && break
+        sleep 0.01
+    done
+    victim_pid=$(rank_pid $pid $victim)
+    if [[ -z $victim_pid ]]; then echo "FAIL: rank $victim of mpirun $pid not found"; fail=1; fi
+    kill -KILL $victim_pid 2>/dev/null
+    for _ in $(seq 100); do alive $pid || break; sleep 0.1; done  # mpirun ends the job itself
+    kill_all KILL $pid  # whatever it has not ended
+    done_jobs=$(awk '{print $5}' "$out.partial.state" 2>/dev/null || echo 0)
+    (( done_jobs > 0 && done_jobs < long_jobs )) && midway=$((midway + 1))
+    mpi 2 "$tmp/long.csv" --output "$out" --resume --quiet 2>/dev/null
+    same "rank $victim SIGKILLed after $done_jobs jobs, resumed on 2 ranks" "$out" "$tmp/long_threads.csv"
 done
 # SIGTERM to the job once rows are written: rank 0 flushes the rows delivered and ends, and
 # threads complete the file.

@@ -637,20 +637,35 @@ namespace {
 
 // One rank alone, as the engine sees an MPI run of one process: what the
 // engine does under mpirun (the threads tried on every rank before the
-// first job, the rows delivered through the ranks) without MPI.
+// first job, the rows placed in the file as the ranks place them, or
+// delivered through rank 0 without a file) without MPI; a row that cannot
+// be written removes the files that keep none, as MpiRanks does before its
+// MPI_Abort.
 class OneRank : public Ranks {
 public:
     int rank() const override { return 0; }
     int size() const override { return 1; }
     int agree(int status) override { return status; }
     std::string broadcast(const std::string& text) override { return text; }
-    void run(std::size_t first, std::size_t n, int, std::size_t, const JobFunction& job, const DeliverChunk& deliver,
+    void run(std::size_t first, std::size_t n, int, std::size_t, const JobFunction& job, const Delivery& delivery,
              const std::string&) override {
-        for (std::size_t i = first; i < n; ++i) {
-            RowChunk chunk;
-            chunk.first = i;
-            chunk.add(job(i));
-            deliver(chunk);
+        const bool placed = delivery.file && delivery.file->on_disk();
+        try {
+            for (std::size_t i = first; i < n; ++i) {
+                RowChunk chunk;
+                chunk.first = i;
+                chunk.add(job(i));
+                if (!placed) {
+                    delivery.rows(chunk);
+                    continue;
+                }
+                delivery.file->place_own(chunk);
+                delivery.placed(chunk.summary());
+                if (delivery.flush_seconds == 0) delivery.file->flush();
+            }
+        } catch (...) {
+            if (delivery.file) delivery.file->discard_unless_rows_kept();
+            throw;
         }
     }
 };
@@ -698,8 +713,10 @@ TEST(BatchEngine, AFullDiskLeavesNothingUnlessRowsAreKeptAndThoseResume) {
     run_batch(plan, clean, nullptr);
     for (bool ranks : {false, true}) {
         const std::string out = dir + (ranks ? "/ranks.csv" : "/threads.csv");
-        // No room for the header (100 bytes), then none for a row after it.
-        for (rlim_t bytes : {rlim_t{0}, rlim_t{kHeader.size() + 90}}) {
+        // No room for the header (its digest's line and kHeader, 101 bytes), then room for it
+        // (and for the state, 70 bytes) but none for the first row after it (4 bytes).
+        const rlim_t header = std::string("# manifest sha256: \n").size() + kDigest.size() + kHeader.size();
+        for (rlim_t bytes : {rlim_t{0}, header + 2}) {
             run_on_a_full_disk(plan, out, bytes, ranks);
             for (const EngineFile& f : engine_files(out))
                 EXPECT_FALSE(exists(f.path)) << f.path << " left, " << bytes << " bytes, ranks " << ranks;

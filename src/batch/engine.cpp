@@ -29,7 +29,7 @@ void say_interrupted(const std::string& command, int sig, const ResultsFile& fil
                      std::size_t jobs) {
     std::fprintf(stderr, "\n%s: interrupted by %s: the rows of %zu of %zu jobs are written%s%s%s\n", command.c_str(),
                  sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : strsignal(sig),
-                 file.done(), jobs, output.empty() ? "" : " to ", output.empty() ? "" : file.partial_path().c_str(),
+                 file.kept(), jobs, output.empty() ? "" : " to ", output.empty() ? "" : file.partial_path().c_str(),
                  output.empty() ? "" : "; the same command with --resume completes them");
 }
 
@@ -174,17 +174,17 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
     const InterruptWatch watch([&](int sig) {
         if (!file) return;
         file->flush();
-        if (progress.enabled()) progress.finish(file->done(), file->failed());
+        if (progress.enabled()) progress.finish(file->kept(), file->failed());
         say_interrupted(options.command, sig, *file, options.output, plan.jobs);
     });
     if (!lead) {
-        ranks->run(0, plan.jobs, static_cast<int>(threads), options.window, plan.run, nullptr, options.command);
+        ranks->run(0, plan.jobs, static_cast<int>(threads), options.window, plan.run, Delivery{}, options.command);
         return {};
     }
     if (file && (file->complete() || first == plan.jobs)) {
         // Nothing to run: a finished file found by --resume, or a partial one
         // whose rows are all there (killed before its end line).
-        if (ranks) ranks->run(first, plan.jobs, static_cast<int>(threads), options.window, plan.run, nullptr, options.command);
+        if (ranks) ranks->run(first, plan.jobs, static_cast<int>(threads), options.window, plan.run, Delivery{}, options.command);
         file->finish();
         collect_rows(plan, options);
         return {file->done(), file->failed(), 0, file->complete()};
@@ -193,9 +193,10 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
     // the jobs on other threads or ranks, what one row costs the one thread
     // every row passes through, the bound on how many rows a second a batch takes.
     const double cpu_before = thread_cpu_seconds();
-    std::size_t done = 0, failed = 0;
+    std::size_t done = 0, failed = 0, chunks = 0, placed = 0;  // chunks through this thread, and placed for their ranks
+    double busy_cpu = -1;  // measured by the ranks' rank 0 alone
     const DeliverChunk deliver = [&](RowChunk& chunk) {
-        done += chunk.count(), failed += chunk.failed;
+        done += chunk.count(), failed += chunk.failed, ++chunks;
         if (file) file->append(chunk);
         else chunk.each([&](std::size_t i, std::string_view row) { options.collect(i, std::string(row)); });
         progress.update(first + done, file ? file->failed() : failed);
@@ -206,17 +207,14 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
         const std::size_t takers = threads + static_cast<std::size_t>(ranks->size());
         const std::size_t window =
             options.window ? options.window : std::max<std::size_t>(64 * takers, std::min<std::size_t>(16384 * takers, 1 << 20));
-        // A row that cannot be written (a full disk) ends every rank by MPI_Abort: the
-        // files go first when they keep no row, as on threads.
-        const DeliverChunk deliver_or_discard = [&](RowChunk& chunk) {
-            try {
-                deliver(chunk);
-            } catch (...) {
-                if (file) file->discard_unless_rows_kept();
-                throw;
-            }
-        };
-        ranks->run(first, plan.jobs, static_cast<int>(threads), window, plan.run, deliver_or_discard, options.command);
+        // The ranks write their own rows when they can open the file; rank 0 sees each chunk's summary.
+        busy_cpu = 0;
+        Delivery delivery{deliver, file.get(), [&](const ChunkSummary& chunk) {
+                              done += chunk.count, failed += chunk.failed, ++placed;
+                              progress.update(first + done, file->failed());
+                          },
+                          options.flush_seconds, std::getenv("ROCKING_BATCH_STATS") ? &busy_cpu : nullptr};
+        ranks->run(first, plan.jobs, static_cast<int>(threads), window, plan.run, delivery, options.command);
     } else {
         const std::vector<std::size_t> starts = chunk_starts(first, plan.jobs, threads);
         // The window in chunks: at most `window` rows held, or the pool's 64 chunks a thread.
@@ -249,8 +247,11 @@ BatchOutcome run_batch(const BatchPlan& plan, const EngineOptions& options, Rank
     }
     progress.finish(first + done, failed);
     if (std::getenv("ROCKING_BATCH_STATS"))
-        std::fprintf(stderr, "%s: the writing thread: %.6f s of CPU for %zu rows\n", options.command.c_str(),
-                     thread_cpu_seconds() - cpu_before, plan.jobs - first);
+        std::fprintf(stderr,
+                     "%s: the writing thread: %.6f s of CPU for %zu rows, in %zu chunks written by their ranks and %zu "
+                     "through this thread%s\n",
+                     options.command.c_str(), thread_cpu_seconds() - cpu_before, plan.jobs - first, placed, chunks,
+                     busy_cpu < 0 ? "" : ("; busy " + std::to_string(busy_cpu) + " s").c_str());
     if (file) collect_rows(plan, options);
     return {plan.jobs, failed, plan.jobs - first, false};
 }

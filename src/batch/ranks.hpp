@@ -13,6 +13,7 @@
 #include <string>
 
 #include "batch/job_row.hpp"
+#include "batch/results_file.hpp"
 
 namespace rocking::batch {
 
@@ -71,6 +72,24 @@ struct OtherRankFailed : std::runtime_error {
     explicit OtherRankFailed(int s) : std::runtime_error("another rank failed"), status(s) {}
 };
 
+// Where rank 0 puts the rows of a run.  When every rank can open `file`'s
+// partial file (the same file, proved by a probe), the ranks write their own
+// rows into it at the offsets rank 0 places them at, and only a summary of
+// each chunk reaches rank 0, given to `placed` in the jobs' order; otherwise
+// (no file: standard output or rows for the front end; a rank that sees
+// another file or none) every chunk's rows come to rank 0 and go to `rows`.
+struct Delivery {
+    DeliverChunk rows;
+    ResultsFile* file = nullptr;
+    std::function<void(const ChunkSummary&)> placed;
+    // How often the ranks sync what they wrote, and the state moves.
+    double flush_seconds = 1.0;
+    // When set, rank 0's main thread adds the CPU of its busy turns (something
+    // received, handed out, placed or synced; not its waits): what it spends
+    // on the rows, the bound on how many a second it can take (bench/batch.sh).
+    double* busy_cpu = nullptr;
+};
+
 class Ranks {
 public:
     virtual ~Ranks() = default;
@@ -82,13 +101,16 @@ public:
     virtual std::string broadcast(const std::string& text) = 0;
     // Collective.  Rank 0: jobs first .. n - 1 handed out in chunks to the
     // ranks that ask, `threads` of its own taking chunks too, and every
-    // chunk's rows to deliver() in the jobs' order, at most `window` rows held.
-    // The other ranks: the chunks they are given, on `threads` threads, until
-    // told to stop (deliver is not called there).  A failure on any rank
-    // (deliver throwing, a thread that cannot start) aborts every rank, its
-    // message printed after `command` ("rocking fragility").
+    // chunk delivered in the jobs' order (Delivery), at most `window` rows
+    // placed ahead of the first not yet run.  The other ranks: the chunks
+    // they are given, on `threads` threads, until told to stop (their
+    // Delivery is empty).  With a file, every row placed is on the disk
+    // (synced by its writer) when run() returns on rank 0.  A failure on any
+    // rank (a row that cannot be written, a thread that cannot start) aborts
+    // every rank, its message printed after `command` ("rocking fragility"),
+    // rank 0's files removed first when they keep no row.
     virtual void run(std::size_t first, std::size_t n, int threads, std::size_t window, const JobFunction& job,
-                     const DeliverChunk& deliver, const std::string& command) = 0;
+                     const Delivery& delivery, const std::string& command) = 0;
 };
 
 }  // namespace rocking::batch

@@ -7,12 +7,15 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
 #include "batch/manifest.hpp"
+#include "batch/row_digest.hpp"
+#include "batch/sha256.hpp"
 
 namespace rocking::batch {
 
@@ -81,6 +84,7 @@ ResultsFile::ResultsFile(const ResultsOptions& options, const std::string& heade
     std::string preamble = kDigestLine + digest + "\n";
     for (const InputDigest& input : inputs_) preamble += input_line(input) + "\n";
     preamble += header;
+    preamble_lines_ = static_cast<std::size_t>(std::count(preamble.begin(), preamble.end(), '\n'));
     try {
         open(preamble, digest);
     } catch (...) {
@@ -135,6 +139,11 @@ std::size_t ResultsFile::failed() const {
     return failed_;
 }
 
+std::size_t ResultsFile::kept() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return written_done_;
+}
+
 void ResultsFile::start_fresh(const std::string& preamble) {
     if (fd_ < 0) {
         fd_ = ::open(partial_path().c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
@@ -148,10 +157,12 @@ void ResultsFile::start_fresh(const std::string& preamble) {
     began_ = true;
     if (::ftruncate(fd_, 0) != 0 || ::lseek(fd_, 0, SEEK_SET) != 0)
         throw ResultsError(partial_path() + ": cannot write: " + why(errno));
-    hash_ = Sha256();
     bytes_ = 0;
+    digest_ = 0;
     done_ = failed_ = written_done_ = written_failed_ = 0;
     held_ = preamble;
+    header_bytes_ = preamble.size();
+    held_digest_ = header_digest(preamble);
     flush_locked();
 }
 
@@ -167,40 +178,76 @@ bool ResultsFile::resume_partial(const std::string& digest) {
     }
     if (!exists(state_path())) return false;
     const std::string state = slurp(state_path());
-    unsigned long long jobs = 0, failed = 0, bytes = 0;
+    unsigned long long jobs = 0, failed = 0, bytes = 0, header = 0;
     char hex[65] = {};
-    if (std::sscanf(state.c_str(), "rocking batch state: jobs %llu failed %llu bytes %llu sha256 %64s", &jobs, &failed,
-                    &bytes, hex) != 4 ||
-        std::strlen(hex) != 64)
+    std::uint64_t sum = 0;
+    std::string sha256;  // a state of a rocking before the sum of row terms
+    if (std::sscanf(state.c_str(), "rocking batch state: jobs %llu failed %llu bytes %llu header %llu xxh3 %16s", &jobs,
+                    &failed, &bytes, &header, hex) == 5 &&
+        std::strlen(hex) == 16 && std::strspn(hex, "0123456789abcdef") == 16)
+        sum = std::strtoull(hex, nullptr, 16);
+    else if (std::sscanf(state.c_str(), "rocking batch state: jobs %llu failed %llu bytes %llu sha256 %64s", &jobs,
+                         &failed, &bytes, hex) == 4 &&
+             std::strlen(hex) == 64)
+        sha256 = hex;
+    else
         throw ResultsError(state_path() + ": not a state file of rocking batch; remove it and " + partial_path() +
                            " to start over");
-    std::vector<char> kept(bytes);
-    const ssize_t got = bytes ? ::pread(fd_, kept.data(), bytes, 0) : 0;
-    Sha256 hash;
-    hash.update(kept.data(), kept.size());
-    if (got != static_cast<ssize_t>(bytes) || hash.hex() != hex)
-        throw ResultsError(partial_path() + ": its first " + std::to_string(bytes) +
-                           " bytes do not match the checksum in " + state_path() +
-                           " (the file was changed or damaged); remove both to start over");
-    const std::string head = first_line(std::string(kept.begin(), kept.end()));
+    const std::string kept = verify_kept(jobs, bytes, header, sum, sha256);
+    const std::string head = first_line(kept);
     if (head != kDigestLine + digest)
         throw ResultsError("the " + options_.jobs_from + " has changed since " + partial_path() + " was begun (its sha256 was " +
                            head.substr(std::min(head.size(), sizeof kDigestLine - 1)) + ", it is now " + digest +
                            "): the rows written are another " + options_.jobs_from + "'s jobs. Run the " + options_.jobs_from +
                            " it was begun with, or "
                            "remove " + partial_path() + " and " + state_path() + " to start over");
-    check_inputs(std::string(kept.begin(), kept.end()), partial_path() + " was begun",
-                 "remove " + partial_path() + " and " + state_path() + " to start over");
+    check_inputs(kept, partial_path() + " was begun", "remove " + partial_path() + " and " + state_path() + " to start over");
     if (jobs > jobs_ || failed > jobs)
         throw ResultsError(state_path() + ": counts " + std::to_string(jobs) + " jobs, more than the " + options_.jobs_from + "'s " +
                            std::to_string(jobs_));
     if (::ftruncate(fd_, static_cast<off_t>(bytes)) != 0 || ::lseek(fd_, 0, SEEK_END) != static_cast<off_t>(bytes))
         throw ResultsError(partial_path() + ": cannot cut off the rows its state does not count: " + why(errno));
-    hash_ = hash;
     bytes_ = bytes;
     done_ = written_done_ = jobs;
     failed_ = written_failed_ = failed;
     return true;
+}
+
+std::string ResultsFile::verify_kept(unsigned long long jobs, unsigned long long bytes, unsigned long long header,
+                                     std::uint64_t digest, const std::string& sha256) {
+    const bool old = !sha256.empty();
+    // The header ends at the length the state gives, or (an old state) after this run's preamble's lines.
+    std::string head;
+    bool in_header = old ? preamble_lines_ > 0 : header > 0;
+    std::size_t lines = 0;
+    RowsDigest rows;
+    Sha256 hash;
+    std::vector<char> block(std::size_t{1} << 20);
+    bool whole = header <= bytes;
+    for (unsigned long long at = 0; whole && at < bytes;) {
+        const ssize_t got = ::pread(fd_, block.data(), std::min<unsigned long long>(block.size(), bytes - at), static_cast<off_t>(at));
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) {
+            whole = false;
+            break;
+        }
+        const std::size_t n = static_cast<std::size_t>(got);
+        if (old) hash.update(block.data(), n);
+        std::size_t k = 0;
+        for (; in_header && k < n; ++k) {
+            head += block[k];
+            in_header = old ? !(block[k] == '\n' && ++lines == preamble_lines_) : head.size() < header;
+        }
+        rows.feed(block.data() + k, n - k);
+        at += n;
+    }
+    const std::uint64_t sum = header_digest(head) + rows.sum();
+    if (!whole || in_header || (old ? hash.hex() != sha256 : sum != digest) || rows.rows() != jobs || rows.row_open())
+        throw ResultsError(partial_path() + ": its first " + std::to_string(bytes) + " bytes do not match the checksum in " +
+                           state_path() + " (the file was changed or damaged); remove both to start over");
+    header_bytes_ = head.size();
+    digest_ = sum;
+    return head;
 }
 
 // --resume where OUT.partial is gone: the results at the path, when they are
@@ -271,8 +318,10 @@ void ResultsFile::discard_unless_rows_kept() {
 
 void ResultsFile::append(const std::string& row, bool failed) {
     std::lock_guard<std::mutex> lock(mutex_);
+    const std::size_t at = held_.size();
     held_ += row;
     held_ += '\n';
+    held_digest_ += row_digest(std::string_view(held_).substr(at), done_);
     ++done_;
     failed_ += failed;
     const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_flush_).count();
@@ -284,6 +333,7 @@ void ResultsFile::append(const RowChunk& chunk) {
     const double since = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_flush_).count();
     if (since < options_.flush_seconds && held_.size() + chunk.text.size() < options_.flush_bytes) {
         held_ += chunk.text;  // no flush due inside the chunk: it goes whole
+        held_digest_ += chunk.digest;
         done_ += chunk.count();
         failed_ += chunk.failed;
         return;
@@ -294,6 +344,7 @@ void ResultsFile::append(const RowChunk& chunk) {
     std::size_t at = 0;
     for (const std::uint32_t entry : chunk.lengths) {
         held_.append(chunk.text, at, RowChunk::length(entry));
+        held_digest_ += row_digest(std::string_view(chunk.text).substr(at, RowChunk::length(entry)), done_);
         at += RowChunk::length(entry);
         ++done_;
         failed_ += RowChunk::failed_row(entry);
@@ -323,14 +374,33 @@ void ResultsFile::write_all(const std::string& text) {
 
 void ResultsFile::flush_locked() {
     last_flush_ = std::chrono::steady_clock::now();
+    if (placing_) {
+        // Own chunks are on the disk once this sync returns, the others once their writers said so.
+        if (own_unsynced_ && ::fdatasync(fd_) != 0) throw ResultsError(partial_path() + ": cannot sync: " + why(errno));
+        own_unsynced_ = false;
+        std::size_t jobs = written_done_, failed = written_failed_;
+        unsigned long long bytes = bytes_;
+        std::uint64_t digest = digest_;
+        for (; !placed_.empty() && (placed_.front().own || placed_.front().synced); placed_.pop_front(), ++placed_before_) {
+            const ChunkSummary& c = placed_.front().chunk;
+            jobs += c.count, failed += c.failed, bytes += c.bytes, digest += c.digest;
+        }
+        if (jobs == written_done_) return;
+        bytes_ = bytes, digest_ = digest;
+        write_state(jobs, failed);
+        written_done_ = jobs, written_failed_ = failed;
+        return;
+    }
     if (held_.empty()) return;
     write_all(held_);
     if (options_.path.empty()) {
         held_.clear();
+        written_done_ = done_, written_failed_ = failed_;
         return;
     }
-    hash_.update(held_);
     bytes_ += held_.size();
+    digest_ += held_digest_;
+    held_digest_ = 0;
     held_.clear();
     // The rows reach the disk before the state that counts them.
     if (::fdatasync(fd_) != 0) throw ResultsError(partial_path() + ": cannot sync: " + why(errno));
@@ -344,8 +414,8 @@ void ResultsFile::flush_locked() {
 void ResultsFile::write_state(std::size_t jobs, std::size_t failed) {
     const std::string temporary = state_temporary();
     char text[200];
-    std::snprintf(text, sizeof text, "%s jobs %zu failed %zu bytes %llu sha256 %s\n", kStateLine, jobs, failed, bytes_,
-                  hash_.hex().c_str());
+    std::snprintf(text, sizeof text, "%s jobs %zu failed %zu bytes %llu header %llu xxh3 %s\n", kStateLine, jobs, failed,
+                  bytes_, header_bytes_, digest_hex(digest_).c_str());
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) throw ResultsError(temporary + ": cannot create: " + why(errno));
     const std::size_t size = std::strlen(text);
@@ -366,12 +436,80 @@ void ResultsFile::write_state(std::size_t jobs, std::size_t failed) {
     }
 }
 
+std::uint64_t ResultsFile::place(const ChunkSummary& chunk) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!placing_) {
+        flush_locked();  // the header, before the first chunk's offset is taken from it
+        placing_ = true;
+        placed_end_ = bytes_;
+    }
+    const std::uint64_t offset = placed_end_;
+    placed_end_ += chunk.bytes;
+    done_ += chunk.count, failed_ += chunk.failed;
+    placed_.push_back({chunk, false, false});
+    return offset;
+}
+
+void ResultsFile::write_own(std::size_t number, std::uint64_t offset, const std::string& text) {
+    write_at_locked(offset, text);  // pwrite: no lock needed, and none held while it copies
+    std::lock_guard<std::mutex> lock(mutex_);
+    // Not own until written: a flush before (a signal's) must not count it.
+    if (number >= placed_before_ && number - placed_before_ < placed_.size()) placed_[number - placed_before_].own = true;
+    own_unsynced_ = true;
+}
+
+void ResultsFile::place_own(const RowChunk& chunk) {
+    const std::uint64_t offset = place(chunk.summary());
+    std::size_t number = 0;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        number = placed_before_ + placed_.size() - 1;
+    }
+    write_own(number, offset, chunk.text);
+}
+
+void ResultsFile::synced(std::size_t number) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (number >= placed_before_ && number - placed_before_ < placed_.size()) placed_[number - placed_before_].synced = true;
+}
+
+std::uint64_t ResultsFile::write_probe(const std::string& text) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    flush_locked();
+    write_at_locked(bytes_, text);
+    if (::fdatasync(fd_) != 0) throw ResultsError(partial_path() + ": cannot sync: " + why(errno));
+    return bytes_;
+}
+
+void ResultsFile::clear_probe() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (::ftruncate(fd_, static_cast<off_t>(bytes_)) != 0)
+        throw ResultsError(partial_path() + ": cannot cut off its probe: " + why(errno));
+}
+
+void ResultsFile::write_at_locked(std::uint64_t offset, const std::string& text) {
+    for (std::size_t at = 0; at < text.size();) {
+        const ssize_t n = ::pwrite(fd_, text.data() + at, text.size() - at, static_cast<off_t>(offset + at));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) throw ResultsError(partial_path() + ": cannot write: " + why(n < 0 ? errno : ENOSPC));
+        at += static_cast<std::size_t>(n);
+    }
+}
+
 void ResultsFile::finish() {
     std::lock_guard<std::mutex> lock(mutex_);
     if (complete_ || finished_) return;
-    held_ += end_line(done_, failed_);
-    write_all(held_);
-    held_.clear();
+    if (placing_) {
+        flush_locked();
+        if (written_done_ != done_)
+            throw ResultsError(partial_path() + ": " + std::to_string(done_ - written_done_) +
+                               " rows placed were never synced by the ranks that wrote them");
+        write_at_locked(placed_end_, end_line(done_, failed_));
+    } else {
+        held_ += end_line(done_, failed_);
+        write_all(held_);
+        held_.clear();
+    }
     finished_ = true;
     if (options_.path.empty()) return;
     if (::fsync(fd_) != 0) throw ResultsError(partial_path() + ": cannot sync: " + why(errno));

@@ -5,8 +5,10 @@
 //
 // While the batch runs, the rows go to OUT.partial and a state file beside
 // it, OUT.partial.state, records how far that file is good: the jobs
-// written, the failed ones among them, its length in bytes and the SHA-256 of
-// those bytes.  A flush appends the rows held, syncs them to the disk, then
+// written, the failed ones among them, its length in bytes, the header's
+// length, and a checksum of those bytes that sums one term a row
+// (row_digest.hpp), so that rows written by other processes count without
+// passing through this one.  A flush appends the rows held, syncs them to the disk, then
 // replaces the state file atomically (a temporary file, synced, renamed): a
 // kill between the two leaves rows beyond the recorded length, which a resume
 // cuts off, and a kill inside the rename leaves the old state, still true.
@@ -25,10 +27,17 @@
 // Resuming keeps the header already written and appends the rows after it,
 // so that a resumed batch ends with the same bytes as one never interrupted.
 // Without a path the rows go to standard output, and nothing can be resumed.
+//
+// Under MPI the ranks write their own rows (cluster_mpi.cpp): rank 0 places
+// each chunk at the end of those before it, the rank that ran it writes it
+// there and syncs it when asked, and the state counts the chunks in order up
+// to the first not yet synced.  The file is the same, byte for byte.
 #pragma once
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
+#include <deque>
 #include <functional>
 #include <mutex>
 #include <stdexcept>
@@ -36,7 +45,6 @@
 #include <vector>
 
 #include "batch/job_row.hpp"
-#include "batch/sha256.hpp"
 
 namespace rocking::batch {
 
@@ -91,16 +99,36 @@ public:
     ResultsFile(const ResultsFile&) = delete;
     ResultsFile& operator=(const ResultsFile&) = delete;
 
-    std::size_t done() const;    // the jobs written, those a resume skips included
+    std::size_t done() const;    // the jobs written or placed, those a resume skips included
     std::size_t failed() const;  // among them, the rows marked failed
+    std::size_t kept() const;    // the jobs the state on the disk counts (all of done() after a flush on threads)
     // A resume found the results already complete at the path (nothing to run).
     bool complete() const { return complete_; }
     // Job done()'s row (its text without the newline), and whether it failed.
     void append(const std::string& row, bool failed);
     // The rows of jobs done() .. done() + chunk.count() - 1, at once.
     void append(const RowChunk& chunk);
-    // The rows held reach the file, synced, and the state counts them.
+    // The rows held reach the file, synced, and the state counts them (the
+    // chunks placed: those synced by their writers, in order).
     void flush();
+
+    // The ranks' way.  A chunk another process ran and writes itself: its
+    // offset in partial_path(), after every chunk placed before it; the
+    // chunks are placed in the jobs' order, numbered from 0 in this run.
+    std::uint64_t place(const ChunkSummary& chunk);
+    // A chunk this process ran and placed as `number` (the place()s before
+    // it): written at `offset`, by any thread, and synced by the next flush.
+    void write_own(std::size_t number, std::uint64_t offset, const std::string& text);
+    // Both at once.
+    void place_own(const RowChunk& chunk);
+    // Placed chunk `number`'s writer has synced it: the next flush may count it.
+    void synced(std::size_t number);
+    // Before the ranks open partial_path(): `text` written after the rows
+    // kept (where a resume would cut it off) and synced, for the others to
+    // read and so prove they see this file; its offset.  clear_probe() cuts
+    // it off again.
+    std::uint64_t write_probe(const std::string& text);
+    void clear_probe();
     // Every job written: the end line, and the file moves to its path.
     void finish();
     // A run that failed (its threads could not start, a full disk): the
@@ -114,6 +142,7 @@ public:
     // ResultsError when it cannot be read or does not end as a finished one.
     static void read_rows(const std::string& path, std::size_t header_lines,
                           const std::function<void(std::size_t, const std::string&)>& row);
+    bool on_disk() const { return !options_.path.empty(); }
     std::string partial_path() const { return engine_files(options_.path)[1].path; }
     std::string state_path() const { return engine_files(options_.path)[2].path; }
     std::string state_temporary() const { return engine_files(options_.path)[3].path; }
@@ -122,7 +151,13 @@ private:
     void open(const std::string& preamble, const std::string& digest);
     void flush_locked();
     void write_all(const std::string& text);
+    void write_at_locked(std::uint64_t offset, const std::string& text);
     void write_state(std::size_t jobs, std::size_t failed);
+    // Checks the first `bytes` of the partial file against the state's
+    // checksum (`sha256` from a rocking before the sum of row terms, with no
+    // header length), and returns its header.
+    std::string verify_kept(unsigned long long jobs, unsigned long long bytes, unsigned long long header,
+                            std::uint64_t digest, const std::string& sha256);
     void start_fresh(const std::string& preamble);
     bool resume_partial(const std::string& digest);
     void check_complete(const std::string& digest);
@@ -138,8 +173,19 @@ private:
     int fd_ = -1;
     std::string held_;
     std::size_t done_ = 0, failed_ = 0, written_done_ = 0, written_failed_ = 0;
-    unsigned long long bytes_ = 0;
-    Sha256 hash_;  // of the bytes written
+    std::size_t preamble_lines_ = 0;
+    unsigned long long bytes_ = 0, header_bytes_ = 0;
+    std::uint64_t digest_ = 0, held_digest_ = 0;  // row_digest.hpp's sum of the bytes written, and of those held
+    // Chunks placed and not yet counted by the state, in order: own (written by
+    // this process, synced by its flush) or synced by their writer.
+    struct Placed {
+        ChunkSummary chunk;
+        bool own = false, synced = false;
+    };
+    std::deque<Placed> placed_;
+    std::size_t placed_before_ = 0;      // chunks placed and counted before placed_.front()
+    bool placing_ = false, own_unsynced_ = false;
+    unsigned long long placed_end_ = 0;  // where the next chunk goes
     bool complete_ = false, finished_ = false;
     bool began_ = false;  // this run made OUT.partial (or begun it again): its to remove
     std::chrono::steady_clock::time_point last_flush_;
