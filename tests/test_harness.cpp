@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <random>
 #include <functional>
 #include <filesystem>
 #include <fstream>
@@ -157,4 +160,31 @@ TEST(OutputPaths, AnUnwritableOutputIsFoundBeforeTheWorkAndTheProbeLeavesNothing
     EXPECT_NE(error_of([&] { check_outputs({{"--rows", dir}}, {}); }).find("is a folder"), std::string::npos);
     EXPECT_EQ(error_of([&] { check_outputs({{"--output", dir + "/x.csv"}, {"--png", "/dev/null"}}, {}); }), "");
     EXPECT_TRUE(fs::is_empty(dir));
+}
+
+// format_number is printf's %.17g, which every expected file and results row
+// was written with: the same bytes for random bit patterns (every exponent,
+// subnormals), rounded values, halfway cases and the extremes.
+TEST(Harness, FormatNumberIsPrintfs17g) {
+    std::mt19937_64 bits(42);
+    auto printf17 = [](double v) {
+        char text[40];
+        std::snprintf(text, sizeof text, "%.17g", v);
+        return std::string(text);
+    };
+    std::vector<double> values = {0.0, -0.0, 1.0, 0.1, 1e16, 1e17, 9.999999999999999e16, 5e-324, 2.2250738585072014e-308,
+                                  1.7976931348623157e308, 0.5, 2.5, 1e-5, 123456.5};
+    for (int k = 0; k < 1000000; ++k) {
+        const std::uint64_t b = bits();
+        double v;
+        std::memcpy(&v, &b, sizeof v);
+        if (std::isfinite(v)) values.push_back(v);
+        values.push_back(std::round(static_cast<double>(b >> 20) / 1e3) / (k % 2 ? 1e3 : 7.0));
+    }
+    std::size_t differ = 0;
+    for (double v : values)
+        if (format_number(v) != printf17(v) && ++differ < 5) ADD_FAILURE() << printf17(v) << " written " << format_number(v);
+    EXPECT_EQ(differ, 0u);
+    EXPECT_EQ(format_number(NAN), "nan");
+    EXPECT_EQ(format_number(-INFINITY), "-inf");
 }

@@ -33,14 +33,28 @@ std::string absolute(const std::string& folder) {
 
 }  // namespace
 
+void append_csv_cell(std::string& out, std::string_view cell) {
+    out += ',';
+    // One pass over the cell (find_first_of over a set called memchr a character).
+    bool quote = !cell.empty() && (cell.front() == ' ' || cell.back() == ' ' || cell.front() == '\t' || cell.back() == '\t');
+    for (std::size_t k = 0; k < cell.size() && !quote; ++k)
+        quote = cell[k] == ',' || cell[k] == '"' || cell[k] == '\n' || cell[k] == '\r';
+    if (!quote) {
+        out += cell;
+        return;
+    }
+    out += '"';
+    for (char c : cell) {
+        if (c == '"') out += '"';
+        out += c;
+    }
+    out += '"';
+}
+
 std::string csv_cell(const std::string& cell) {
-    const bool quote = cell.find_first_of(",\"\n\r") != std::string::npos ||
-                       (!cell.empty() && (cell.front() == ' ' || cell.back() == ' ' || cell.front() == '\t' ||
-                                          cell.back() == '\t'));
-    if (!quote) return cell;
-    std::string out = "\"";
-    for (char c : cell) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
+    std::string out;
+    append_csv_cell(out, cell);
+    return out.substr(1);
 }
 
 Manifest::Folder Manifest::folder_of(const std::string& path) {

@@ -96,5 +96,8 @@ std::vector<std::string> split_csv_line(std::string_view line);
 // A cell as CSV writes it: quoted when it holds a comma, a quote, a line
 // break or spaces at either end (which reading would drop).
 std::string csv_cell(const std::string& cell);
+// The same appended to `out` after a comma: a row of many cells built
+// without a string a cell (a batch row is written for every job).
+void append_csv_cell(std::string& out, std::string_view cell);
 
 }  // namespace rocking::batch

@@ -2,6 +2,7 @@
 
 #include "harness/atomic_file.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -13,9 +14,12 @@ namespace rocking::harness {
 std::string format_number(double value) {
     if (std::isnan(value)) return "nan";
     if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    // printf's %.17g, by the standard's definition of to_chars with a precision,
+    // at a fifth of its cost: a batch row holds a dozen numbers, and printf took
+    // a tenth of a simulation's time (tests: Harness.FormatNumberIsPrintfs17g).
     char buffer[40];
-    std::snprintf(buffer, sizeof buffer, "%.17g", value);
-    return buffer;
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17).ptr;
+    return std::string(buffer, end);
 }
 
 Table& Table::row() {

@@ -38,6 +38,7 @@ private:
     std::vector<std::pair<std::string, std::string>> notes_;
 };
 
+// printf's "%.17g" (it reads back to the same double), "nan", "inf" or "-inf".
 std::string format_number(double value);
 
 // A CSV read back: header, rows of cells, and the line number of each row.

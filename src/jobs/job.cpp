@@ -203,8 +203,8 @@ void model_from(const Columns& c, const std::vector<std::string>& row, Job& job)
     }
     if (job.equation == Equation::full && job.solver.kind == dynamics::SolverKind::exact)
         bad("solver", "the exact solver handles the linearised equation only (model full)");
-    char range[120];
-    std::snprintf(range, sizeof range, "[%.17g, 1)", dynamics::kSmallestTolerance);
+    // Formatted once: it is said only when a tolerance is refused, and every job passes here.
+    static const std::string range = "[" + g(dynamics::kSmallestTolerance) + ", 1)";
     const std::string& rtol = c.cell(row, "rtol");
     if (!rtol.empty()) {
         const double r = number("rtol", rtol);

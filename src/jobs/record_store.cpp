@@ -9,6 +9,7 @@
 #include "batch/ranks.hpp"
 #include "batch/sha256.hpp"
 #include "dynamics/model.hpp"
+#include "harness/table.hpp"
 #include "records/record.hpp"
 
 namespace rocking::jobs {
@@ -64,9 +65,7 @@ std::shared_ptr<const dynamics::SampledInput> RecordStore::get(const RecordSourc
     if (refuse_unshareable_ && batch::unshareable_by_ranks(source.path))
         throw std::runtime_error(batch::unshareable_text(source.cell) + " and name that file in the manifest");
     const std::string path = canonical(source.path);
-    char step[40];
-    std::snprintf(step, sizeof step, "%.17g", source.dt);
-    const std::string key = path + "\n" + source.unit + "\n" + step;
+    const std::string key = path + "\n" + source.unit + "\n" + harness::format_number(source.dt);
     std::string pinned;
     {
         std::lock_guard<std::mutex> lock(pinned_mutex_);

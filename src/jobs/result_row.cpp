@@ -75,7 +75,7 @@ std::string bands_cell(const std::vector<studies::Band>& bands) {
 std::string result_row(int line, const std::vector<std::string>& echo, const Job* job, const Figures* f,
                        const std::string& error, bool capacities) {
     std::string row = std::to_string(line);
-    for (const std::string& cell : echo) row += "," + batch::csv_cell(cell);
+    for (const std::string& cell : echo) batch::append_csv_cell(row, cell);
     std::vector<std::string> cells;
     cells.push_back(error.empty() ? "ok" : "error");
     if (job) {
@@ -128,7 +128,7 @@ std::string result_row(int line, const std::vector<std::string>& echo, const Job
     for (char& c : one_line)
         if (c == '\n' || c == '\r') c = ' ';
     cells.push_back(one_line);
-    for (const std::string& c : cells) row += "," + batch::csv_cell(c);
+    for (const std::string& c : cells) batch::append_csv_cell(row, c);
     return row;
 }
 
