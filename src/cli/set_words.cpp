@@ -37,8 +37,4 @@ Json bands_json(const std::vector<studies::Band>& bands) {
     return list;
 }
 
-Json nearest_json(const studies::SpectrumFirst& f, double height) {
-    return f.found ? Json{{"found", true}, {"p", f.p}, {"height", height}} : Json{{"found", false}};
-}
-
 }  // namespace rocking::cli

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cli/json_text.hpp"
+#include "json/pieces.hpp"
 #include "studies/overturning_set.hpp"
 #include "studies/spectrum.hpp"
 
@@ -21,8 +22,7 @@ std::string bands_summary(const std::vector<studies::Band>& bands, const char* v
 // [{"from": f, "to": t, "share": s}, ...] for every band, zeros included.
 Json bands_json(const std::vector<studies::Band>& bands);
 
-// A p of the set beside a marked block, with the height of the block of its
-// alpha there: {"found": true, "p": p, "height": h}, or {"found": false}.
-Json nearest_json(const studies::SpectrumFirst& f, double height);
+// A p of the set beside a marked block (json/pieces.hpp).
+using json::nearest_json;
 
 }  // namespace rocking::cli
