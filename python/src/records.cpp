@@ -10,6 +10,7 @@
 #include "studies/assessment.hpp"
 #include "json/assess_json.hpp"
 #include "json/collapse_json.hpp"
+#include "json/record_json.hpp"
 #include "dynamics/ground_input.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "qfactor/superposition.hpp"
@@ -130,20 +131,10 @@ py::dict record_info(py::handle record) {
         py::gil_scoped_release unlocked;  // the CWT: seconds on 10^6 samples
         h = checked_half_periods(*r);
     }
-    py::dict out = result();
+    py::dict out = to_python(json::record_info_json(label_of(*r), *r, h));
+    // A path as os.fsdecode gives it; NumPy arrays where the command's --json has lists; then the module's own members.
     out["file"] = file_of(*r);
-    out["format"] = text(r->format);
-    out["name"] = text(r->name);
-    out["samples"] = r->accel.size();
-    out["dt"] = r->dt;
-    out["pga_ms2"] = h.pga;
-    out["pgv_ms"] = h.pgv;
-    out["amax_ms"] = h.amax;
     out["to"] = to_array(std::vector<double>(h.to.begin(), h.to.end()));
-    py::list edge;
-    for (int k = 0; k < 4; ++k)
-        if (h.cwt_at_band_edge[k]) edge.append(8 + k);
-    out["to_at_band_edge"] = edge;
     out["cwt_band_hz"] = to_array({h.cwt_band_hz[0], h.cwt_band_hz[1]});
     out["f_fourier_acc"] = h.f_fourier_acc;
     out["f_fourier_vel"] = h.f_fourier_vel;
