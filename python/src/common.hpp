@@ -85,8 +85,8 @@ py::object none_if_nan(double v);  // JSON's null: a value that is not finite
 // order of some keys) each function puts in place after.
 enum class Dicts { results, plain };
 py::object to_python(const json::Json& v, Dicts dicts = Dicts::results);
-// d (a dict or a Result) with keys moved to stand before the key `before`, the
-// others in their order: the Python module's order where it has its own.
+// d (a dict or a Result) with those of keys it has moved to stand before the
+// key `before`, the others in their order: the module's order where it has its own.
 py::dict with_keys_before(const py::dict& d, const std::vector<const char*>& keys, const char* before);
 
 // A bad argument, said as the command line says it with the keyword's name:

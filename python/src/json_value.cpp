@@ -35,7 +35,8 @@ py::dict with_keys_before(const py::dict& d, const std::vector<const char*>& key
     py::dict out = py::type::of(d)();
     for (auto [key, value] : d) {
         if (py::str(key).cast<std::string>() == before)
-            for (const char* k : keys) out[k] = d[k];
+            for (const char* k : keys)
+                if (d.contains(k)) out[k] = d[k];
         out[key] = value;
     }
     return out;
