@@ -15,6 +15,7 @@
 #include "dynamics/ground_input.hpp"
 #include "dynamics/imperfect_block.hpp"
 #include "jobs/spectrum_plan.hpp"
+#include "json/fragility_json.hpp"
 #include "json/spectrum_json.hpp"
 #include "records/collapse.hpp"
 #include "studies/distinct_inputs.hpp"
@@ -144,47 +145,6 @@ py::dict spectrum(py::handle record, const py::object& alpha, const std::optiona
 
 // ---- rocking fragility ----
 
-py::object bracket(bool has, const studies::Bracket& b) {
-    if (!has) return py::none();
-    py::dict d = result();
-    d["q_safe"] = b.safe;
-    d["q_collapse"] = b.collapse;
-    return std::move(d);
-}
-
-
-
-py::dict point_dict(const studies::IdaPoint& p) {
-    py::dict d = result();
-    d["q"] = p.q;
-    d["collapsed"] = p.collapsed;
-    return d;
-}
-
-// The refine method's fields of a record, as rocking fragility --json's.
-void add_refine_fields(py::dict& d, const Ida& ida) {
-    const bool bracketed = ida.first_overturning.collapsed && ida.intervals.front().has_lower;
-    py::dict first = point_dict(ida.first_overturning);
-    first["bracket"] = bracket(bracketed, bracketed ? ida.intervals.front().lower : studies::Bracket{});
-    if (bracketed) {
-        py::dict c = result();
-        c["confirmation"] = studies::confirmation_name(ida.intervals.front().lower_check.confirmation);
-        c["detail"] = text(ida.intervals.front().lower_check.detail);
-        first["check"] = c;
-    } else {
-        first["check"] = py::none();
-    }
-    d["first_overturning"] = first;
-    d["first_robust_collapse"] = point_dict(ida.first_robust_collapse);
-    d["bands"] = to_python(json::bands_json(ida.bands));
-    d["method"] = "refine";
-    d["samples"] = ida.samples;
-    d["accepted"] = ida.accepted;
-    d["at_width"] = ida.at_width;
-    d["with_margins"] = ida.with_margins;
-    d["unguaranteed_from"] = none_if_nan(ida.unguaranteed_from);
-}
-
 py::dict fragility(const py::object& records_given, const py::object& alpha, const py::object& p, const Real& q_max,
                    const Whole& points, const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed,
                    const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
@@ -255,79 +215,33 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         studies::refuse_repeated_records(labels, given);
         study = studies::fragility_study(views, blocks, o);
     }
-    py::dict out = result();
-    out["model"] = o.ida.describe_model();
-    py::dict grid = result();
-    grid["q_min"] = o.ida.q_min;
-    grid["q_max"] = o.ida.q_max;
-    grid["points"] = o.ida.points;
-    grid["rel_tol"] = o.ida.rel_tol;
-    grid["note"] = o.ida.describe_grid() + "; " + o.ida.describe_q() + "; " + o.ida.describe_checks();
-    if (refine) {
-        grid["method"] = "refine";
-        grid["width"] = o.ida.width;
-        grid["robust_width"] = o.ida.robust_width;
-        grid["fit_capacity"] = "first_overturning";
-        grid["stripe_half_width"] = studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points);
-        grid["refine_note"] = o.describe_fits();
+    std::vector<std::string> labels;
+    for (const RecordPtr& r : recs) labels.push_back(label_of(*r));
+    json::Json doc = json::fragility_document(labels, o, study);
+    // The empirical shares and the stripes go to Python as NumPy columns (below), not as lists of objects.
+    for (json::Json& b : doc["blocks"]) {
+        b["empirical"] = nullptr;
+        if (b.contains("stripes")) b["stripes"] = nullptr;
     }
-    out["grid"] = grid;
-    py::list blocks_out;
-    for (const BlockFragility& f : study) {
-        py::dict b = result();
-        b["alpha"] = f.block.alpha;
-        b["p"] = f.block.p;
-        if (!f.block.built.empty()) b["built"] = f.block.built;
-        // An imperfect block's grid may start below q_min, where it lifts.
-        if (o.ida.model.imperfection.any()) {
-            b["q_start"] = o.ida.q_start(f.block.alpha, f.block.p);
-            if (refine) b["stripe_half_width"] = studies::stripe_half_width(o.ida.q_start(f.block.alpha, f.block.p), o.ida.q_max, o.ida.points);
-        }
-        py::list rows;
+    py::dict out = to_python(doc);
+    py::list blocks_out = out["blocks"];
+    for (std::size_t i = 0; i < study.size(); ++i) {
+        const BlockFragility& f = study[i];
+        py::dict b = blocks_out[i];
+        py::list rows = b["records"];
         for (std::size_t k = 0; k < recs.size(); ++k) {
-            const Ida& ida = f.idas[k];
-            py::dict d = result();
-            d["file"] = file_of(*recs[k]);
-            d["sha256"] = f.identities[k];
-            d["q_input"] = ida.q_input;
-            d["q"] = ida.point.q;
-            d["collapsed"] = ida.point.collapsed;
-            if (ida.point.collapsed && ida.intervals.front().has_lower) {
-                py::dict c = result();
-                c["confirmation"] = studies::confirmation_name(ida.intervals.front().lower_check.confirmation);
-                c["detail"] = text(ida.intervals.front().lower_check.detail);
-                d["point_check"] = c;
-            } else {
-                d["point_check"] = py::none();
-            }
-            d["simulations"] = ida.simulations;
-            d["check_simulations"] = ida.check_simulations;
-            py::list intervals;
-            for (const studies::IdaInterval& in : ida.intervals) {
-                py::dict i = result();
-                i["from"] = in.from;
-                i["to"] = in.to;
-                i["lower"] = bracket(in.has_lower, in.lower);
-                i["upper"] = bracket(in.has_upper, in.upper);
-                intervals.append(i);
-            }
-            d["intervals"] = intervals;
-            if (refine) add_refine_fields(d, ida);
-            rows.append(d);
+            py::dict d = rows[k];
+            d["file"] = file_of(*recs[k]);  // a path as os.fsdecode gives it
+            if (refine) d["unguaranteed_from"] = none_if_nan(f.idas[k].unguaranteed_from);  // None where --json has null
         }
-        b["records"] = rows;
-        b["fit"] = block_fit(f);
-        b["no_fit"] = f.fitted ? py::object(py::none()) : py::object(text(f.no_fit));
+        add_block_fit_members(b, f);
         std::vector<double> q, share;
         for (const studies::EmpiricalPoint& e : f.empirical) q.push_back(e.q), share.push_back(e.share);
         py::dict empirical = result();
         empirical["q"] = to_array(q);
         empirical["share"] = to_array(share);
         b["empirical"] = empirical;
-        if (f.three_ways) add_three_ways(b, f);
-        blocks_out.append(b);
     }
-    out["blocks"] = blocks_out;
     if (nrml) {
         // rocking fragility --nrml's file, its blocks without a fit as --nrml's warnings.
         std::vector<std::string> names;
