@@ -1,6 +1,7 @@
 // The library's documents as Python values (common.hpp, to_python).
 #include "common.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace rocking::python {
@@ -32,12 +33,14 @@ py::object to_python(const json::Json& v, Dicts dicts) {
 }
 
 py::dict with_keys_before(const py::dict& d, const std::vector<const char*>& keys, const char* before) {
+    if (!d.contains(before)) return d;
     py::dict out = py::type::of(d)();
     for (auto [key, value] : d) {
-        if (py::str(key).cast<std::string>() == before)
+        const std::string name = py::str(key);
+        if (name == before)
             for (const char* k : keys)
                 if (d.contains(k)) out[k] = d[k];
-        out[key] = value;
+        if (std::find(keys.begin(), keys.end(), name) == keys.end()) out[key] = value;
     }
     return out;
 }
