@@ -2,6 +2,7 @@
 // or by alpha (dynamics/block_geometry.hpp), and a floor's motion in place
 // of the ground's (records/floor_motion.hpp).
 #include "common.hpp"
+#include "json/pieces.hpp"
 #include "records/floor_motion.hpp"
 #include "records/synthetic.hpp"
 
@@ -24,10 +25,9 @@ dynamics::GivenBlock block_argument(const std::optional<Real>& thickness, const 
 }
 
 void add_block_members(py::dict& out, const dynamics::GivenBlock& b) {
-    out["given"] = dynamics::given_name(b);
-    out["thickness"] = b.sized() ? py::object(py::float_(b.thickness)) : py::object(py::none());
-    out["height"] = b.sized() ? py::object(py::float_(b.height)) : py::object(py::none());
-    out["R"] = b.sized() ? py::object(py::float_(b.block.R)) : py::object(py::none());
+    json::Json members;
+    json::add_block(members, b);
+    for (auto [key, value] : to_python(members).cast<py::dict>()) out[key] = value;
 }
 
 RecordPtr with_floor(const RecordPtr& ground, const std::optional<Text>& floor) {

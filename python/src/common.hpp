@@ -16,6 +16,7 @@
 
 #include "dynamics/block_geometry.hpp"
 #include "dynamics/simulate.hpp"
+#include "json/document.hpp"
 #include "pulse/pulse_train.hpp"
 #include "records/measures.hpp"
 #include "records/record.hpp"
@@ -74,6 +75,19 @@ void set_module(py::module_& m);
 void define_result(py::module_& m);
 py::dict result();            // an empty Result, to fill as a dict
 py::object none_if_nan(double v);  // JSON's null: a value that is not finite
+
+// A document of the library (src/json/document.hpp), the command's --json, as
+// Python values: an object a Result (or, Dicts::plain, a dict) with the keys
+// in the document's order, an array a list, a string as text() decodes it, an
+// integer an int, a double a float (nan and inf too: where the command line
+// prints null, the caller says what Python holds), null None.  What Python
+// gives otherwise (NumPy arrays, a file's path as os.fsdecode gives it, the
+// order of some keys) each function puts in place after.
+enum class Dicts { results, plain };
+py::object to_python(const json::Json& v, Dicts dicts = Dicts::results);
+// d (a dict or a Result) with those of keys it has moved to stand before the
+// key `before`, the others in their order: the module's order where it has its own.
+py::dict with_keys_before(const py::dict& d, const std::vector<const char*>& keys, const char* before);
 
 // A bad argument, said as the command line says it with the keyword's name:
 // a ValueError.

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "json/simulate_json.hpp"
 #include "dynamics/ground_input.hpp"
 #include "dynamics/sliding/sliding_simulate.hpp"
 #include "records/collapse.hpp"
@@ -63,45 +64,17 @@ py::dict sliding_result(const dynamics::GivenBlock& given, const GroundInput& in
         py::gil_scoped_release unlocked;
         r = sliding::simulate_sliding(block, input, o);
     }
-    py::dict out = result();
     records::CollapseOptions stated = m;
     stated.criterion = criterion;
-    out["model"] = stated.describe_model();
-    out["friction"] = m.friction;
-    add_block_members(out, given);
-    out["alpha"] = alpha;
-    out["p"] = p;
-    out["R_from_p"] = block.R;
-    out["input"] = text(input.describe());
-    out["solver"] = o.describe();
-    out["criterion"] = dynamics::criterion_name(criterion);
-    out["collapse"] = r.collapse(criterion, alpha);
-    out["t_fin"] = r.t_fin;
-    out["theta_tfin_over_alpha"] = r.overturned_during_input ? py::object(py::none()) : py::object(py::float_(r.theta_at_tfin / alpha));
-    out["max_theta_input_over_alpha"] = r.max_abs_theta_input / alpha;
-    out["overturned"] = r.overturned;
-    out["overturned_during_input"] = r.overturned_during_input;
-    out["t_overturn"] = std::isnan(r.t_overturn) ? py::object(py::none()) : py::object(py::float_(r.t_overturn));
-    out["impacts"] = r.impacts;
-    out["slipping_impacts"] = r.slipping_impacts;
-    out["slip_tfin_m"] = r.slip_at_tfin;
-    out["max_slip_m"] = r.max_abs_slip;
-    out["final_slip_m"] = r.final_slip;
-    out["rtol"] = o.rtol;
-    out["atol_rad"] = o.atol_alpha * alpha;
-    py::dict time_in, energy;
-    for (const char* name : {"rest", "slide", "rock", "slide_rock"}) time_in[name] = r.time_in[time_in.size()];
-    out["time_in"] = time_in;
-    energy["input_work"] = r.input_work;
-    energy["friction_loss"] = r.friction_loss;
-    energy["impact_loss"] = r.impact_loss;
-    energy["balance_error_over_gR"] = r.balance_error;
-    out["energy"] = energy;
-    for (Criterion c : {Criterion::final_rotation, Criterion::peak_rotation, Criterion::overturning}) {
-        std::string key = "collapse_" + dynamics::criterion_name(c);  // collapse_final_rotation, as --json
-        std::replace(key.begin(), key.end(), '-', '_');
-        out[py::str(key)] = r.collapse(c, alpha);
-    }
+    const json::Json doc = json::sliding_run_json({stated, given, block, input, o, criterion, r});
+    py::dict out = to_python(doc);
+    // The module's own order (the block's members before alpha, the tolerances after the slips), None for a NaN
+    // t_overturn, time_in and energy as dicts.
+    out = with_keys_before(out, {"given", "thickness", "height", "R"}, "alpha");
+    out = with_keys_before(out, {"rtol", "atol_rad"}, "time_in");
+    out["t_overturn"] = none_if_nan(r.t_overturn);
+    out["time_in"] = to_python(doc["time_in"], Dicts::plain);
+    out["energy"] = to_python(doc["energy"], Dicts::plain);
     // theta(t) and the slip every dt, as --output's rows.
     std::vector<double> t, theta, omega, slip, rate;
     py::list regime;
@@ -309,37 +282,14 @@ py::dict simulate_of(const std::optional<Real>& alpha_given, const std::optional
     const std::string tolerance = options.solver.kind == SolverKind::exact
                                       ? std::string(" (closed form between events)")
                                       : " (" + tolerance_text(options.solver) + atol_rad + ")";
-    auto collapsed = [&](Criterion c) { return r.collapse(c, alpha_plus, alpha_minus); };
-    const bool collapse = collapsed(criterion);
-    py::dict out = result();
-    out["model"] = text(model.describe());
-    out["preset"] = paper ? "paper" : "physical";
-    add_block_members(out, given);
-    out["input"] = text(input->describe());
-    out["solver"] = solver_name(options.solver.kind);
-    out["rtol"] = options.solver.rtol;
-    out["atol_rad"] = options.solver.atol_alpha * alpha;
-    out["criterion"] = dynamics::criterion_name(criterion);
-    out["collapse"] = collapse;
-    out["t_fin"] = r.t_fin;
-    out["theta_tfin_over_alpha"] = r.overturned_during_input ? py::object(py::none()) : py::object(py::float_(r.theta_at_tfin / alpha));
-    out["max_theta_input_over_alpha"] = r.max_abs_theta_input / alpha;
-    out["input_lifts_block"] = dynamics::input_lifts(*input, model);
-    out["impacts"] = r.impacts;
-    out["overturned"] = r.overturned;
-    out["overturned_during_input"] = r.overturned_during_input;
-    out["t_overturn"] = std::isnan(r.t_overturn) ? py::object(py::none()) : py::object(py::float_(r.t_overturn));
-    out["collapse_final_rotation"] = collapsed(Criterion::final_rotation);
-    out["collapse_peak_rotation"] = collapsed(Criterion::peak_rotation);
-    out["collapse_overturning"] = collapsed(Criterion::overturning);
-    if (imp.any()) {
-        out["imperfection"] = imperfection_dict(imp, given.block, e);
-        out["peak_over_own_alpha"] = dynamics::peak_over_own_alpha(r, model);
-    }
-    if (!model.symmetric()) {
-        out["peak_plus_over_alpha_plus"] = r.peak_plus_input / model.block.alpha;
-        out["peak_minus_over_alpha_minus"] = r.peak_minus_input / model.minus.alpha;
-    }
+    const json::RockingRun run{model, given, *input, options, criterion, r, paper, alpha_plus, alpha_minus, imp, e};
+    const json::Json doc = json::rocking_run_json(run);
+    py::dict out = to_python(doc);
+    // The module's own: alpha and p after the fields below, None for a NaN t_overturn, imperfection as dicts.
+    out.attr("pop")("alpha");
+    out.attr("pop")("p");
+    out["t_overturn"] = none_if_nan(r.t_overturn);
+    if (imp.any()) out["imperfection"] = to_python(doc["imperfection"], Dicts::plain);
     // What the text output and --output's notes state beside the JSON's fields.
     out["solver_description"] = solver_name(options.solver.kind) + tolerance;
     out["alpha"] = alpha;

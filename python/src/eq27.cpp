@@ -11,6 +11,7 @@
 #include "dynamics/imperfect_block.hpp"
 #include "common.hpp"
 #include "fragility_fits.hpp"
+#include "json/eq27_json.hpp"
 #include "studies/distinct_inputs.hpp"
 #include "studies/eq27_at_scale.hpp"
 #include "studies/search_alpha.hpp"
@@ -31,53 +32,33 @@ py::array_t<int> counts(const std::array<int, studies::kHalfPeriods>& c) {
     return a;
 }
 
-// A study's censored count, shares, each record's counts, the map and each
-// case's capacity, as rocking eq27 --json writes them (src/cli/eq27.cpp, study_json).
-void add_study(py::dict& out, const Eq27Study& s, const std::vector<RecordPtr>& recs) {
+// What the module holds of a study beside the document's (json::add_eq27_study),
+// into the converted study: the intervals and counts as NumPy arrays, paths as
+// os.fsdecode gives them, and after the map each case's capacity q (or q_max,
+// censored), record-major, for a plot of one's own.
+void add_study_members(py::dict out, const Eq27Study& s, const std::vector<RecordPtr>& recs) {
     const bool boot = s.bootstrap.resamples > 0;
-    out["censored"] = s.censored;
-    py::list shares;
+    py::list shares = out["shares"];
     for (int k = 0; k < studies::kHalfPeriods; ++k) {
         const studies::Eq27Share& sh = s.shares[k];
-        int blocks_with_any = 0;
-        for (const studies::Eq27Cell& c : s.map) blocks_with_any += c.non_conservative[k] > 0;
-        py::dict d = result();
-        d["k"] = k + 1;
-        d["non_conservative"] = sh.non_conservative;
-        d["cases"] = sh.cases;
-        d["share"] = sh.share;
-        d["bootstrap"] = boot ? py::object(range_array(sh.bootstrap)) : py::object(py::none());
+        py::dict d = shares[k];
+        if (boot) d["bootstrap"] = range_array(sh.bootstrap);
         d["wilson"] = to_array({sh.wilson.lo, sh.wilson.hi});
-        d["records_with_any"] = sh.records_with_any;
-        d["records"] = sh.records;
-        d["blocks_with_any"] = blocks_with_any;
-        shares.append(d);
     }
-    out["shares"] = shares;
     std::vector<std::array<int, studies::kHalfPeriods>> by_record(s.records, std::array<int, studies::kHalfPeriods>{});
     for (const studies::Eq27Case& c : s.cases)
         for (int k = 0; k < studies::kHalfPeriods; ++k) by_record[c.record][k] += c.non_conservative[k];
-    py::list records_out;
+    py::list records_out = out["by_record"];
     for (std::size_t r = 0; r < by_record.size(); ++r) {
-        py::dict d = result();
+        py::dict d = records_out[r];
         d["file"] = file_of(*recs[r]);
-        d["sha256"] = s.identities[r];
         d["non_conservative"] = counts(by_record[r]);
-        records_out.append(d);
     }
-    out["by_record"] = records_out;
-    py::list map;
-    for (const studies::Eq27Cell& c : s.map) {
-        py::dict d = result();
-        d["alpha"] = c.block.alpha;
-        d["p"] = c.block.p;
-        d["records"] = c.records;
-        d["censored"] = c.censored;
-        d["non_conservative"] = counts(c.non_conservative);
-        map.append(d);
+    py::list map = out["map"];
+    for (std::size_t c = 0; c < s.map.size(); ++c) {
+        py::dict cell = map[c];
+        cell["non_conservative"] = counts(s.map[c].non_conservative);
     }
-    out["map"] = map;
-    // Each case's capacity q (or q_max, censored), record-major, for a plot of one's own.
     const std::size_t n = s.cases.size();
     py::array_t<double> q(n);
     py::array_t<bool> collapsed(n);
@@ -150,53 +131,22 @@ py::dict eq27(const py::object& records_given, const py::object& alpha, const st
         studies::refuse_repeated_records(labels, given);  // as rocking eq27: its cases would count twice
         by = studies::eq27_at_scale_by_capacity(rows, o);
     }
-    const Eq27Study& s = by.first_overturning;
-    const bool boot = s.bootstrap.resamples > 0;
-    py::dict out = result();
-    out["model"] = o.ida.describe_model();
-    out["ida"] = o.ida.describe_grid();
-    out["q_max"] = o.ida.q_max;
-    if (refine) {
-        out["method"] = "refine";
-        out["width"] = o.ida.width;
-        out["robust_width"] = o.ida.robust_width;
-        out["refine_note"] = studies::eq27_refine_note(o.ida);
+    std::vector<std::string> labels;
+    for (const RecordPtr& r : recs) labels.push_back(label_of(*r));
+    // The by-record and map counts come back as NumPy arrays (add_study_members): not converted first.
+    json::Json doc = json::eq27_document(labels, o, by);
+    for (json::Json* study : {&doc, refine ? &doc["first_robust_collapse"] : nullptr}) {
+        if (!study) continue;
+        for (json::Json& row : (*study)["by_record"]) row["non_conservative"] = nullptr;
+        for (json::Json& cell : (*study)["map"]) cell["non_conservative"] = nullptr;
     }
-    out["blocks"] = o.grid.describe();
-    out["verdict"] = kEq27Verdict;
-    py::dict wilson = result();
-    wilson["level"] = s.level;
-    wilson["note"] = kEq27WilsonNote;
-    out["wilson"] = wilson;
-    out["bootstrap_run"] = boot;
-    if (boot) {
-        py::dict b = result();
-        b["over"] = "records";
-        b["resamples"] = s.bootstrap.resamples;
-        b["seed"] = s.bootstrap.seed;
-        b["level"] = s.bootstrap.level;
-        out["bootstrap"] = b;
-    } else {
-        out["bootstrap"] = py::none();
-        out["bootstrap_note"] = kEq27NoBootstrap;
-    }
-    out["records"] = s.records;
-    py::list files;
-    for (const RecordPtr& r : recs) files.append(file_of(*r));
-    out["files"] = files;
-    out["cases"] = s.cases.size();
-    // The refine method: the members as the grid's under the first overturning
-    // (the IDA's point, either method), the robust collapse's in a dict.
+    py::dict out = to_python(doc);
+    py::list files = out["files"];
+    for (std::size_t k = 0; k < recs.size(); ++k) files[k] = file_of(*recs[k]);  // paths as os.fsdecode gives them
+    add_study_members(out, by.first_overturning, recs);
     if (refine) {
-        out["capacity"] = "first_overturning";
-        out["capacity_note"] = studies::kEq27FirstOverturningNote;
-    }
-    add_study(out, s, recs);
-    if (refine) {
-        py::dict robust = result();
-        robust["capacity_note"] = studies::kEq27RobustCollapseNote;
-        add_study(robust, by.first_robust_collapse, recs);
-        out["first_robust_collapse"] = robust;
+        out = with_keys_before(out, {"case_points"}, "first_robust_collapse");  // each study's own, as before
+        add_study_members(out["first_robust_collapse"], by.first_robust_collapse, recs);
     }
     return out;
 }

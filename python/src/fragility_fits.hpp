@@ -1,8 +1,7 @@
-// The fragility fits of a block as dicts, as rocking fragility --json writes
-// them (src/cli/fragility.cpp): each fit with its bootstrap and ln L, or None.
+// What the module's fragility results hold beside the document's fits
+// (json/fragility_json.hpp): ln L at each fit, the bootstrap's ranges and the
+// stripes as NumPy arrays.
 #pragma once
-
-#include <string>
 
 #include "common.hpp"
 #include "studies/ida.hpp"
@@ -12,21 +11,13 @@ namespace rocking::python {
 // [lo, hi] as an array of two.
 py::array_t<double> range_array(const studies::Range& r);
 
-// The bootstrap's {resamples, seed, level, median, beta}, or None.
-py::object bootstrap_dict(bool bootstrapped, const studies::BootstrapInterval& interval);
+// Into a fit converted from the document (a Result, or None for no fit): its
+// bootstrap's "median" and "beta" as arrays of two, and "log_likelihood", ln
+// L at the fit, after its members.
+void add_fit_members(py::handle fit, double log_likelihood, const studies::BootstrapInterval& interval);
 
-// A censored lognormal fit {median, beta, collapsed, censored, bootstrap, log_likelihood}, or None.
-py::object lognormal(bool fitted, const studies::LognormalFragility& fit, bool bootstrapped,
-                     const studies::BootstrapInterval& interval);
-
-// The block's fit (on the first collapse, the first overturning with refine).
-py::object block_fit(const studies::BlockFragility& f);
-
-// {fit, no_fit}: the fit, or None and why.
-py::dict fit_entry(const py::object& fit, bool fitted, const std::string& no_fit);
-
-// The refine method's three fits, each named by its capacity, and the stripes
-// (arrays q, from, to, share), as --json's "fits" and "stripes".
-void add_three_ways(py::dict& b, const studies::BlockFragility& f);
+// Into a block converted from the document: the fits' members above, and with
+// the three capacities "stripes" as arrays q, from, to, share.
+void add_block_fit_members(py::dict& block, const studies::BlockFragility& f);
 
 }  // namespace rocking::python

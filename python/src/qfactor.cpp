@@ -6,13 +6,12 @@
 
 #include "common.hpp"
 #include "qfactor/closed_forms.hpp"
+#include "json/qfactor_json.hpp"
 #include "qfactor/superposition.hpp"
 
 namespace rocking::python {
 
 namespace {
-
-const char* kModel = "linearised eq. 3, one corner, no impact, collapse theta(t_fin) = alpha";
 
 // f over every element of x (any shape, a real dtype), as a float for a
 // scalar and an array of x's shape otherwise.  The library's refusal of an
@@ -45,14 +44,6 @@ py::object over_x(py::handle x, const std::function<double(double)>& f) {
     return std::move(out);
 }
 
-// Where the closed forms hold at this q: the JSON's four flags (src/cli/validity.cpp).
-void validity(py::dict& r, const Excursion& e) {
-    r["rocking_starts"] = e.onset;
-    r["impact_free"] = e.stays_positive();
-    r["motion_reverses"] = e.min_dphi < 0;
-    r["passes_alpha_before_t_fin"] = e.onset && e.passes_alpha();
-}
-
 double x_argument(double x) {
     if (!(x > 0)) refuse("x: must be > 0 (got " + significant(x, 17) + ")");
     if (x < kSmallestX)
@@ -76,16 +67,8 @@ py::dict q_info(const Real& x_given, const std::optional<Whole>& which_case, con
     const double x = x_argument(number(x_given, "x"));
     const QFactor q = q_factor(t, x);
     const Excursion e = collapse_excursion(t, x);
-    py::dict r = result();
-    r["input"] = t.name();
-    r["pulses"] = t.size();
-    r["x"] = x;
-    r["q"] = q.q;
-    r["condition"] = q.condition;
-    r["equation"] = equation;
-    r["model"] = kModel;
-    validity(r, e);
-    r["t_fin_over_to"] = t.t_fin();
+    py::dict r = to_python(json::q_json(t, x, q, equation, e));
+    r["t_fin_over_to"] = t.t_fin();  // the module's own member: not in the command's --json
     return r;
 }
 
@@ -124,20 +107,8 @@ py::dict response_of(const Real& x_given, const std::optional<Whole>& which_case
         cell(k, 1) = rows[k].phi;
         cell(k, 2) = rows[k].dphi;
     }
-    py::dict r = result();
-    r["input"] = t.name();
-    r["x"] = x;
-    r["q"] = q;
-    r["at_collapse_q"] = at_collapse;
-    r["model"] = kModel;
-    validity(r, e);
-    const bool complete = last == steps;
-    r["rows_complete"] = complete;
-    r["rows_end_at"] = complete ? py::object(py::none()) : py::object(py::float_(t.t_fin() * (last + 1) / steps));
-    r["rows_end_reason"] = complete ? py::object(py::none())
-                                    : py::object(py::str("theta/alpha leaves the double range (beyond 1.8e308) on the "
-                                                         "linearised equation"));
-    r["samples"] = samples;
+    py::dict r = to_python(json::response_json(t, x, q, at_collapse, e, rows, steps));
+    r["samples"] = samples;  // an (n, 3) array where the command's --json has a list of rows
     // The columns of rocking response's text output, t/to, theta/alpha, theta'/(alpha p).
     py::object columns = samples.attr("T");
     r["t_over_to"] = columns[py::int_(0)];

@@ -8,6 +8,9 @@
 #include "studies/distinct_inputs.hpp"
 #include "study_arguments.hpp"
 #include "studies/assessment.hpp"
+#include "json/assess_json.hpp"
+#include "json/collapse_json.hpp"
+#include "json/record_json.hpp"
 #include "dynamics/ground_input.hpp"
 #include "qfactor/closed_forms.hpp"
 #include "qfactor/superposition.hpp"
@@ -128,20 +131,10 @@ py::dict record_info(py::handle record) {
         py::gil_scoped_release unlocked;  // the CWT: seconds on 10^6 samples
         h = checked_half_periods(*r);
     }
-    py::dict out = result();
+    py::dict out = to_python(json::record_info_json(label_of(*r), *r, h));
+    // A path as os.fsdecode gives it; NumPy arrays where the command's --json has lists; then the module's own members.
     out["file"] = file_of(*r);
-    out["format"] = text(r->format);
-    out["name"] = text(r->name);
-    out["samples"] = r->accel.size();
-    out["dt"] = r->dt;
-    out["pga_ms2"] = h.pga;
-    out["pgv_ms"] = h.pgv;
-    out["amax_ms"] = h.amax;
     out["to"] = to_array(std::vector<double>(h.to.begin(), h.to.end()));
-    py::list edge;
-    for (int k = 0; k < 4; ++k)
-        if (h.cwt_at_band_edge[k]) edge.append(8 + k);
-    out["to_at_band_edge"] = edge;
     out["cwt_band_hz"] = to_array({h.cwt_band_hz[0], h.cwt_band_hz[1]});
     out["f_fourier_acc"] = h.f_fourier_acc;
     out["f_fourier_vel"] = h.f_fourier_vel;
@@ -354,20 +347,10 @@ py::dict collapse(py::handle record, const Real& alpha_given, const Text& model,
         refuse_unresolvable_run(o.p_max, input.t_end(), "record " + label_of(*r));  // the search's p_max is its own
         c = records::smallest_collapse_p(input, alpha, o);
     }
-    py::dict out = result();
-    out["file"] = file_of(*r);
-    out["alpha"] = alpha;
-    out["found"] = c.found;
-    out["p"] = c.found ? py::object(py::float_(c.p)) : py::object(py::none());
-    out["p_safe"] = c.found && !c.below_range() ? py::object(py::float_(c.p_safe)) : py::object(py::none());
-    out["below_range"] = c.below_range();
-    out["simulations"] = c.simulations;
-    out["search"] = o.describe();
-    // As rocking collapse --json: each corner at the p found, or the imperfections alone.
-    if (o.imperfection.any())
-        out["imperfection"] = c.found ? imperfection_dict(o.imperfection, dynamics::Block::from_p(c.p, alpha),
-                                                          o.housner_restitution ? NAN : o.restitution)
-                                      : imperfection_inputs_dict(o.imperfection);
+    const json::Json doc = json::collapse_json(label_of(*r), alpha, c, o, nullptr);
+    py::dict out = to_python(doc);
+    out["file"] = file_of(*r);  // a path as os.fsdecode gives it
+    if (o.imperfection.any()) out["imperfection"] = to_python(doc["imperfection"], Dicts::plain);
     return out;
 }
 
@@ -421,72 +404,21 @@ py::dict assess(py::handle records_given, const std::optional<Real>& thickness, 
         py::gil_scoped_release unlocked;
         a = studies::assess_block(views, motions, studies::BlockShape{alpha, given.block.p, given.label}, o);
     }
-    auto first = [](const studies::IdaPoint& at, double scale, double to) {
-        py::dict d = result();
-        d["found"] = at.collapsed;
-        d["q"] = at.q;
-        d["scale"] = scale;
-        if (at.collapsed) d["interval_to"] = to;  // as --json: only where found
-        return d;
-    };
-    py::list rows;
-    for (std::size_t k = 0; k < held.size(); ++k) {
-        const studies::RecordAssessment& r = a.records[k];
-        py::dict d = result();
-        d["file"] = file_of(*held[k]);
-        d["name"] = text(held[k]->name);
-        d["pga_g"] = r.motion.pga / dynamics::kGravity;
-        d["to5"] = r.motion.to5;
-        d["x"] = r.x;
-        d["q_eq27"] = r.q_eq27;
-        d["q_eq27_as_printed"] = r.q_eq27_as_printed;
-        d["eq27_side"] = r.eq27_side;
-        d["eq27_passes_alpha_before_t_fin"] = r.eq27_passes_alpha;
-        d["eq27_impact_before_t_fin"] = r.eq27_strikes;
-        d["q_record"] = r.q_record;
-        d["ratio"] = r.ratio;
-        d["margin"] = r.margin;
-        d["passes"] = r.passes;
-        d["overturns"] = r.overturns;
-        d["fell_during_input"] = r.fell_during_input;
-        d["peak_theta_over_alpha"] = r.peak_theta_over_alpha;
-        d["first_overturning"] = first(r.ida.first_overturning, r.scale_first_overturning, r.first_overturning_to);
-        d["first_robust_collapse"] = first(r.ida.first_robust_collapse, r.scale_first_robust, r.first_robust_to);
-        d["change_below"] = nearest_side(r.mark.below, r.mark.height_below);
-        d["change_above"] = nearest_side(r.mark.above, r.mark.height_above);
-        d["change_below_far"] = nearest_side(r.mark.below_far, studies::far_height(r.mark, r.mark.below_far));
-        d["change_above_far"] = nearest_side(r.mark.above_far, studies::far_height(r.mark, r.mark.above_far));
-        d["in_spectrum_set"] = r.mark.in_set;
-        d["guaranteed"] = std::isfinite(r.ida.unguaranteed_from) ? "below q = " + significant(r.ida.unguaranteed_from, 17)
-                                                                 : std::string("over the whole search");
-        d["survivors_below"] = nearest_side(r.mark.survivors_below, r.mark.height_survivors_below);
-        d["survivors_above"] = nearest_side(r.mark.survivors_above, r.mark.height_survivors_above);
-        if (r.has_probability) d["probability"] = r.probability;
-        rows.append(d);
-    }
-    py::dict out = result();
-    out["alpha"] = alpha;
-    out["p"] = given.block.p;
-    add_block_members(out, given);
-    out["model"] = o.describe();
-    out["width"] = o.width;
+    std::vector<std::string> names;
+    for (const RecordPtr& r : held) names.push_back(r->name);
     // As rocking assess --json: the floor's model where the records are a floor's motion.
-    out["input"] = floor ? records::describe_as_input(records::parse_floor_model(*string_argument(floor, "floor")))
-                         : std::string("each record as recorded: the ground's motion");
-    out["check"] = o.describe_check();
-    if (o.model.imperfection.any())
-        out["imperfection"] = imperfection_dict(o.model.imperfection, given.block,
-                                                o.model.housner_restitution ? NAN : o.model.restitution);
-    out["records"] = rows;
-    py::dict fragility = result();
-    fragility["fitted"] = a.fitted;
-    if (a.fitted) {
-        fragility["median"] = a.fit.median;
-        fragility["beta"] = a.fit.beta;
-    } else {
-        fragility["no_fit"] = a.no_fit;
+    const std::string input =
+        floor ? records::describe_as_input(records::parse_floor_model(*string_argument(floor, "floor"))) : std::string();
+    const json::Json doc = json::assess_json(labels, names, given, a, o, input);
+    py::dict out = to_python(doc);
+    // The module's own order of a record's members (eq. 27's two flags beside its q) and paths as os.fsdecode gives them.
+    py::list rows = out["records"];
+    for (std::size_t k = 0; k < held.size(); ++k) {
+        py::dict row = with_keys_before(rows[k], {"eq27_passes_alpha_before_t_fin", "eq27_impact_before_t_fin"}, "q_record");
+        row["file"] = file_of(*held[k]);
+        rows[k] = row;
     }
-    out["fragility"] = fragility;
+    if (o.model.imperfection.any()) out["imperfection"] = to_python(doc["imperfection"], Dicts::plain);
     return out;
 }
 

@@ -15,6 +15,8 @@
 #include "dynamics/ground_input.hpp"
 #include "dynamics/imperfect_block.hpp"
 #include "jobs/spectrum_plan.hpp"
+#include "json/fragility_json.hpp"
+#include "json/spectrum_json.hpp"
 #include "records/collapse.hpp"
 #include "studies/distinct_inputs.hpp"
 #include "studies/ida.hpp"
@@ -29,34 +31,9 @@ namespace {
 using studies::BlockFragility;
 using studies::Ida;
 
-py::object null_or(bool has, double v) { return has ? py::object(py::float_(v)) : py::object(py::none()); }
-
-py::list bands_list(const std::vector<studies::Band>& bands) {
-    py::list out;
-    for (const studies::Band& b : bands) {
-        py::dict band = result();
-        band["from"] = b.from;
-        band["to"] = b.to;
-        band["share"] = b.share;
-        out.append(band);
-    }
-    return out;
-}
-
 // ---- rocking spectrum ----
 
 using Study = jobs::SpectrumStudy;
-
-py::object boundary(const studies::Interval& in, bool lower) {
-    if (!(lower ? in.has_lower : in.has_upper)) return py::none();
-    const studies::Boundary& b = lower ? in.lower : in.upper;
-    py::dict d = result();
-    d["p_safe"] = b.p_safe;
-    d["p_collapse"] = b.p_collapse;
-    d["confirmation"] = studies::confirmation_name(b.confirmation);
-    d["detail"] = text(b.detail);
-    return std::move(d);
-}
 
 py::dict spectrum(py::handle record, const py::object& alpha, const std::optional<Real>& p_min, const Real& p_max, const Whole& points,
                   const std::optional<Whole>& jobs, const Text& method_given, const std::optional<Real>& width_given,
@@ -126,79 +103,18 @@ py::dict spectrum(py::handle record, const py::object& alpha, const std::optiona
             for (const Study& st : found)
                 if (st.spectrum.alpha == b.alpha) marked.push_back(studies::mark_block(*input, st.spectrum, b, o));
     }
-    py::dict out = result();
-    out["file"] = file_of(*r);
-    out["name"] = text(r->name);
-    out["samples"] = r->accel.size();
-    out["dt"] = r->dt;
-    out["pga_g"] = r->pga() / dynamics::kGravity;
-    out["model"] = o.describe_model();
-    py::dict grid = result();
-    grid["p_min"] = o.p_min;
-    grid["p_max"] = o.p_max;
-    grid["points"] = o.points;
-    grid["step"] = o.step();
-    grid["offset_grid"] = !m.refine;
-    grid["islands_missed_below_ratio"] = m.refine ? std::exp(o.width) : std::sqrt(o.step());
-    grid["note"] = o.describe_grid() + (m.refine ? "; Table 1's search beside it (its bracket is not added: an island of "
-                                                   "it narrower than w may be missing from the set)"
-                                                 : "; Table 1's bracket of each alpha added as extra points");
-    out["grid"] = grid;
-    if (m.refine) {
-        out["method"] = "refine";
-        out["width"] = o.width;
-        out["robust_width"] = o.robust_width;
-        out["refine_note"] = o.describe_guarantee();
-    }
-    out["rel_tol"] = o.rel_tol;
-    out["refinement"] = o.describe_refinement();
-    out["t_overturn_null"] =
-        "the block does not overturn, or is taken to overturn by its energy after 200/p of free rocking";
-    py::list spectra;
-    for (const Study& s : found) {
-        const studies::Spectrum& sp = s.spectrum;
-        py::dict d = result();
-        d["alpha"] = sp.alpha;
-        d["lifts"] = sp.lifts;
-        py::list intervals;
-        for (const studies::Interval& in : sp.intervals) {
-            py::dict i = result();
-            i["from"] = in.from;
-            i["to"] = in.to;
-            i["height_from"] = studies::height_at_p(sp.alpha, in.from);
-            i["height_to"] = studies::height_at_p(sp.alpha, in.to);
-            i["lower"] = boundary(in, true);
-            i["upper"] = boundary(in, false);
-            intervals.append(i);
-        }
-        d["intervals"] = intervals;
-        if (sp.refined) {
-            // As rocking spectrum --json's refine fields.
-            const bool bracketed = sp.first_overturning.found && sp.intervals.front().has_lower;
-            py::dict first = result();
-            first["p"] = sp.first_overturning.p;
-            first["found"] = sp.first_overturning.found;
-            first["boundary"] = bracketed ? boundary(sp.intervals.front(), true) : py::none();
-            d["first_overturning"] = first;
-            py::dict robust = result();
-            robust["p"] = sp.first_robust_collapse.p;
-            robust["found"] = sp.first_robust_collapse.found;
-            d["first_robust_collapse"] = robust;
-            d["bands"] = bands_list(sp.bands);
-            d["samples"] = sp.samples;
-            d["accepted"] = sp.accepted;
-            d["at_width"] = sp.at_width;
-            d["with_margins"] = sp.with_margins;
-            d["unguaranteed_from"] = none_if_nan(sp.unguaranteed_from);
-        }
-        py::dict t1 = result();
-        t1["found"] = s.table1.found;
-        t1["p"] = null_or(s.table1.found, s.table1.p);
-        t1["p_safe"] = null_or(s.table1.found && !s.table1.below_range(), s.table1.p_safe);
-        t1["below_range"] = s.table1.below_range();
-        d["table1"] = t1;
-        d["simulations"] = sp.simulations;
-        d["check_simulations"] = sp.check_simulations;
+    json::Json doc = json::spectrum_document(label_of(*r), *r, o, found, marked);
+    // The points go to Python as columns (below), not as the document's list of objects.
+    for (json::Json& sp : doc["spectra"]) sp["points"] = nullptr;
+    py::dict out = to_python(doc);
+    out["file"] = file_of(*r);  // a path as os.fsdecode gives it
+    // The module's own order: the refine method's members before rel_tol.
+    if (m.refine) out = with_keys_before(out, {"method", "width", "robust_width", "refine_note"}, "rel_tol");
+    py::list spectra = out["spectra"];
+    for (std::size_t s = 0; s < found.size(); ++s) {
+        const studies::Spectrum& sp = found[s].spectrum;
+        py::dict d = spectra[s];
+        if (sp.refined) d["unguaranteed_from"] = none_if_nan(sp.unguaranteed_from);  // None where --json has null
         // The grid as arrays, one per --json points' field (the plot's data).
         const std::size_t n = sp.points.size();
         py::array_t<double> p(n), max_theta(n), t_overturn(n);
@@ -223,73 +139,11 @@ py::dict spectrum(py::handle record, const py::object& alpha, const std::optiona
         pts["overturning"] = overturning;
         pts["t_overturn"] = t_overturn;  // NaN where --json writes null
         d["points"] = pts;
-        spectra.append(d);
     }
-    out["spectra"] = spectra;
-    py::list marks_out;
-    for (const studies::SpectrumMark& m : marked) {
-        py::dict d = result();
-        d["built"] = m.block.built;
-        d["alpha"] = m.block.alpha;
-        d["p"] = m.block.p;
-        d["height"] = studies::height_at_p(m.block.alpha, m.block.p);
-        d["overturns"] = m.overturns;
-        d["in_set"] = m.in_set;
-        d["change_below"] = nearest_side(m.below, m.height_below);
-        d["change_above"] = nearest_side(m.above, m.height_above);
-        d["change_below_far"] = nearest_side(m.below_far, studies::far_height(m, m.below_far));
-        d["change_above_far"] = nearest_side(m.above_far, studies::far_height(m, m.above_far));
-        d["survivors_below"] = nearest_side(m.survivors_below, m.height_survivors_below);
-        d["survivors_above"] = nearest_side(m.survivors_above, m.height_survivors_above);
-        d["text"] = studies::describe_mark(m);
-        marks_out.append(d);
-    }
-    out["marks"] = marks_out;
     return out;
 }
 
 // ---- rocking fragility ----
-
-py::object bracket(bool has, const studies::Bracket& b) {
-    if (!has) return py::none();
-    py::dict d = result();
-    d["q_safe"] = b.safe;
-    d["q_collapse"] = b.collapse;
-    return std::move(d);
-}
-
-
-
-py::dict point_dict(const studies::IdaPoint& p) {
-    py::dict d = result();
-    d["q"] = p.q;
-    d["collapsed"] = p.collapsed;
-    return d;
-}
-
-// The refine method's fields of a record, as rocking fragility --json's.
-void add_refine_fields(py::dict& d, const Ida& ida) {
-    const bool bracketed = ida.first_overturning.collapsed && ida.intervals.front().has_lower;
-    py::dict first = point_dict(ida.first_overturning);
-    first["bracket"] = bracket(bracketed, bracketed ? ida.intervals.front().lower : studies::Bracket{});
-    if (bracketed) {
-        py::dict c = result();
-        c["confirmation"] = studies::confirmation_name(ida.intervals.front().lower_check.confirmation);
-        c["detail"] = text(ida.intervals.front().lower_check.detail);
-        first["check"] = c;
-    } else {
-        first["check"] = py::none();
-    }
-    d["first_overturning"] = first;
-    d["first_robust_collapse"] = point_dict(ida.first_robust_collapse);
-    d["bands"] = bands_list(ida.bands);
-    d["method"] = "refine";
-    d["samples"] = ida.samples;
-    d["accepted"] = ida.accepted;
-    d["at_width"] = ida.at_width;
-    d["with_margins"] = ida.with_margins;
-    d["unguaranteed_from"] = none_if_nan(ida.unguaranteed_from);
-}
 
 py::dict fragility(const py::object& records_given, const py::object& alpha, const py::object& p, const Real& q_max,
                    const Whole& points, const std::optional<Whole>& bootstrap, const std::optional<Whole>& seed,
@@ -361,79 +215,33 @@ py::dict fragility(const py::object& records_given, const py::object& alpha, con
         studies::refuse_repeated_records(labels, given);
         study = studies::fragility_study(views, blocks, o);
     }
-    py::dict out = result();
-    out["model"] = o.ida.describe_model();
-    py::dict grid = result();
-    grid["q_min"] = o.ida.q_min;
-    grid["q_max"] = o.ida.q_max;
-    grid["points"] = o.ida.points;
-    grid["rel_tol"] = o.ida.rel_tol;
-    grid["note"] = o.ida.describe_grid() + "; " + o.ida.describe_q() + "; " + o.ida.describe_checks();
-    if (refine) {
-        grid["method"] = "refine";
-        grid["width"] = o.ida.width;
-        grid["robust_width"] = o.ida.robust_width;
-        grid["fit_capacity"] = "first_overturning";
-        grid["stripe_half_width"] = studies::stripe_half_width(o.ida.q_min, o.ida.q_max, o.ida.points);
-        grid["refine_note"] = o.describe_fits();
+    std::vector<std::string> labels;
+    for (const RecordPtr& r : recs) labels.push_back(label_of(*r));
+    json::Json doc = json::fragility_document(labels, o, study);
+    // The empirical shares and the stripes go to Python as NumPy columns (below), not as lists of objects.
+    for (json::Json& b : doc["blocks"]) {
+        b["empirical"] = nullptr;
+        if (b.contains("stripes")) b["stripes"] = nullptr;
     }
-    out["grid"] = grid;
-    py::list blocks_out;
-    for (const BlockFragility& f : study) {
-        py::dict b = result();
-        b["alpha"] = f.block.alpha;
-        b["p"] = f.block.p;
-        if (!f.block.built.empty()) b["built"] = f.block.built;
-        // An imperfect block's grid may start below q_min, where it lifts.
-        if (o.ida.model.imperfection.any()) {
-            b["q_start"] = o.ida.q_start(f.block.alpha, f.block.p);
-            if (refine) b["stripe_half_width"] = studies::stripe_half_width(o.ida.q_start(f.block.alpha, f.block.p), o.ida.q_max, o.ida.points);
-        }
-        py::list rows;
+    py::dict out = to_python(doc);
+    py::list blocks_out = out["blocks"];
+    for (std::size_t i = 0; i < study.size(); ++i) {
+        const BlockFragility& f = study[i];
+        py::dict b = blocks_out[i];
+        py::list rows = b["records"];
         for (std::size_t k = 0; k < recs.size(); ++k) {
-            const Ida& ida = f.idas[k];
-            py::dict d = result();
-            d["file"] = file_of(*recs[k]);
-            d["sha256"] = f.identities[k];
-            d["q_input"] = ida.q_input;
-            d["q"] = ida.point.q;
-            d["collapsed"] = ida.point.collapsed;
-            if (ida.point.collapsed && ida.intervals.front().has_lower) {
-                py::dict c = result();
-                c["confirmation"] = studies::confirmation_name(ida.intervals.front().lower_check.confirmation);
-                c["detail"] = text(ida.intervals.front().lower_check.detail);
-                d["point_check"] = c;
-            } else {
-                d["point_check"] = py::none();
-            }
-            d["simulations"] = ida.simulations;
-            d["check_simulations"] = ida.check_simulations;
-            py::list intervals;
-            for (const studies::IdaInterval& in : ida.intervals) {
-                py::dict i = result();
-                i["from"] = in.from;
-                i["to"] = in.to;
-                i["lower"] = bracket(in.has_lower, in.lower);
-                i["upper"] = bracket(in.has_upper, in.upper);
-                intervals.append(i);
-            }
-            d["intervals"] = intervals;
-            if (refine) add_refine_fields(d, ida);
-            rows.append(d);
+            py::dict d = rows[k];
+            d["file"] = file_of(*recs[k]);  // a path as os.fsdecode gives it
+            if (refine) d["unguaranteed_from"] = none_if_nan(f.idas[k].unguaranteed_from);  // None where --json has null
         }
-        b["records"] = rows;
-        b["fit"] = block_fit(f);
-        b["no_fit"] = f.fitted ? py::object(py::none()) : py::object(text(f.no_fit));
+        add_block_fit_members(b, f);
         std::vector<double> q, share;
         for (const studies::EmpiricalPoint& e : f.empirical) q.push_back(e.q), share.push_back(e.share);
         py::dict empirical = result();
         empirical["q"] = to_array(q);
         empirical["share"] = to_array(share);
         b["empirical"] = empirical;
-        if (f.three_ways) add_three_ways(b, f);
-        blocks_out.append(b);
     }
-    out["blocks"] = blocks_out;
     if (nrml) {
         // rocking fragility --nrml's file, its blocks without a fit as --nrml's warnings.
         std::vector<std::string> names;

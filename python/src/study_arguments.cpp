@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "json/pieces.hpp"
 #include "studies/overturning_set.hpp"
 
 namespace rocking::python {
@@ -77,15 +78,7 @@ void method_argument(const Text& method_given, const std::optional<Real>& width_
     ida.robust_width = m.robust_width;
 }
 
-py::dict nearest_side(const studies::SpectrumFirst& f, double height) {
-    py::dict d = result();
-    d["found"] = f.found;
-    if (f.found) {
-        d["p"] = f.p;
-        d["height"] = height;
-    }
-    return d;
-}
+py::dict nearest_side(const studies::SpectrumFirst& f, double height) { return to_python(json::nearest_json(f, height)); }
 
 void friction_into(const py::object& value, const py::object& restitution, records::CollapseOptions& model) {
     if (value.is_none()) return;
@@ -127,31 +120,8 @@ dynamics::Imperfection imperfection_argument(const py::object& value, const reco
     return imp;
 }
 
-py::dict imperfection_inputs_dict(const dynamics::Imperfection& imp) {
-    py::dict d;
-    d["lean"] = imp.lean;
-    d["out_of_plumb"] = imp.out_of_plumb;
-    d["fc"] = imp.fc / 1e6;  // MPa, as the argument's key
-    d["density"] = imp.density;
-    return d;
-}
-
 py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution) {
-    const dynamics::ImperfectGeometry g = dynamics::imperfect_geometry(base, imp);
-    auto corner = [&](const dynamics::CornerGeometry& k) {
-        py::dict d;
-        d["alpha"] = k.alpha;
-        d["p"] = k.p;
-        d["R"] = k.R;
-        d["restitution_onto"] = std::isnan(restitution) ? k.restitution_onto : restitution;
-        return d;
-    };
-    py::dict d = imperfection_inputs_dict(imp);
-    d["sigma0_kpa"] = g.sigma0 / 1e3;
-    d["setback_m"] = g.setback;
-    d["corner_plus"] = corner(g.plus);
-    d["corner_minus"] = corner(g.minus);
-    return d;
+    return to_python(json::imperfection_json(imp, base, restitution), Dicts::plain);
 }
 
 void imperfection_into(const py::object& value, records::CollapseOptions& model) {

@@ -43,8 +43,8 @@ MethodChoice method_argument(const Text& method_given, const std::optional<Real>
 void method_argument(const Text& method_given, const std::optional<Real>& width_given,
                      const std::optional<Real>& robust_width_given, studies::IdaOptions& ida);
 
-// The nearest overturning p of a spectrum on one side, as --json writes it:
-// {"found": ..., "p": ..., "height": ...} (p and height where found).
+// The nearest overturning p of a spectrum on one side, as --json writes it
+// (json::nearest_json), a Result.
 py::dict nearest_side(const studies::SpectrumFirst& f, double height);
 
 // restitution=E|"housner" into a study's model, as the command line's --restitution.
@@ -58,10 +58,8 @@ void friction_into(const py::object& value, const py::object& restitution, recor
 // ValueError naming the key, refused beside friction.
 dynamics::Imperfection imperfection_argument(const py::object& value, const records::CollapseOptions& model);
 void imperfection_into(const py::object& value, records::CollapseOptions& model);
-// As rocking simulate --json's "imperfection": each corner's alpha, p, R and
-// restitution onto it, the setback and its stress.
+// As rocking simulate --json's "imperfection" (json::imperfection_json), as
+// plain dicts (the module's results have always held it so).
 py::dict imperfection_dict(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution);
-// The imperfections alone, for a search over blocks of many sizes (collapse without a p found).
-py::dict imperfection_inputs_dict(const dynamics::Imperfection& imp);
 
 }  // namespace rocking::python

@@ -106,3 +106,18 @@ def test_errors_carry_the_library_s_message():
         rq.q(0.5, train="1:1", pulses=3)
     with pytest.raises(ValueError, match=r"^x: must be > 0"):
         rq.response(-1.0, case=2)
+
+
+def test_results_keep_the_document_s_kinds_and_order():
+    """The library's document converted (python/src/json_value.cpp): an integer an int, a double a
+    float, null None, the keys in the command's order, with the module's own fields after them."""
+    info = rq.q_info(0.5, case=2)
+    assert type(info) is rq.Result and type(info["pulses"]) is int and type(info["x"]) is float
+    expected = cli("q", "--case", 2, "--x", 0.5)
+    assert list(info)[:len(expected)] == list(expected) and list(info)[len(expected):] == ["t_fin_over_to"]
+    # Rows ended by an overflow: where they end a float; complete rows: None, as the JSON's null.
+    ended = rq.response(800, case=2, q=10, steps=10)
+    assert ended["rows_complete"] is False and type(ended["rows_end_at"]) is float and ended["rows_end_at"] == 1.0
+    complete = rq.response(0.5, case=2)
+    assert complete["rows_end_at"] is None and complete["rows_end_reason"] is None
+    assert isinstance(complete["samples"], np.ndarray) and complete["samples"].shape == (21, 3)

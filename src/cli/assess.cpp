@@ -17,6 +17,7 @@
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "cli/set_words.hpp"
+#include "json/assess_json.hpp"
 #include "jobs/spectrum_plan.hpp"
 #include "qfactor/superposition.hpp"
 #include "studies/assessment.hpp"
@@ -119,71 +120,6 @@ void print_text(const std::vector<std::string>& files, const std::vector<std::st
     }
 }
 
-Json first_json(const studies::IdaPoint& at, double scale, double to) {
-    Json o{{"found", at.collapsed}, {"q", at.q}, {"scale", scale}};
-    if (at.collapsed) o["interval_to"] = to;
-    return o;
-}
-
-Json record_json(const std::string& file, const std::string& name, const studies::RecordAssessment& r) {
-    Json o;
-    o["file"] = file;
-    o["name"] = name;
-    o["pga_g"] = r.motion.pga / dynamics::kGravity;
-    o["to5"] = r.motion.to5;
-    o["x"] = r.x;
-    o["q_eq27"] = r.q_eq27;
-    o["q_eq27_as_printed"] = r.q_eq27_as_printed;
-    o["eq27_side"] = r.eq27_side;
-    o["q_record"] = r.q_record;
-    o["ratio"] = r.ratio;
-    o["margin"] = r.margin;
-    o["passes"] = r.passes;
-    o["eq27_passes_alpha_before_t_fin"] = r.eq27_passes_alpha;
-    o["eq27_impact_before_t_fin"] = r.eq27_strikes;
-    o["overturns"] = r.overturns;
-    o["fell_during_input"] = r.fell_during_input;
-    o["peak_theta_over_alpha"] = r.peak_theta_over_alpha;
-    o["first_overturning"] = first_json(r.ida.first_overturning, r.scale_first_overturning, r.first_overturning_to);
-    o["first_robust_collapse"] = first_json(r.ida.first_robust_collapse, r.scale_first_robust, r.first_robust_to);
-    o["change_below"] = nearest_json(r.mark.below, r.mark.height_below);
-    o["change_above"] = nearest_json(r.mark.above, r.mark.height_above);
-    o["change_below_far"] = nearest_json(r.mark.below_far, studies::far_height(r.mark, r.mark.below_far));
-    o["change_above_far"] = nearest_json(r.mark.above_far, studies::far_height(r.mark, r.mark.above_far));
-    o["in_spectrum_set"] = r.mark.in_set;
-    o["guaranteed"] = std::isfinite(r.ida.unguaranteed_from) ? "below q = " + significant(r.ida.unguaranteed_from, 17)
-                                                             : std::string("over the whole search");
-    o["survivors_below"] = nearest_json(r.mark.survivors_below, r.mark.height_survivors_below);
-    o["survivors_above"] = nearest_json(r.mark.survivors_above, r.mark.height_survivors_above);
-    if (r.has_probability) o["probability"] = r.probability;
-    return o;
-}
-
-void print_json(const std::vector<std::string>& files, const std::vector<std::string>& names, const GivenBlock& given,
-                const studies::Assessment& s, const studies::AssessOptions& o, const std::string& floor) {
-    Json js;
-    js["alpha"] = given.alpha;
-    js["p"] = given.block.p;
-    add_block(js, given);
-    js["model"] = o.describe();
-    js["width"] = o.width;
-    js["input"] = floor.empty() ? std::string("each record as recorded: the ground's motion") : floor;
-    js["check"] = o.describe_check();
-    if (o.model.imperfection.any())
-        js["imperfection"] =
-            imperfection_json(o.model.imperfection, given.block, o.model.housner_restitution ? NAN : o.model.restitution);
-    Json& records = js["records"] = Json::array();
-    for (std::size_t k = 0; k < files.size(); ++k) records.push_back(record_json(files[k], names[k], s.records[k]));
-    Json& fragility = js["fragility"] = {{"fitted", s.fitted}};
-    if (s.fitted) {
-        fragility["median"] = s.fit.median;
-        fragility["beta"] = s.fit.beta;
-    } else {
-        fragility["no_fit"] = s.no_fit;
-    }
-    std::cout << json_text(js) << "\n";
-}
-
 }  // namespace
 
 int cmd_assess(int argc, char** argv) {
@@ -251,7 +187,7 @@ int cmd_assess(int argc, char** argv) {
             studies::scaled_response(*views[0], alpha, given.block.p, o.model, 1, o.ida_q_max(r.q_record), 300);
         write_assess_png(a.values.at("--png"), records[0], r, response, o.spectrum_options(given.block.p, given.alpha));
     }
-    if (a.json) print_json(files, names, given, s, o, floor_input_note(a));
+    if (a.json) std::cout << json_text(json::assess_json(files, names, given, s, o, floor_input_note(a))) << "\n";
     else print_text(files, names, given, s, o, floor_input_note(a));
     if (!a.json && a.values.count("--png")) std::printf("plot: %s (the check above, the spectrum below)\n", a.values.at("--png").c_str());
     return 0;

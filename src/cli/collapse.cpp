@@ -13,6 +13,7 @@
 #include "cli/help.hpp"
 #include "cli/imperfection.hpp"
 #include "cli/json_text.hpp"
+#include "json/collapse_json.hpp"
 #include "cli/options.hpp"
 #include "records/collapse.hpp"
 #include "harness/table.hpp"
@@ -85,26 +86,7 @@ int cmd_collapse(int argc, char** argv) {
     refuse_unresolvable_run(o.p_max, input.t_end(), a, {"--dt"}, path);
     const records::CollapseResult c = records::smallest_collapse_p(input, alpha, o);
     if (a.json) {
-        Json j;
-        j["file"] = path;
-        j["alpha"] = alpha;
-        j["found"] = c.found;
-        // null where nothing was found, or (p_safe) found at the search's lowest p (below_range).
-        j["p"] = c.found ? Json(c.p) : Json(nullptr);
-        j["p_safe"] = c.found && !c.below_range() ? Json(c.p_safe) : Json(nullptr);
-        j["below_range"] = c.below_range();
-        j["simulations"] = c.simulations;
-        j["search"] = o.describe();
-        if (given) {
-            j["block_p"] = given->block.p;
-            add_block(j, *given);
-        }
-        // At the p found, each corner of the block that overturned; without one, the imperfections given.
-        if (o.imperfection.any())
-            j["imperfection"] = c.found ? imperfection_json(o.imperfection, Block::from_p(c.p, alpha),
-                                                            o.housner_restitution ? NAN : o.restitution)
-                                        : imperfection_inputs_json(o.imperfection);
-        std::cout << json_text(j) << "\n";
+        std::cout << json_text(json::collapse_json(path, alpha, c, o, given ? &*given : nullptr)) << "\n";
     } else {
         if (c.below_range())
             std::printf("p <= %.6f rad/s: %s overturns the block (alpha = %g) already at the search's lowest "

@@ -25,6 +25,7 @@
 #include "cli/help.hpp"
 #include "cli/imperfection.hpp"
 #include "cli/json_text.hpp"
+#include "json/eq27_json.hpp"
 #include "cli/options.hpp"
 #include "cli/plots.hpp"
 #include "harness/table.hpp"
@@ -208,11 +209,7 @@ std::string conservative_list(const Eq27Study& s) {
     return text.empty() ? "none" : text;
 }
 
-int blocks_hit(const Eq27Study& s, int k) {
-    int n = 0;
-    for (const studies::Eq27Cell& c : s.map) n += c.non_conservative[k] > 0;
-    return n;
-}
+int blocks_hit(const Eq27Study& s, int k) { return json::blocks_with_any(s, k); }
 
 bool bootstrapped(const Eq27Study& s) { return s.bootstrap.resamples > 0; }
 
@@ -293,80 +290,6 @@ void print_text(const std::vector<std::string>& files, const studies::Eq27Option
     }
 }
 
-// A study's censored count, shares, each record's counts and the map, as members of o.
-void add_study(Json& o, const std::vector<std::string>& files, const Eq27Study& s) {
-    o["censored"] = s.censored;
-    Json& shares = o["shares"] = Json::array();
-    for (int k = 0; k < kHalfPeriods; ++k) {
-        const studies::Eq27Share& sh = s.shares[k];
-        // Without a bootstrap, null: the document's bootstrap_run and bootstrap_note say why.
-        shares.push_back({{"k", k + 1},
-                          {"non_conservative", sh.non_conservative},
-                          {"cases", sh.cases},
-                          {"share", sh.share},
-                          {"bootstrap", bootstrapped(s) ? Json::array({sh.bootstrap.lo, sh.bootstrap.hi}) : Json(nullptr)},
-                          {"wilson", Json::array({sh.wilson.lo, sh.wilson.hi})},
-                          {"records_with_any", sh.records_with_any},
-                          {"records", sh.records},
-                          {"blocks_with_any", blocks_hit(s, k)}});
-    }
-    // Each record's non-conservative cases per k: what the bootstrap resamples.
-    std::vector<std::array<int, kHalfPeriods>> by_record(s.records, std::array<int, kHalfPeriods>{});
-    for (const studies::Eq27Case& c : s.cases)
-        for (int k = 0; k < kHalfPeriods; ++k) by_record[c.record][k] += c.non_conservative[k];
-    Json& records = o["by_record"] = Json::array();
-    for (std::size_t r = 0; r < by_record.size(); ++r)
-        records.push_back({{"file", files[r]}, {"sha256", s.identities[r]}, {"non_conservative", by_record[r]}});
-    Json& map = o["map"] = Json::array();
-    for (const studies::Eq27Cell& c : s.map)
-        map.push_back({{"alpha", c.block.alpha},
-                       {"p", c.block.p},
-                       {"records", c.records},
-                       {"censored", c.censored},
-                       {"non_conservative", c.non_conservative}});
-}
-
-void print_json(const std::vector<std::string>& files, const studies::Eq27Options& o, const Eq27ByCapacity& by) {
-    const Eq27Study& s = by.first_overturning;
-    Json js;
-    js["model"] = o.ida.describe_model();
-    js["ida"] = o.ida.describe_grid();
-    js["q_max"] = o.ida.q_max;
-    if (refined(o)) {
-        js["method"] = "refine";
-        js["width"] = o.ida.width;
-        js["robust_width"] = o.ida.robust_width;
-        js["refine_note"] = studies::eq27_refine_note(o.ida);
-    }
-    js["blocks"] = o.grid.describe();
-    js["verdict"] = kEq27Verdict;
-    js["wilson"] = {{"level", s.level}, {"note", kEq27WilsonNote}};
-    js["bootstrap_run"] = bootstrapped(s);
-    if (bootstrapped(s)) {
-        js["bootstrap"] = {{"over", "records"}, {"resamples", s.bootstrap.resamples}, {"seed", s.bootstrap.seed},
-                           {"level", s.bootstrap.level}};
-    } else {
-        js["bootstrap"] = nullptr;
-        js["bootstrap_note"] = kEq27NoBootstrap;
-    }
-    js["records"] = s.records;
-    js["files"] = files;
-    js["cases"] = s.cases.size();
-    // The refine method: the members as the grid's under the first overturning
-    // (the IDA's point, either method), the robust collapse's in an object.
-    if (refined(o)) {
-        js["capacity"] = kFirstOverturning.key;
-        js["capacity_note"] = kFirstOverturning.note;
-    }
-    add_study(js, files, s);
-    if (refined(o)) {
-        Json robust = {{"capacity_note", kRobustCollapse.note}};
-        add_study(robust, files, by.first_robust_collapse);
-        js[kRobustCollapse.key] = robust;
-    }
-    std::cout << json_text(js) << "\n";
-}
-
 void write_csv(const std::string& csv, const std::vector<std::string>& files, const studies::Eq27Options& o,
                const Eq27ByCapacity& by) {
     const Eq27Study& s = by.first_overturning;
@@ -443,7 +366,7 @@ int cmd_eq27(int argc, char** argv) {
     const Args& a = c.args;
     if (a.values.count("--output")) write_csv(a.values.at("--output"), c.files, c.study, s);
     if (a.values.count("--png")) write_eq27_png(a.values.at("--png"), c.files, c.study, s, l.to);
-    if (a.json) print_json(c.files, c.study, s);
+    if (a.json) std::cout << json_text(json::eq27_document(c.files, c.study, s)) << "\n";
     else print_text(c.files, c.study, s);
     return 0;
 }

@@ -11,6 +11,7 @@
 
 #include "cli/help.hpp"
 #include "cli/json_text.hpp"
+#include "json/record_json.hpp"
 #include "cli/options.hpp"
 #include "harness/atomic_file.hpp"
 #include "harness/table.hpp"
@@ -72,23 +73,7 @@ void print_summary(const std::string& path, const records::Record& ground, const
     const double ratio = pga_g > 0 ? pga_f / pga_g : NAN;  // a ground at rest has no ratio
     const double end = std::stod(floor.header.at("end_amplitude_m_s2"));
     if (json) {
-        Json o;
-        o["file"] = path;
-        o["ground_name"] = ground.name;
-        o["ground_format"] = ground.format;
-        o["name"] = floor.name;
-        o["format"] = floor.format;
-        o["samples"] = floor.accel.size();
-        o["dt"] = floor.dt;
-        o["model"] = {{"T1_s", m.T1}, {"zeta", m.zeta}, {"G", m.G}};
-        o["method"] = floor.header.at("method");
-        o["ground_pga_ms2"] = pga_g;
-        o["floor_pga_ms2"] = pga_f;
-        o["pga_ratio"] = ratio;  // null for a ground at rest
-        o["end_amplitude_ms2"] = end;
-        o["warnings"] = records::warnings_of(floor);
-        o["output"] = output.empty() ? Json(nullptr) : Json(output);
-        std::cout << json_text(o) << "\n";
+        std::cout << json_text(json::floor_record_json(path, ground, floor, m, output)) << "\n";
         return;
     }
     std::printf("floor of %s (%s): %zu samples, dt = %g s, %.2f s\n", ground.name.c_str(), ground.format.c_str(),

@@ -49,12 +49,4 @@ std::vector<studies::BlockShape> study_blocks(const Args& a, const std::string& 
     }
 }
 
-void add_block(Json& o, const GivenBlock& b) {
-    const bool sized = b.sized();
-    o["given"] = dynamics::given_name(b);
-    o["thickness"] = sized ? Json(b.thickness) : Json(nullptr);
-    o["height"] = sized ? Json(b.height) : Json(nullptr);
-    o["R"] = sized ? Json(b.block.R) : Json(nullptr);
-}
-
 }  // namespace rocking::cli

@@ -10,6 +10,7 @@
 #include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "dynamics/block_geometry.hpp"
+#include "json/pieces.hpp"
 #include "studies/ida.hpp"
 
 namespace rocking::cli {
@@ -27,9 +28,7 @@ GivenBlock block_option(const Args& a);
 // each p in (0.01, 1000) rad/s); --block is refused beside --alpha or --p.
 std::vector<studies::BlockShape> study_blocks(const Args& a, const std::string& flag = "--block");
 
-// The block's geometry as members of o: "given": "dimensions", "alpha and
-// height" or "alpha and p", then "thickness", "height" and "R" in m (null
-// where it is "alpha and p": the size is not known).
-void add_block(Json& o, const GivenBlock& b);
+// The block's geometry as members of a document (json/pieces.hpp).
+using json::add_block;
 
 }  // namespace rocking::cli

@@ -52,29 +52,4 @@ std::string imperfection_flags_text(const Args& a) {
     return text;
 }
 
-namespace {
-
-// Its keys as the inputs' (Python's imperfection={...}, the batch columns): fc in MPa.
-Json inputs_json(const dynamics::Imperfection& imp) {
-    return {{"lean", imp.lean}, {"out_of_plumb", imp.out_of_plumb}, {"fc", imp.fc / 1e6}, {"density", imp.density}};
-}
-
-}  // namespace
-
-Json imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution) {
-    const dynamics::ImperfectGeometry g = dynamics::imperfect_geometry(base, imp);
-    auto corner = [&](const dynamics::CornerGeometry& k) {
-        return Json{{"alpha", k.alpha}, {"p", k.p}, {"R", k.R},
-                    {"restitution_onto", std::isnan(restitution) ? k.restitution_onto : restitution}};
-    };
-    Json o = inputs_json(imp);
-    o["sigma0_kpa"] = g.sigma0 / 1e3;
-    o["setback_m"] = g.setback;
-    o["corner_plus"] = corner(g.plus);
-    o["corner_minus"] = corner(g.minus);
-    return o;
-}
-
-Json imperfection_inputs_json(const dynamics::Imperfection& imp) { return inputs_json(imp); }
-
 }  // namespace rocking::cli

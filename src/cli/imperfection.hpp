@@ -12,6 +12,7 @@
 #include "cli/options.hpp"
 #include "dynamics/block_geometry.hpp"
 #include "dynamics/imperfect_block.hpp"
+#include "json/pieces.hpp"
 #include "records/collapse.hpp"
 
 namespace rocking::cli {
@@ -37,14 +38,8 @@ void imperfection_into(const Args& a, records::CollapseOptions& model);
 dynamics::Model imperfect_model_option(const Args& a, dynamics::Equation equation, const dynamics::GivenBlock& given,
                                        double restitution);
 
-// The JSON member "imperfection"'s value for these imperfections on the
-// block (alpha, p): each corner's alpha, p, R and restitution onto it, the
-// setback and its stress.
-// restitution: NaN (each corner's own) or the factor given on both.
-Json imperfection_json(const dynamics::Imperfection& imp, const dynamics::Block& base, double restitution);
-
-// The same member with the imperfections alone, for a search over blocks of
-// many sizes (the corners of a setback change with the size).
-Json imperfection_inputs_json(const dynamics::Imperfection& imp);
+// The JSON member "imperfection" (json/pieces.hpp).
+using json::imperfection_json;
+using json::imperfection_inputs_json;
 
 }  // namespace rocking::cli

@@ -12,6 +12,7 @@
 #include "cli/options.hpp"
 #include "cli/validity.hpp"
 #include "harness/table.hpp"
+#include "json/qfactor_json.hpp"
 
 namespace rocking::cli {
 
@@ -23,21 +24,12 @@ int cmd_q(int argc, char** argv) {
     const QFactor r = q_factor(train, x);
     const Excursion e = collapse_excursion(train, x);
     if (a.json) {
-        Json o;
-        o["input"] = train.name();
-        o["pulses"] = train.size();
-        o["x"] = x;
-        o["q"] = r.q;
-        o["condition"] = r.condition;
-        o["equation"] = equation;
-        o["model"] = kModel;
-        add_validity(o, e);
-        std::cout << json_text(o) << "\n";
+        std::cout << json_text(json::q_json(train, x, r, equation, e)) << "\n";
     } else {
         std::printf("q = %.10g\n", r.q);
         std::printf("  input %s (%zu pulses, t_fin = %g to), x = p*to = %g, %s\n", train.name().c_str(), train.size(),
                     train.t_fin(), x, equation.c_str());
-        std::printf("  model: %s\n", kModel);
+        std::printf("  model: %s\n", json::kClosedFormModel);
         print_validity(e, "  ");
     }
     return 0;

@@ -14,6 +14,7 @@
 #include "cli/json_text.hpp"
 #include "cli/options.hpp"
 #include "harness/table.hpp"
+#include "json/record_json.hpp"
 
 namespace rocking::cli {
 
@@ -28,22 +29,7 @@ int cmd_record(int argc, char** argv) {
     const records::Record r = load_record(path, a);
     const records::HalfPeriods h = half_periods_of(r, path);
     if (a.json) {
-        Json o;
-        o["file"] = path;
-        o["format"] = r.format;
-        o["name"] = r.name;
-        o["samples"] = r.accel.size();
-        o["dt"] = r.dt;
-        o["pga_ms2"] = h.pga;
-        o["pgv_ms"] = h.pgv;
-        o["amax_ms"] = h.amax;
-        Json& to = o["to"] = Json::array();
-        for (int k = 0; k < 11; ++k) to.push_back(h.to[k]);
-        Json& at_edge = o["to_at_band_edge"] = Json::array();  // which of to_8..to_11
-        for (int k = 0; k < 4; ++k)
-            if (h.cwt_at_band_edge[k]) at_edge.push_back(8 + k);
-        o["cwt_band_hz"] = Json::array({h.cwt_band_hz[0], h.cwt_band_hz[1]});
-        std::cout << json_text(o) << "\n";
+        std::cout << json_text(json::record_info_json(path, r, h)) << "\n";
     } else {
         std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,
                     r.duration());

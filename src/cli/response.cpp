@@ -12,6 +12,7 @@
 #include "cli/options.hpp"
 #include "cli/validity.hpp"
 #include "harness/table.hpp"
+#include "json/qfactor_json.hpp"
 
 namespace rocking::cli {
 
@@ -39,28 +40,14 @@ int cmd_response(int argc, char** argv) {
     }
     const int last = static_cast<int>(rows.size()) - 1;
     const double t_end = last < steps ? train.t_fin() * (last + 1) / steps : NAN;
-    const std::string why = "theta/alpha leaves the double range (beyond 1.8e308) on the linearised equation";
     if (a.json) {
-        Json o;
-        o["input"] = train.name();
-        o["x"] = x;
-        o["q"] = q;
-        o["at_collapse_q"] = at_collapse;
-        o["model"] = kModel;
-        add_validity(o, e);
-        o["rows_complete"] = last == steps;
-        o["rows_end_at"] = last < steps ? Json(t_end) : Json(nullptr);
-        o["rows_end_reason"] = last < steps ? Json(why) : Json(nullptr);
-        Json& samples = o["samples"] = Json::array();
-        for (int k = 0; k <= last; ++k)
-            samples.push_back(Json::array({train.t_fin() * k / steps, rows[k].phi, rows[k].dphi}));
-        std::cout << json_text(o) << "\n";
+        std::cout << json_text(json::response_json(train, x, q, at_collapse, e, rows, steps)) << "\n";
         return 0;
     }
     std::printf("# %s, x = %g, q = %.10g%s; %s\n", train.name().c_str(), x, q,
-                at_collapse ? " (the collapse q, evaluated exactly)" : "", kModel);
+                at_collapse ? " (the collapse q, evaluated exactly)" : "", json::kClosedFormModel);
     print_validity(e, "# ");
-    if (last < steps) std::printf("# rows end before t/to = %.6g: %s\n", t_end, why.c_str());
+    if (last < steps) std::printf("# rows end before t/to = %.6g: %s\n", t_end, json::kRowsEndReason);
     std::printf("# t/to,theta/alpha,theta'/(alpha p)\n");
     for (int k = 0; k <= last; ++k)
         std::printf("%.6g,%.12g,%.12g\n", train.t_fin() * k / steps, rows[k].phi, rows[k].dphi);

@@ -31,14 +31,4 @@ std::string bands_summary(const std::vector<studies::Band>& bands, const char* v
     return text + "; each band's share in --json and --output";
 }
 
-Json bands_json(const std::vector<studies::Band>& bands) {
-    Json list = Json::array();
-    for (const studies::Band& b : bands) list.push_back({{"from", b.from}, {"to", b.to}, {"share", b.share}});
-    return list;
-}
-
-Json nearest_json(const studies::SpectrumFirst& f, double height) {
-    return f.found ? Json{{"found", true}, {"p", f.p}, {"height", height}} : Json{{"found", false}};
-}
-
 }  // namespace rocking::cli

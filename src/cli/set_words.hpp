@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "cli/json_text.hpp"
+#include "json/pieces.hpp"
+#include "json/spectrum_json.hpp"
 #include "studies/overturning_set.hpp"
 #include "studies/spectrum.hpp"
 
@@ -18,11 +20,10 @@ std::string bands_text(const std::vector<studies::Band>& bands);
 // partial ones lie; the shares themselves (a hundred bands) go to files.
 std::string bands_summary(const std::vector<studies::Band>& bands, const char* variable);
 
-// [{"from": f, "to": t, "share": s}, ...] for every band, zeros included.
-Json bands_json(const std::vector<studies::Band>& bands);
+// [{"from": f, "to": t, "share": s}, ...] for every band (json/spectrum_json.hpp).
+using json::bands_json;
 
-// A p of the set beside a marked block, with the height of the block of its
-// alpha there: {"found": true, "p": p, "height": h}, or {"found": false}.
-Json nearest_json(const studies::SpectrumFirst& f, double height);
+// A p of the set beside a marked block (json/pieces.hpp).
+using json::nearest_json;
 
 }  // namespace rocking::cli

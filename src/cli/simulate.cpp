@@ -11,6 +11,7 @@
 #include "cli/geometry.hpp"
 #include "cli/imperfection.hpp"
 #include "cli/json_text.hpp"
+#include "json/simulate_json.hpp"
 #include "cli/options.hpp"
 #include "cli/simulate_friction.hpp"
 #include "dynamics/ground_input.hpp"
@@ -207,40 +208,8 @@ int cmd_simulate(int argc, char** argv) {
     // The block starts at rest and rocks only once |a| > the threshold (eq. 3: alpha g; eq. 1: g tan alpha).
     const bool lifts = input_lifts(*input, model);
     if (a.json) {
-        Json o;
-        o["model"] = model.describe();
-        o["preset"] = paper ? "paper" : "physical";
-        o["alpha"] = alpha;
-        o["p"] = given.block.p;
-        add_block(o, given);
-        o["input"] = input->describe();
-        o["solver"] = solver_name(options.solver.kind);
-        o["rtol"] = options.solver.rtol;
-        o["atol_rad"] = options.solver.atol_alpha * alpha;
-        o["criterion"] = criterion_name(criterion);
-        o["collapse"] = collapse;
-        o["t_fin"] = r.t_fin;
-        // A block that fell during the input has no theta(t_fin) (overturned_during_input says why).
-        o["theta_tfin_over_alpha"] = r.overturned_during_input ? Json(nullptr) : Json(r.theta_at_tfin / alpha);
-        o["max_theta_input_over_alpha"] = r.max_abs_theta_input / alpha;
-        o["input_lifts_block"] = lifts;
-        o["impacts"] = r.impacts;
-        o["overturned"] = r.overturned;
-        o["overturned_during_input"] = r.overturned_during_input;
-        o["t_overturn"] = r.t_overturn;  // NaN, so null, where it did not overturn or fell by its energy alone
-        o["collapse_final_rotation"] = collapsed(Criterion::final_rotation);
-        o["collapse_peak_rotation"] = collapsed(Criterion::peak_rotation);
-        o["collapse_overturning"] = collapsed(Criterion::overturning);
-        if (imp.any()) {
-            o["imperfection"] = imperfection_json(imp, given.block, e_given);
-            o["peak_over_own_alpha"] = peak_over_own_alpha(r, model);
-        }
-        // Each side's peak where the corners differ (a setback alone keeps the block symmetric).
-        if (!model.symmetric()) {
-            o["peak_plus_over_alpha_plus"] = r.peak_plus_input / model.block.alpha;
-            o["peak_minus_over_alpha_minus"] = r.peak_minus_input / model.minus.alpha;
-        }
-        std::cout << json_text(o) << "\n";
+        const json::RockingRun run{model, given, *input, options, criterion, r, paper, alpha_plus, alpha_minus, imp, e_given};
+        std::cout << json_text(json::rocking_run_json(run)) << "\n";
     } else {
         std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());
         std::printf("  model:  %s%s\n  block:  %s\n  input:  %s\n  solver: %s%s\n", model.describe().c_str(),

@@ -11,6 +11,7 @@
 
 #include "cli/geometry.hpp"
 #include "cli/json_text.hpp"
+#include "json/simulate_json.hpp"
 #include "cli/options.hpp"
 #include "cli/simulate_friction.hpp"
 #include "dynamics/sliding/sliding_simulate.hpp"
@@ -24,12 +25,16 @@ using dynamics::sliding::Regime;
 
 // The searches' words for the model (records::CollapseOptions), so that a
 // run and a study on it read alike.
-std::string model_text(double mu, dynamics::Criterion criterion, double rtol) {
+records::CollapseOptions model_options(double mu, dynamics::Criterion criterion, double rtol) {
     records::CollapseOptions m;
     m.friction = mu;
     m.criterion = criterion;
     m.sliding_rtol = rtol;
-    return m.describe_model();
+    return m;
+}
+
+std::string model_text(double mu, dynamics::Criterion criterion, double rtol) {
+    return model_options(mu, criterion, rtol).describe_model();
 }
 
 }  // namespace
@@ -72,39 +77,9 @@ int simulate_friction(const Args& a, const GivenBlock& given, const dynamics::Gr
     const bool collapse = r.collapse(criterion, alpha);
     auto regime_time = [&](Regime k) { return r.time_in[static_cast<int>(k)]; };
     if (a.json) {
-        Json j;
-        j["model"] = model_text(mu, criterion, o.rtol);
-        j["friction"] = mu;
-        j["alpha"] = alpha;
-        j["p"] = p;
-        j["R_from_p"] = block.R;
-        add_block(j, given);
-        j["input"] = input.describe();
-        j["solver"] = o.describe();
-        j["rtol"] = o.rtol;
-        j["atol_rad"] = o.atol_alpha * alpha;
-        j["criterion"] = criterion_name(criterion);
-        j["collapse"] = collapse;
-        j["t_fin"] = r.t_fin;
-        // A block that fell during the input has no theta(t_fin) (overturned_during_input says why).
-        j["theta_tfin_over_alpha"] = r.overturned_during_input ? Json(nullptr) : Json(r.theta_at_tfin / alpha);
-        j["max_theta_input_over_alpha"] = r.max_abs_theta_input / alpha;
-        j["overturned"] = r.overturned;
-        j["overturned_during_input"] = r.overturned_during_input;
-        j["t_overturn"] = r.t_overturn;  // NaN, so null, where it did not overturn or fell by its energy alone
-        j["impacts"] = r.impacts;
-        j["slipping_impacts"] = r.slipping_impacts;
-        j["slip_tfin_m"] = r.slip_at_tfin;
-        j["max_slip_m"] = r.max_abs_slip;
-        j["final_slip_m"] = r.final_slip;
-        j["time_in"] = {{"rest", regime_time(Regime::rest)}, {"slide", regime_time(Regime::slide)},
-                        {"rock", regime_time(Regime::rock)}, {"slide_rock", regime_time(Regime::slide_rock)}};
-        j["energy"] = {{"input_work", r.input_work}, {"friction_loss", r.friction_loss},
-                       {"impact_loss", r.impact_loss}, {"balance_error_over_gR", r.balance_error}};
-        j["collapse_final_rotation"] = r.collapse(Criterion::final_rotation, alpha);
-        j["collapse_peak_rotation"] = r.collapse(Criterion::peak_rotation, alpha);
-        j["collapse_overturning"] = r.collapse(Criterion::overturning, alpha);
-        std::cout << json_text(j) << "\n";
+        const records::CollapseOptions model = model_options(mu, criterion, o.rtol);
+        const json::SlidingRun run{model, given, block, input, o, criterion, r};
+        std::cout << json_text(json::sliding_run_json(run)) << "\n";
         return 0;
     }
     std::printf("%s under %s\n", collapse ? "COLLAPSE" : "no collapse", criterion_name(criterion).c_str());

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/json_text.hpp"
+#include "json/record_json.hpp"
 #include "cli/options.hpp"
 #include "harness/atomic_file.hpp"
 #include "harness/table.hpp"
@@ -55,13 +56,6 @@ std::string sampling_option(const records::SamplingError& e, bool pulse, const s
     return given ? "--params" : "--dt";
 }
 
-// The header's values are %.17g text or words: numbers stay numbers in JSON,
-// written as JSON writes them (".5" or "+1" would not be JSON).
-Json json_value(const std::string& text) {
-    double v;
-    return numerics::sample_number(text, v) ? Json(v) : Json(text);
-}
-
 // '#' lines naming the generator and every parameter, then t,a rows: the plain
 // reader skips the '#' lines and takes the rest as two columns.
 void write_two_columns(const records::Record& r, const std::string& path) {
@@ -76,20 +70,7 @@ void write_two_columns(const records::Record& r, const std::string& path) {
 
 void print_summary(const records::Record& r, const records::PeakMotion& m, const std::string& output, bool json) {
     if (json) {
-        Json o;
-        o["name"] = r.name;
-        o["format"] = r.format;
-        o["samples"] = r.accel.size();
-        o["dt"] = r.dt;
-        o["pga_ms2"] = m.pga;
-        o["pgv_ms"] = m.pgv;
-        o["to5_s"] = m.to5;
-        Json& parameters = o["parameters"] = Json::object();
-        for (const auto& [key, value] : r.header)
-            if (key != "warning") parameters[key] = json_value(value);
-        o["warnings"] = records::warnings_of(r);
-        o["output"] = output.empty() ? Json(nullptr) : Json(output);
-        std::cout << json_text(o) << "\n";
+        std::cout << json_text(json::synthetic_record_json(r, m, output)) << "\n";
         return;
     }
     std::printf("%s (%s): %zu samples, dt = %g s, %.2f s\n", r.name.c_str(), r.format.c_str(), r.accel.size(), r.dt,

@@ -18,8 +18,6 @@ std::string bounded(double v) {
 
 }  // namespace
 
-const char* kModel = "linearised eq. 3, one corner, no impact, collapse theta(t_fin) = alpha";
-
 // Where the closed forms hold at this q (Excursion), as q and response print
 // it, each line after prefix: they hold only while the block rocks on one
 // corner, from the first pulse lifting it to t_fin.
@@ -42,13 +40,6 @@ void print_validity(const Excursion& e, const char* prefix) {
         std::printf("%swarning: theta passes alpha before t_fin, reaching %s alpha at t/to = %.4g: the block would "
                     "overturn before the instant where the paper imposes theta = alpha (rocking simulate follows it)\n",
                     prefix, bounded(e.max_phi).c_str(), e.tau_at_max);
-}
-
-void add_validity(Json& o, const Excursion& e) {
-    o["rocking_starts"] = e.onset;
-    o["impact_free"] = e.stays_positive();
-    o["motion_reverses"] = e.min_dphi < 0;
-    o["passes_alpha_before_t_fin"] = e.onset && e.passes_alpha();
 }
 
 }  // namespace rocking::cli
