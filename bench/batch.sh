@@ -175,11 +175,12 @@ if writer:
               f"{knee:.0f} cores; past that, jobs",
               "  of more work a row (an IDA or a spectrum: hundreds of simulations a row) or one batch per node; on a cluster",
               "  the shared file system (200 GB of results, written by every rank) bounds it too",
-              "  (K, N) -> hours at e = 0.9, the larger of the ranks' time and rank 0's:"]
+              "  (K, N) -> the time at e = 0.9, the larger of the ranks' and rank 0's:"]
     for K, N in ((1, 2), (1, 64), (4, 64), (16, 64), (100, 64), (1000, 64)):
         t_compute = 1e9 * per_sim / (K * N * 0.9)
         t = max(t_compute, 1e9 * writer)
-        lines.append(f"    K = {K:3}, N = {N:2}: {t / 3600:8.2f} h ({'computing' if t_compute >= 1e9 * writer else 'bound by rank 0'})")
+        said = f"{t / 3600:8.2f} h" if t >= 3600 else f"{t:8.0f} s"
+        lines.append(f"    K = {K:4}, N = {N:2}: {said} ({'computing' if t_compute >= 1e9 * writer else 'bound by rank 0'})")
 else:
     lines.append("MPI: not measured (this rocking was built without MPI, or mpirun is absent)")
 open(txt, "w").write("\n".join(lines) + "\n")
