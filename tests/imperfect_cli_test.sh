@@ -135,6 +135,20 @@ for iv in ida["intervals"][:3]:
 PY
 then echo "ok: a leaning block's spectrum and IDA boundaries"; else echo "FAIL: leaning spectrum and IDA"; fail=1; fi
 
+# The stripes of a leaning block start where it lifts (q_start), on the command line as in
+# Python: the IDAs read back from the engine's rows used to start at q_min = 1, so the first
+# stripe ran from 1 and its fit moved (issue 42's review, 2026-11-26).
+"$rocking" record synth --stochastic 5 --dt 0.01 --duration 15 --output "$tmp/s5.txt" >/dev/null
+"$rocking" fragility "$tmp/s.txt" "$tmp/s5.txt" --unit m/s2 --alpha 0.1 --p 4 --points 30 --q-max 5 --lean 0.03 \
+    --method refine --width 1e-3 --json >"$tmp/stripes.json" || { echo "FAIL: fragility --lean --method refine"; fail=1; }
+if $py - "$tmp/stripes.json" <<'PY'
+import json, sys
+b = json.load(open(sys.argv[1]))["blocks"][0]
+assert abs(b["q_start"] - 0.07 / 0.1) < 1e-12, b["q_start"]  # (alpha - lean) / alpha
+assert b["stripes"][0]["from"] == b["q_start"], (b["stripes"][0], b["q_start"])
+PY
+then echo "ok: a leaning block's stripes start at its q_start"; else echo "FAIL: a leaning block's stripes"; fail=1; fi
+
 # The outputs that a probe found wrong (2026-11-26): with a setback alone each side's peak read
 # 0; --restitution housner took the nominal alpha's on both corners; input_lifts_block read the
 # nominal alpha; the JSON's p was corner +1's.

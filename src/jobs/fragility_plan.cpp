@@ -147,6 +147,9 @@ Ida ida_from_row(const std::string& row, std::size_t job, const FragilityJobs& j
     if (ida.alpha != block.alpha || ida.p != block.p)
         throw std::runtime_error(where + ": alpha " + c[1] + ", p " + c[2] + " where the study has " +
                                  format_number(block.alpha) + ", " + format_number(block.p));
+    // Not in the row: the grid's start is the study's (an imperfect block's from where it
+    // lifts), and the stripes and their half-width are taken from it.
+    ida.q_start = jobs.ida.q_start(block.alpha, block.p);
     return ida;
 }
 
