@@ -48,7 +48,6 @@ using studies::Ida;
 using namespace fragility_scene;
 
 // The same words as the other record scenes, so a reader sees one reason.
-const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 const std::array<const char*, 4> kFiles = {"fragility_points.csv", "fragility_fits.csv", "fragility_eq27.csv",
                                            "fragility_empirical.csv"};
 

@@ -34,7 +34,6 @@ using fragility_scene::HalfPeriodArray;
 using fragility_scene::kBlocks;
 using fragility_scene::label;
 
-const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 
 struct SharedRecord {
     std::string file;  // relative to the records folder

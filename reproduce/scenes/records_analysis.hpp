@@ -33,6 +33,8 @@ std::string g_text(double v);
 
 // The records folder: $ROCKING_RECORDS, else <source>/../shared/records.
 std::string records_dir();
+// Why a record scene skips its files: the folder is absent.
+inline const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 // The files of root's esm/ and peer/ (the records the scenes read), sorted by
 // path; empty where neither folder exists.
 std::vector<std::string> record_files(const std::string& root);

@@ -9,6 +9,7 @@
 #include "dynamics/model.hpp"
 #include "dynamics/sliding/sliding_simulate.hpp"
 #include "scene.hpp"
+#include "records_analysis.hpp"
 #include "sliding_scene.hpp"
 
 namespace rocking::scenes {
@@ -17,7 +18,13 @@ namespace sliding_scene {
 
 double half_diagonal(double alpha) { return 0.5 * kHeight / std::cos(alpha); }
 
-SceneRecords load_records(const std::string& root, const std::vector<std::string>& files) {
+std::optional<SceneRecords> scene_records(SceneContext& ctx, const std::vector<std::string>& outputs) {
+    const std::string root = records_dir();
+    const std::vector<std::string> files = record_files(root);
+    if (files.empty()) {
+        for (const std::string& f : outputs) ctx.skip(f, kNoRecords);
+        return std::nullopt;
+    }
     SceneRecords out;
     for (const std::string& f : files) {
         out.read.push_back(records::read_any(f));

@@ -94,17 +94,12 @@ const char* kRule =
 }  // namespace
 
 void write_claim(SceneContext& ctx) {
-    const std::string root = records_dir();
-    const std::vector<std::string> files = record_files(root);
-    if (files.empty()) {
-        for (const char* f : kFiles) ctx.skip(f, kNoRecords);
-        return;
-    }
-    const SceneRecords loaded = load_records(root, files);
-    const auto& inputs = loaded.inputs;
-    const auto& labels = loaded.labels;
+    const std::optional<SceneRecords> loaded = scene_records(ctx, {kFiles.begin(), kFiles.end()});
+    if (!loaded) return;
+    const auto& inputs = loaded->inputs;
+    const auto& labels = loaded->labels;
     std::vector<Case> cases;
-    for (std::size_t r = 0; r < files.size(); ++r)
+    for (std::size_t r = 0; r < inputs.size(); ++r)
         for (double a : alphas())
             for (double q : kQs) cases.push_back(Case{r, a, q, {}, {}});
     // One job a case on the batch engine, delivered in order: the threads

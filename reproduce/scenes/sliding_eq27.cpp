@@ -166,24 +166,19 @@ const char* kSolverNote =
 }  // namespace
 
 void write_eq27(SceneContext& ctx) {
-    const std::string root = records_dir();
-    const std::vector<std::string> files = record_files(root);
-    if (files.empty()) {
-        for (const char* f : kFiles) ctx.skip(f, kNoRecords);
-        return;
-    }
-    const SceneRecords loaded = load_records(root, files);
-    const auto& inputs = loaded.inputs;
-    const auto& labels = loaded.labels;
-    const auto& recs = loaded.read;
-    std::vector<std::array<double, 11>> to(files.size());
+    const std::optional<SceneRecords> loaded = scene_records(ctx, {kFiles.begin(), kFiles.end()});
+    if (!loaded) return;
+    const auto& inputs = loaded->inputs;
+    const auto& labels = loaded->labels;
+    const auto& recs = loaded->read;
+    std::vector<std::array<double, 11>> to(recs.size());
     batch::run_ordered<std::array<double, 11>>(
-        files.size(), batch::PoolOptions{batch::default_threads()},
+        recs.size(), batch::PoolOptions{batch::default_threads()},
         [&](std::size_t i) { return records::half_periods(recs[i]).to; },
         [&](std::size_t i, std::array<double, 11>& v) { to[i] = v; });
     std::vector<Case> cases;
     for (std::size_t b = 0; b < kBlocks.size(); ++b)
-        for (std::size_t r = 0; r < files.size(); ++r) cases.push_back(Case{r, b, {}});
+        for (std::size_t r = 0; r < recs.size(); ++r) cases.push_back(Case{r, b, {}});
     batch::run_ordered<Case>(
         cases.size(), batch::PoolOptions{batch::default_threads()},
         [&](std::size_t i) {
@@ -218,7 +213,7 @@ void write_eq27(SceneContext& ctx) {
     std::array<std::array<int, 11>, kModels> more{}, fewer{};
     std::array<std::array<std::vector<bool>, 11>, kModels> any_record;
     for (auto& m : any_record)
-        for (auto& k : m) k.assign(files.size(), false);
+        for (auto& k : m) k.assign(recs.size(), false);
     std::array<int, kModels> outside{};
     for (const Case& c : cases) {
         const studies::BlockShape& b = kBlocks[c.block];
@@ -264,7 +259,7 @@ void write_eq27(SceneContext& ctx) {
             et.row().add(k + 1).add(kModelNames[m]).add(non[m][k]).add(n).add(static_cast<double>(non[m][k]) / n);
             et.add(more[m][k]).add(fewer[m][k]);
             et.add(static_cast<int>(std::count(any_record[m][k].begin(), any_record[m][k].end(), true)));
-            et.add(static_cast<int>(files.size())).add(outside[m]);
+            et.add(static_cast<int>(recs.size())).add(outside[m]);
         }
     ctx.write(pt, "sliding_eq27_points.csv");
     ctx.write(et, "sliding_eq27.csv");

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,7 +45,9 @@ struct SceneRecords {
     std::vector<std::unique_ptr<dynamics::SampledInput>> inputs;
     std::vector<std::string> labels;
 };
-SceneRecords load_records(const std::string& root, const std::vector<std::string>& files);
+// The shared records (records_analysis.hpp's record_files), or none, with
+// each of `outputs` skipped (kNoRecords), when the records folder is absent.
+std::optional<SceneRecords> scene_records(SceneContext& ctx, const std::vector<std::string>& outputs);
 double pulsation(double alpha);      // p = sqrt(3 g/(4 R)), rad/s (eq. 4)
 std::string number_label(double v);  // %g: "0.4", "1e+06"
 std::string digits10(double v);      // %.10g: the tables' rotations and slips (tolerances far wider)
@@ -102,8 +105,5 @@ void write_truth(SceneContext& ctx);
 void write_claim(SceneContext& ctx);
 void write_eq27(SceneContext& ctx);
 void write_fig05(SceneContext& ctx);
-
-// The records folder's reason, in the words of the other record scenes.
-inline const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 
 }  // namespace rocking::scenes::sliding_scene

@@ -30,7 +30,6 @@ using studies::Interval;
 using studies::Spectrum;
 
 // The same words as the other record scenes, so a reader sees one reason.
-const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 const char* kNoNorcia = "no Norcia record (esm/IT.NRC..H*) in the records folder";
 const std::array<const char*, 5> kFiles = {"spectrum_intervals.csv", "spectrum_summary.csv", "spectrum_grid.csv",
                                            kRefinedFile, kRefinedIntervalsFile};

@@ -61,7 +61,6 @@ const std::vector<PaperRow>& paper_rows() {
 
 double eq27_crossing_two() { return numerics::root_of([](double x) { return q2_n6(x) - 2.0; }, 0.1, 3.0); }
 
-const char* kNoRecords = "the records folder is absent (../shared/records or $ROCKING_RECORDS)";
 
 }  // namespace
 
