@@ -394,3 +394,75 @@ TEST(Sliding, AStickSlipChangeIsNotRepeatedWithoutEnd) {
         EXPECT_TRUE(r.slid) << rtol;
     }
 }
+
+// The micro-bounce rule's speed bound.  A slipping impact can reverse
+// theta': then the old corner, driven into the ground, strikes at once (the
+// next impact within 1e-6/p, at full speed), which the time test alone took
+// for a micro-bounce and laid the block flat.  By hand, from the impulse
+// (P_t, P_n) per unit mass at the striking corner (K = R^2/3, b, h as in
+// friction_block.hpp, theta' clockwise, the block on corner +b at theta = 0,
+// theta' = w0 < 0, that pivot slipping at v0 > 0):
+//   1. corner -b strikes.  G from it (b, h): x_G' = v0 + h w0, y_G' = b w0;
+//      x_G'+ = x_G' + P_t, y_G'+ = y_G' + P_n, K (w1 - w0) = b P_n - h P_t;
+//      no rebound, y_G'+ + b w1 = 0: P_n = -b (w0 + w1); its slip after
+//      u1 = x_G'+ - h w1.  Slipping (u1 > 0, P_t = -mu P_n):
+//        w1 = w0 (K - b^2 - mu b h)/(K + b^2 + mu b h),
+//      against w0 where mu b h > K - b^2: the block turns back onto corner +b.
+//   2. corner +b strikes, the block on -b with w1 > 0, slipping at u1.  G
+//      from it (-b, h): K (w2 - w1) = -b P_n - h P_t, P_n = b (w1 + w2),
+//      u2 = u1 + h w1 + P_t - h w2.  Slipping (u2 > 0, P_t = -mu P_n):
+//        w2 = w1 (K - b^2 + mu b h)/(K + b^2 - mu b h).
+//   Together: w2/w0 = [(K - b^2)^2 - (mu b h)^2]/[(K + b^2)^2 - (mu b h)^2],
+// -0.33305 at alpha 0.6, R 1, mu 0.7 (> tan alpha = 0.684, so it rocks):
+// the block rebounds on corner +b at a third of its speed, not flat.  The
+// test checks on the run's own v0 that the stuck impulse of impact 1 breaks
+// Coulomb's law (|P_t| > mu P_n, the stuck w1 = [(K - b^2 + h^2) w0 + h v0]/(4K))
+// and that u1, u2 > 0, so that this is the law's case.  The input is
+// synthetic: 0.8 g for 0.2 s lifts the block, 0.08 s at rest lets it fall
+// back, and 2 g from 0.28 s sets its pivot slipping at 0.5 m/s as it
+// lands (slide-rock's theta'' does not depend on A).
+TEST(Sliding, AReversingSlipIsNoMicroBounce) {
+    const FrictionBlock block{0.6, 1.0, 0.7};
+    const double b = block.b(), h = block.h(), mu = block.mu, K = block.R * block.R / 3, p = block.p();
+    const PulseInput input(PulseTrain({{1.0, 0.2}, {0.0, 0.08}, {2.5, 0.05}, {0.0, 0.1}}), 0.8, 1.0);
+    SlidingOptions o;
+    o.rtol = o.atol_alpha = 1e-11;
+    o.free_rocking = false;
+    const double dt = 1e-5;
+    o.record_dt = dt;
+    const SlidingResult r = simulate_sliding(block, input, o);
+    const std::vector<double>& t = r.impact_times;
+    ASSERT_GE(t.size(), 2u);
+    ASSERT_LT(t[1] - t[0], 1e-6 / p) << "the pair must fall under the rule's time test";
+    EXPECT_GE(r.slipping_impacts, 2);
+    // The samples around the pair, read back to it linearly from two on each
+    // side: off by at most |theta'''| dt^2, about 6 rad/s^3 here (slide-rock:
+    // d theta''/d theta ~ (dy - mu dx) g/K ~ 36 s^-2, times |theta'| < 0.2),
+    // 6e-10 rad/s, with the integration's 1e-11 alpha (measured: 1.9e-10).
+    const std::vector<SlidingSample>& s = r.samples;
+    std::size_t k = 1;
+    while (k + 2 < s.size() && s[k + 1].t < t[0]) ++k;
+    ASSERT_TRUE(k + 2 < s.size() && s[k].t < t[0] && t[1] < s[k + 1].t);
+    ASSERT_EQ(s[k - 1].regime, Regime::slide_rock);
+    ASSERT_EQ(s[k].regime, Regime::slide_rock);
+    ASSERT_EQ(s[k + 1].regime, s[k + 2].regime);
+    ASSERT_GT(s[k].theta, 0);
+    const double w0 = s[k].omega + (s[k].omega - s[k - 1].omega) * (t[0] - s[k].t) / dt;
+    const double v0 = s[k].slip_rate + (s[k].slip_rate - s[k - 1].slip_rate) * (t[0] - s[k].t) / dt;
+    const double w2 = s[k + 1].omega - (s[k + 2].omega - s[k + 1].omega) * (s[k + 1].t - t[1]) / dt;
+    ASSERT_LT(w0, -0.1);
+    // Impact 1 by hand: stuck breaks Coulomb's law, slipping onwards holds.
+    const double w1s = ((K - b * b + h * h) * w0 + h * v0) / (4 * K);
+    EXPECT_GT(std::fabs(h * w1s - v0 - h * w0), mu * std::fabs(b * (w0 + w1s)));
+    const double mbh = mu * b * h, w1 = w0 * (K - b * b - mbh) / (K + b * b + mbh);
+    const double pn1 = -b * (w0 + w1), u1 = v0 + h * w0 - mu * pn1 - h * w1;
+    EXPECT_GT(w1, 0);
+    EXPECT_GT(pn1, 0);
+    EXPECT_GT(u1, 0.1);
+    const double want = w1 * (K - b * b + mbh) / (K + b * b - mbh);
+    EXPECT_GT(u1 + h * w1 - mu * b * (w1 + want) - h * want, 0.1);
+    EXPECT_NEAR(want / w0, ((K - b * b) * (K - b * b) - mbh * mbh) / ((K + b * b) * (K + b * b) - mbh * mbh), 1e-14);
+    // Not laid flat: rocking on corner +b again, at w2.
+    EXPECT_GT(s[k + 1].theta, 0);
+    EXPECT_NEAR(w2, want, 2e-9) << "before " << w0 << " rad/s";
+}
