@@ -29,6 +29,16 @@ namespace {
 
 std::string temp_dir() { return rocking::testing::temp_folder("rocking-batch-test"); }
 
+// The manifest `text` is refused whole, its message holding `says`.
+void refused(const std::string& text, const std::string& says) {
+    try {
+        Manifest::parse(text, "m.csv");
+        ADD_FAILURE() << "accepted: " << text;
+    } catch (const ManifestError& e) {
+        EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 
 TEST(BatchEngine, Sha256MatchesTheStandardsVectors) {
@@ -104,14 +114,6 @@ TEST(BatchEngine, AQuotedLineBreakBelongsToItsCellAndTheRowToTheLineItStartsOn) 
     EXPECT_EQ(split_csv_line(m.text(2)), (V{"x\r\ny", "c\n\n# not a comment.txt"}));
     EXPECT_EQ(m.line(3), 9);
     EXPECT_EQ(split_csv_line(m.text(3)), (V{"d", "e.txt"}));
-    auto refused = [](const std::string& text, const std::string& says) {
-        try {
-            Manifest::parse(text, "m.csv");
-            ADD_FAILURE() << "accepted: " << text;
-        } catch (const ManifestError& e) {
-            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
-        }
-    };
     // Never closed: every row after it would be one cell, so none runs.
     refused("id,record\nok,r.txt\nx,\"r.txt\nnext,r.txt\n",
             "m.csv:3: the row has an unterminated quote: the quoted cell opened on line 3 is never closed");
@@ -169,14 +171,6 @@ TEST(BatchEngine, TheManifestsJobsAreItsDataLinesWithTheirNumbers) {
     EXPECT_EQ(Manifest::parse("a\n", "m.csv").folder(), ".");
     EXPECT_EQ(m.digest(), sha256_hex("# a comment\n\nkind, record ,alpha\r\nsimulate,a.txt,0.1\n  \n# x\nida,b.txt,0.2"));
     EXPECT_EQ(Manifest::parse("a,b\n", "m.csv").size(), 0u);
-    auto refused = [](const std::string& text, const std::string& says) {
-        try {
-            Manifest::parse(text, "m.csv");
-            ADD_FAILURE() << "accepted: " << text;
-        } catch (const ManifestError& e) {
-            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
-        }
-    };
     refused("", "no header row");
     refused("# only\n\n", "no header row");
     refused("a,b,a\n", "names column 'a' twice");

@@ -105,9 +105,9 @@ TEST(PlacedRows, TheStateCountsTheChunksSyncedInOrderAndAResumeEndsWithTheSameBy
         ResultsFile f({out, false, 1e9}, kHeader, kDigest, 20);
         // Chunks of rank 1 (0-4, 9-13), of rank 0 itself (5-8), of rank 2 (14-19).
         const RowChunk a = chunk_of(0, 5), own = chunk_of(5, 4), b = chunk_of(9, 5), c = chunk_of(14, 6);
-        const std::uint64_t at_a = f.place(a.summary());
+        const std::uint64_t at_a = f.place(a.summary()).offset;
         f.place_own(own);
-        const std::uint64_t at_b = f.place(b.summary()), at_c = f.place(c.summary());
+        const std::uint64_t at_b = f.place(b.summary()).offset, at_c = f.place(c.summary()).offset;
         EXPECT_EQ(at_a, kPreamble.size());
         EXPECT_EQ(at_b, at_a + a.text.size() + own.text.size());
         EXPECT_EQ(at_c, at_b + b.text.size());
@@ -137,7 +137,7 @@ TEST(PlacedRows, ARunEndsOnlyWhenEveryChunkPlacedIsSynced) {
     ResultsFile f({out, false, 1e9}, kHeader, kDigest, 6);
     const RowChunk a = chunk_of(0, 3), b = chunk_of(3, 3);
     f.place_own(a);
-    write_elsewhere(f.partial_path(), f.place(b.summary()), b.text);
+    write_elsewhere(f.partial_path(), f.place(b.summary()).offset, b.text);
     EXPECT_THROW(f.finish(), ResultsError);  // chunk 1 was never said synced
     f.synced(1);
     f.finish();

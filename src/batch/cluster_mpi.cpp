@@ -324,8 +324,7 @@ void MpiRanks::lead(std::size_t first, std::size_t n, int threads, std::size_t w
     // A chunk of its own threads, placed: the threads write it, not the main thread, so
     // that no row's bytes pass through the thread every chunk does.
     struct OwnWrite {
-        std::size_t number = 0;
-        std::uint64_t offset = 0;
+        ResultsFile::Placement at;
         std::string text;
     };
     std::mutex mutex;
@@ -375,7 +374,7 @@ void MpiRanks::lead(std::size_t first, std::size_t n, int threads, std::size_t w
             }
             if (writes) {
                 try {
-                    delivery.file->write_own(write.number, write.offset, write.text);
+                    delivery.file->write_own(write.at, write.text);
                 } catch (...) {
                     std::lock_guard<std::mutex> lock(mutex);
                     failure = std::current_exception();
@@ -423,7 +422,7 @@ void MpiRanks::lead(std::size_t first, std::size_t n, int threads, std::size_t w
     // each rank; the answers awaited; when the last round of syncs began.
     std::vector<std::deque<std::pair<std::size_t, std::uint64_t>>> unsynced(ranks);
     std::vector<std::uint64_t> epoch(ranks, 0);
-    std::size_t placed = 0, unsynced_chunks = 0, syncs_awaited = 0;
+    std::size_t unsynced_chunks = 0, syncs_awaited = 0;
     bool round_counted = true;
     auto round_began = std::chrono::steady_clock::now();
     std::vector<char> buffer;
@@ -493,17 +492,16 @@ void MpiRanks::lead(std::size_t first, std::size_t n, int threads, std::size_t w
                 delivery.rows(chunk.rows);
                 continue;
             }
+            const ResultsFile::Placement at = delivery.file->place(chunk.summary);
             if (chunk.rank == 0) {
-                const std::uint64_t offset = delivery.file->place(chunk.summary);
                 std::lock_guard<std::mutex> lock(mutex);
-                own_writes.push_back({placed, offset, std::move(chunk.rows.text)});
+                own_writes.push_back({at, std::move(chunk.rows.text)});
                 room.notify_all();
             } else {
-                send_to_rank(chunk.rank, kPlace, chunk.summary.first, delivery.file->place(chunk.summary));
-                unsynced[static_cast<std::size_t>(chunk.rank)].emplace_back(placed, epoch[static_cast<std::size_t>(chunk.rank)] + 1);
+                send_to_rank(chunk.rank, kPlace, chunk.summary.first, at.offset);
+                unsynced[static_cast<std::size_t>(chunk.rank)].emplace_back(at.number, epoch[static_cast<std::size_t>(chunk.rank)] + 1);
                 ++unsynced_chunks;
             }
-            ++placed;
             delivery.placed(chunk.summary);
         }
         if (shared && syncs_awaited == 0) {

@@ -436,37 +436,29 @@ void ResultsFile::write_state(std::size_t jobs, std::size_t failed) {
     }
 }
 
-std::uint64_t ResultsFile::place(const ChunkSummary& chunk) {
+ResultsFile::Placement ResultsFile::place(const ChunkSummary& chunk) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!placing_) {
         flush_locked();  // the header, before the first chunk's offset is taken from it
         placing_ = true;
         placed_end_ = bytes_;
     }
-    const std::uint64_t offset = placed_end_;
+    const Placement at{placed_before_ + placed_.size(), placed_end_};
     placed_end_ += chunk.bytes;
     done_ += chunk.count, failed_ += chunk.failed;
     placed_.push_back({chunk, false, false});
-    return offset;
+    return at;
 }
 
-void ResultsFile::write_own(std::size_t number, std::uint64_t offset, const std::string& text) {
-    write_at_locked(offset, text);  // pwrite: no lock needed, and none held while it copies
+void ResultsFile::write_own(const Placement& at, const std::string& text) {
+    write_at_locked(at.offset, text);  // pwrite: no lock needed, and none held while it copies
     std::lock_guard<std::mutex> lock(mutex_);
     // Not own until written: a flush before (a signal's) must not count it.
-    if (number >= placed_before_ && number - placed_before_ < placed_.size()) placed_[number - placed_before_].own = true;
+    if (at.number >= placed_before_ && at.number - placed_before_ < placed_.size()) placed_[at.number - placed_before_].own = true;
     own_unsynced_ = true;
 }
 
-void ResultsFile::place_own(const RowChunk& chunk) {
-    const std::uint64_t offset = place(chunk.summary());
-    std::size_t number = 0;
-    {
-        std::lock_guard<std::mutex> lock(mutex_);
-        number = placed_before_ + placed_.size() - 1;
-    }
-    write_own(number, offset, chunk.text);
-}
+void ResultsFile::place_own(const RowChunk& chunk) { write_own(place(chunk.summary()), chunk.text); }
 
 void ResultsFile::synced(std::size_t number) {
     std::lock_guard<std::mutex> lock(mutex_);

@@ -113,12 +113,17 @@ public:
     void flush();
 
     // The ranks' way.  A chunk another process ran and writes itself: its
-    // offset in partial_path(), after every chunk placed before it; the
-    // chunks are placed in the jobs' order, numbered from 0 in this run.
-    std::uint64_t place(const ChunkSummary& chunk);
-    // A chunk this process ran and placed as `number` (the place()s before
-    // it): written at `offset`, by any thread, and synced by the next flush.
-    void write_own(std::size_t number, std::uint64_t offset, const std::string& text);
+    // number (the chunks are placed in the jobs' order, numbered from 0 in
+    // this run) and its offset in partial_path(), after every chunk placed
+    // before it.
+    struct Placement {
+        std::size_t number = 0;
+        std::uint64_t offset = 0;
+    };
+    Placement place(const ChunkSummary& chunk);
+    // A chunk this process ran and placed: written there, by any thread, and
+    // synced by the next flush.
+    void write_own(const Placement& at, const std::string& text);
     // Both at once.
     void place_own(const RowChunk& chunk);
     // Placed chunk `number`'s writer has synced it: the next flush may count it.
